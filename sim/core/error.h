@@ -1,0 +1,21 @@
+// The engine's one error type: library code throws it with context; only tools/ turns it into an
+// exit code (STYLE.md "No singletons ... never calls exit()").
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+namespace sim {
+
+class SimError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Throws SimError(what) when `condition` is false. For validating user-facing parameters,
+// not for internal invariants (those are asserts).
+inline void require(bool condition, const std::string& what) {
+  if (!condition) throw SimError(what);
+}
+
+}  // namespace sim

@@ -1,0 +1,182 @@
+// Structure-of-arrays particle storage with a registry of named fields.
+//
+// Every per-particle array lives here with a name, a unit and whether it belongs in checkpoints.
+// Sorting, output, checkpoints and the restart-equals-continuous test all iterate the registry,
+// so a field added by a new effect cannot be forgotten by any of them (STYLE.md point 5).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <typeinfo>
+#include <vector>
+
+#include "sim/core/error.h"
+#include "sim/core/types.h"
+
+namespace sim {
+
+enum class ScalarKind { kReal, kInt32 };
+
+// How a field's element type maps to flat storage: `components` scalars of `kind` each.
+template <class T>
+struct FieldTraits;
+template <>
+struct FieldTraits<Real> {
+  static constexpr ScalarKind kind = ScalarKind::kReal;
+  static constexpr int components = 1;
+};
+template <>
+struct FieldTraits<Vec3> {
+  static constexpr ScalarKind kind = ScalarKind::kReal;
+  static constexpr int components = 3;
+};
+template <>
+struct FieldTraits<Mat3> {
+  static constexpr ScalarKind kind = ScalarKind::kReal;
+  static constexpr int components = 9;
+};
+template <>
+struct FieldTraits<std::int32_t> {
+  static constexpr ScalarKind kind = ScalarKind::kInt32;
+  static constexpr int components = 1;
+};
+
+struct FieldInfo {
+  std::string name;   // e.g. "velocity"
+  std::string unit;   // SI unit, e.g. "m/s"; "1" for dimensionless
+  bool checkpointed;  // part of the state a resumed run needs to continue bit-identically
+  bool written;       // written to output frames
+};
+
+class FieldBase {
+ public:
+  explicit FieldBase(FieldInfo info) : info_(std::move(info)) {}
+  virtual ~FieldBase() = default;
+  const FieldInfo& info() const { return info_; }
+  virtual ScalarKind kind() const = 0;
+  virtual int components() const = 0;
+  virtual std::size_t size() const = 0;
+  virtual void resize(std::size_t n) = 0;
+  // Reorders so that new element k is old element newToOld[k]. Reuses a scratch buffer:
+  // no allocation after the first call at a given size.
+  virtual void permute(const std::vector<Index>& newToOld) = 0;
+  // Flat scalar storage: size() * components() scalars of kind().
+  virtual const void* rawData() const = 0;
+  virtual void* rawData() = 0;
+  virtual const std::type_info& elementType() const = 0;
+
+ private:
+  FieldInfo info_;
+};
+
+template <class T>
+class Field final : public FieldBase {
+ public:
+  using FieldBase::FieldBase;
+  ScalarKind kind() const override { return FieldTraits<T>::kind; }
+  int components() const override { return FieldTraits<T>::components; }
+  std::size_t size() const override { return values.size(); }
+  void resize(std::size_t n) override { values.resize(n, T(zero())); }
+  void permute(const std::vector<Index>& newToOld) override {
+    scratch_.resize(values.size());
+    for (std::size_t k = 0; k < newToOld.size(); ++k) scratch_[k] = values[newToOld[k]];
+    values.swap(scratch_);
+  }
+  const void* rawData() const override { return values.data(); }
+  void* rawData() override { return values.data(); }
+  const std::type_info& elementType() const override { return typeid(T); }
+
+  std::vector<T> values;
+
+ private:
+  static T zero() {
+    if constexpr (std::is_arithmetic_v<T>) {
+      return T(0);
+    } else {
+      return T::Zero();
+    }
+  }
+  std::vector<T> scratch_;
+};
+
+// A set of equally long named fields. References returned by add()/get() stay valid for the
+// registry's lifetime (each field is heap-allocated once).
+class FieldRegistry {
+ public:
+  template <class T>
+  std::vector<T>& add(FieldInfo info) {
+    if (has(info.name)) throw SimError("field '" + info.name + "' registered twice");
+    auto field = std::make_unique<Field<T>>(std::move(info));
+    field->resize(size_);
+    auto& values = field->values;
+    fields_.push_back(std::move(field));
+    return values;
+  }
+
+  // Adds the field unless it exists already (with the same type): effects that share a field
+  // (e.g. two solvers needing "pressure") call this.
+  template <class T>
+  std::vector<T>& addOrGet(FieldInfo info) {
+    if (has(info.name)) return get<T>(info.name);
+    return add<T>(std::move(info));
+  }
+
+  template <class T>
+  std::vector<T>& get(std::string_view name) {
+    return typed<T>(name).values;
+  }
+  template <class T>
+  const std::vector<T>& get(std::string_view name) const {
+    return const_cast<FieldRegistry*>(this)->typed<T>(name).values;
+  }
+
+  bool has(std::string_view name) const { return find(name) != nullptr; }
+  const FieldBase* find(std::string_view name) const {
+    for (const auto& f : fields_)
+      if (f->info().name == name) return f.get();
+    return nullptr;
+  }
+  FieldBase* find(std::string_view name) {
+    return const_cast<FieldBase*>(std::as_const(*this).find(name));
+  }
+
+  std::size_t size() const { return size_; }
+  void resize(std::size_t n) {
+    size_ = n;
+    for (auto& f : fields_) f->resize(n);
+  }
+  void permute(const std::vector<Index>& newToOld) {
+    for (auto& f : fields_) f->permute(newToOld);
+  }
+
+  // Iteration over all fields in registration order (deterministic).
+  auto begin() const { return fields_.begin(); }
+  auto end() const { return fields_.end(); }
+  std::size_t fieldCount() const { return fields_.size(); }
+  // Bytes held by all fields (for `tamponade plan` memory estimates and pipeline tests).
+  std::size_t bytes() const {
+    std::size_t total = 0;
+    for (const auto& f : fields_)
+      total += f->size() * static_cast<std::size_t>(f->components()) *
+               (f->kind() == ScalarKind::kReal ? sizeof(Real) : sizeof(std::int32_t));
+    return total;
+  }
+
+ private:
+  template <class T>
+  Field<T>& typed(std::string_view name) {
+    FieldBase* base = find(name);
+    if (!base) throw SimError("no particle field named '" + std::string(name) + "'");
+    auto* field = dynamic_cast<Field<T>*>(base);
+    if (!field) throw SimError("particle field '" + std::string(name) + "' has another type");
+    return *field;
+  }
+
+  std::size_t size_ = 0;
+  std::vector<std::unique_ptr<FieldBase>> fields_;
+};
+
+}  // namespace sim

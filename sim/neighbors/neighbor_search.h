@@ -1,0 +1,94 @@
+// Uniform cell-grid neighbour search with Z-order sorting and CSR neighbour lists.
+//
+// The grid covers a fixed axis-aligned domain with cells of the kernel support radius, so every
+// neighbour of a particle lies in its own or one of the 26 adjacent cells. Each update counting-
+// sorts particle indices into cells (serially, so the order is deterministic) and then builds
+// compressed-sparse-row neighbour lists in parallel in two passes (count, fill). Static wall
+// particles are binned once. Dynamic particle data are periodically reordered by the Z-order
+// (Morton) index of their cell (zOrder()), which keeps neighbours close in memory.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Geometry>
+
+#include "sim/core/error.h"
+#include "sim/core/types.h"
+
+namespace sim {
+
+using Box = Eigen::AlignedBox<Real, 3>;
+
+// Neighbour lists in CSR form: the neighbours of i are indices[offsets[i] .. offsets[i+1]).
+struct NeighborList {
+  std::vector<Index> offsets;
+  std::vector<Index> indices;
+
+  Index count(Index i) const { return offsets[i + 1] - offsets[i]; }
+  const Index* begin(Index i) const { return indices.data() + offsets[i]; }
+  const Index* end(Index i) const { return indices.data() + offsets[i + 1]; }
+  template <class F>
+  void forEach(Index i, F&& f) const {
+    for (Index k = offsets[i]; k < offsets[i + 1]; ++k) f(indices[k]);
+  }
+  std::size_t totalPairs() const { return indices.size(); }
+};
+
+// A set of points binned into the grid's cells.
+struct CellBins {
+  std::vector<Index> cellStart;  // size cellCount+1; points of cell c: sorted[cellStart[c]..cellStart[c+1])
+  std::vector<Index> sorted;     // point indices grouped by cell
+  std::vector<std::int64_t> cellOf;  // per point
+};
+
+class NeighborSearch {
+ public:
+  // `domain` must contain every particle for the whole run; a particle leaving it is an error
+  // (it has escaped the walls). Memory is one Index per cell: keep the domain tight.
+  NeighborSearch(const Box& domain, Real supportRadius);
+
+  Real supportRadius() const { return radius_; }
+  const Box& domain() const { return domain_; }
+  std::int64_t cellCount() const { return cellCount_; }
+
+  // Bins static points (walls) once; builds the static-static list (wall volumes need it).
+  void setStatic(const std::vector<Vec3>& staticX);
+  // Bins dynamic points and rebuilds dynamic-dynamic and dynamic-static lists.
+  // Throws SimError naming the first particle outside the domain.
+  void update(const std::vector<Vec3>& dynamicX);
+
+  const NeighborList& dynamicDynamic() const { return dd_; }
+  const NeighborList& dynamicStatic() const { return ds_; }
+  const NeighborList& staticStatic() const { return ss_; }
+
+  // Permutation (new -> old) that orders points by the Morton index of their cell.
+  void zOrder(const std::vector<Vec3>& x, std::vector<Index>& newToOld) const;
+
+  // Cell coordinates of a point, clamped to the grid; `inside` reports whether it was in the domain.
+  Eigen::Vector3i cellCoords(const Vec3& x) const;
+  bool contains(const Vec3& x) const;
+
+ private:
+  void bin(const std::vector<Vec3>& x, CellBins& bins, bool dynamic);
+  // CSR list from query points `qx` to the points in `bins` with positions `px`; `skipSelf` drops
+  // the pair (i, i) when both sets are the same.
+  void buildList(const std::vector<Vec3>& qx, const CellBins& qbins, const std::vector<Vec3>& px,
+                 const CellBins& pbins, bool skipSelf, NeighborList& out);
+  std::int64_t linear(const Eigen::Vector3i& c) const {
+    return c.x() + dims_.x() * (static_cast<std::int64_t>(c.y()) +
+                                static_cast<std::int64_t>(dims_.y()) * c.z());
+  }
+
+  Box domain_;
+  Real radius_;
+  Real invCell_;
+  Eigen::Vector3i dims_;
+  std::int64_t cellCount_;
+  CellBins staticBins_, dynamicBins_;
+  std::vector<Vec3> staticX_;
+  NeighborList dd_, ds_, ss_;
+  std::vector<Index> counts_;
+};
+
+}  // namespace sim

@@ -1,0 +1,60 @@
+// `tamponade`: dispatches to one sub-command. Library errors become messages and exit codes here
+// and only here.
+#include <array>
+#include <cstdio>
+#include <exception>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "tools/commands.h"
+
+namespace tools {
+int runVersion(Args) {
+  std::printf("tamponade %s\n", TAMPONADE_VERSION);
+  return 0;
+}
+}  // namespace tools
+
+namespace {
+
+constexpr std::array kCommands = {
+    tools::Command{"version", "print the version", tools::runVersion},
+};
+
+void printUsage(std::FILE* out) {
+  std::fprintf(out,
+               "tamponade %s: silicone-oil tamponade simulation toolkit\n\n"
+               "usage: tamponade <command> [options]   (tamponade <command> --help for details)\n\n"
+               "commands:\n",
+               TAMPONADE_VERSION);
+  for (const auto& c : kCommands)
+    std::fprintf(out, "  %-10.*s %.*s\n", static_cast<int>(c.name.size()), c.name.data(),
+                 static_cast<int>(c.summary.size()), c.summary.data());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<std::string_view> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h" || args[0] == "help") {
+    printUsage(args.empty() ? stderr : stdout);
+    return args.empty() ? 2 : 0;
+  }
+  if (args[0] == "--version") {
+    std::printf("tamponade %s\n", TAMPONADE_VERSION);
+    return 0;
+  }
+  for (const auto& c : kCommands) {
+    if (c.name != args[0]) continue;
+    try {
+      return c.run(tools::Args(args).subspan(1));
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "tamponade %s: error: %s\n", std::string(c.name).c_str(), e.what());
+      return 1;
+    }
+  }
+  std::fprintf(stderr, "tamponade: unknown command '%s'\n\n", std::string(args[0]).c_str());
+  printUsage(stderr);
+  return 2;
+}

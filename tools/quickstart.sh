@@ -1,0 +1,6 @@
+#!/usr/bin/env bash
+# The toolkit's main job from a fresh clone: set-up, build, run the default scenario.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+bash tools/build.sh
+./build/tools/tamponade demo dam-break --out runs/dam-break
