@@ -1,0 +1,21 @@
+// The plain triangle mesh every layer above meshing/ sees: no CGAL types here (CGAL stays inside
+// meshing/ .cpp files, DESIGN.md). Units are whatever the caller declared; inside the toolkit, m.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+namespace meshing {
+
+using Vec3 = Eigen::Vector3d;
+using Triangle = std::array<int, 3>;  // vertex indices, counter-clockwise seen from outside
+
+struct TriangleMesh {
+  std::vector<Vec3> vertices;
+  std::vector<Triangle> faces;
+
+  bool empty() const { return faces.empty(); }
+};
+
+}  // namespace meshing
