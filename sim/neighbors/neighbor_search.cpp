@@ -133,7 +133,8 @@ void NeighborSearch::update(const std::vector<Vec3>& dynamicX) {
 
 void NeighborSearch::zOrder(const std::vector<Vec3>& x, std::vector<Index>& newToOld) const {
   const std::size_t n = x.size();
-  std::vector<std::uint64_t> code(n);
+  std::vector<std::uint64_t>& code = mortonScratch_;
+  code.resize(n);
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3i c = cellCoords(x[i]);

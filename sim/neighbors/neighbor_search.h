@@ -89,6 +89,7 @@ class NeighborSearch {
   std::vector<Vec3> staticX_;
   NeighborList dd_, ds_, ss_;
   std::vector<Index> counts_;
+  mutable std::vector<std::uint64_t> mortonScratch_;
 };
 
 }  // namespace sim

@@ -1,0 +1,55 @@
+#include "sim/effects/viscosity_monaghan2005.h"
+
+#include <limits>
+
+namespace sim {
+
+void ViscosityMonaghan2005::attach(World& world) {
+  viscosityOfMaterial_.clear();
+  for (const auto& m : world.materials) viscosityOfMaterial_.push_back(m.dynamicViscosity);
+}
+
+Real ViscosityMonaghan2005::maxTimeStep(const World& world) const {
+  Real nuMax = 0;
+  for (const auto& m : world.materials) nuMax = std::max(nuMax, m.kinematicViscosity());
+  if (nuMax <= 0) return std::numeric_limits<Real>::infinity();
+  const Real h = world.supportRadius();
+  return 0.125 * h * h / nuMax;
+}
+
+void ViscosityMonaghan2005::apply(World& world, const StepContext&) {
+  auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const Real h2 = 0.01 * kernel.supportRadius() * kernel.supportRadius();
+  constexpr Real kFactor = 2.0 * (3 + 2);  // 2(d+2), d = 3
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
+    Vec3 a = Vec3::Zero();
+    for (const Index* jp = nf.begin(i); jp != nf.end(i); ++jp) {
+      const Index j = *jp;
+      const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
+      const Real mu = 0.5 * (mui + muj);
+      if (mu == 0) continue;
+      const Vec3 xij = p.x[i] - p.x[j];
+      const Real vx = (p.v[i] - p.v[j]).dot(xij);
+      a += (p.mass[j] * mu / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
+           kernel.gradW(xij);
+    }
+    if (wallFriction_ && mui > 0) {
+      for (const Index* b = nw.begin(i); b != nw.end(i); ++b) {
+        const Vec3 xib = p.x[i] - walls.x[*b];
+        const Real vx = p.v[i].dot(xib);
+        a += (walls.volume[*b] * mui / p.density[i] * vx / (xib.squaredNorm() + h2)) *
+             kernel.gradW(xib);
+      }
+    }
+    p.a[i] += kFactor * a;
+  }
+}
+
+}  // namespace sim

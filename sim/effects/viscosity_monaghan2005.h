@@ -1,0 +1,27 @@
+// Explicit laminar viscosity (Monaghan 2005, Rep. Prog. Phys. 68:1703, eq. 6.13 form as used by
+// Morris et al. 1997 for Poiseuille flow), for water-like fluids:
+//   a_i += 2(d+2) sum_j m_j mu_ij / (rho_i rho_j) (v_ij . x_ij) / (|x_ij|^2 + 0.01 h^2) gradW_ij
+// with d = 3 and mu_ij the mean dynamic viscosity of the pair. Every pair force is equal and
+// opposite (m_i a_i = -m_j a_j term by term), so linear momentum is conserved to round-off.
+// Walls act as no-slip particles at rest with volume V_b (Akinci 2012). Explicit: stable only for
+// dt <= 0.125 h^2 / nu (viscous diffusion limit); viscous oils need the implicit solver.
+#pragma once
+
+#include "sim/effects/effect.h"
+
+namespace sim {
+
+class ViscosityMonaghan2005 final : public Effect {
+ public:
+  explicit ViscosityMonaghan2005(bool wallFriction = true) : wallFriction_(wallFriction) {}
+  std::string_view name() const override { return "viscosity"; }
+  void attach(World& world) override;
+  void apply(World& world, const StepContext& context) override;
+  Real maxTimeStep(const World& world) const override;
+
+ private:
+  bool wallFriction_;
+  std::vector<Real> viscosityOfMaterial_;  // [Pa s]
+};
+
+}  // namespace sim

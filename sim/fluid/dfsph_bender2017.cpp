@@ -1,0 +1,207 @@
+#include "sim/fluid/dfsph_bender2017.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "sim/fluid/density.h"
+
+namespace sim {
+
+DfsphBender2017::DfsphBender2017(const DfsphParameters& parameters) : params_(parameters) {
+  require(params_.densityTolerance > 0 && params_.divergenceTolerance > 0,
+          "DFSPH tolerances must be > 0");
+  require(params_.maxIterations >= params_.minIterations && params_.minIterations >= 1,
+          "DFSPH needs 1 <= minIterations <= maxIterations");
+}
+
+void DfsphBender2017::attach(World& world) {
+  auto& f = world.particles.fields;
+  factor_ = &f.addOrGet<Real>({"dfsph_factor", "m^5/kg", false, false});
+  pressure_ = &f.addOrGet<Real>({"pressure", "Pa", false, true});
+  // Warm-start values change the next step's result, so a bit-identical resume needs them.
+  kappaDensity_ = &f.addOrGet<Real>({"dfsph_kappa_density", "kg/m^3", true, false});
+  kappaDivergence_ = &f.addOrGet<Real>({"dfsph_kappa_divergence", "kg/m^3", true, false});
+}
+
+void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt) {
+  auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const auto& rho = p.density;
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    const Real ki = kappa[i] / rho[i];
+    Vec3 dv = Vec3::Zero();
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
+      const Real kj = kappa[*j] / rho[*j];
+      dv += p.mass[*j] * (ki + kj) * kernel.gradW(p.x[i] - p.x[*j]);
+    }
+    if (ki != 0.0) {
+      Vec3 g = Vec3::Zero();
+      for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+        g += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+      dv += world.restDensityOf(i) * ki * g;
+    }
+    p.v[i] -= dt * dv;
+  }
+}
+
+Real DfsphBender2017::predictDensity(World& world, Real dt) {
+  auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Real rate = 0;
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
+      rate += p.mass[*j] * (p.v[i] - p.v[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
+    Real wallRate = 0;
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      wallRate += walls.volume[*b] * p.v[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
+    const Real rho0 = world.restDensityOf(i);
+    // Only compression is corrected: a free surface may expand (Bender 2017, clamping).
+    predicted_[i] = std::max(p.density[i] + dt * (rate + rho0 * wallRate), rho0);
+  }
+  return reducer_.sum(n, [&](std::size_t i) {
+           return predicted_[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0;
+         }) / n;
+}
+
+Real DfsphBender2017::computeDensityRate(World& world) {
+  auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    if (neighborCount(world, i) < params_.minNeighborsForDivergence) {
+      predicted_[i] = 0;
+      continue;
+    }
+    Real rate = 0;
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
+      rate += p.mass[*j] * (p.v[i] - p.v[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
+    Real wallRate = 0;
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      wallRate += walls.volume[*b] * p.v[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
+    predicted_[i] = std::max(rate + world.restDensityOf(i) * wallRate, Real(0));
+  }
+  return reducer_.sum(n, [&](std::size_t i) {
+           return predicted_[i] / world.restDensityOf(static_cast<Index>(i));
+         }) / n;
+}
+
+void DfsphBender2017::beginStep(World& world, const StepContext& context) {
+  auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const Index n = static_cast<Index>(p.size());
+  computeDensities(world, p.density);
+  predicted_.resize(n);
+  kappa_.resize(n);
+
+  // Stiffness factor alpha_i (derivation in docs/solvers.md).
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Vec3 g = Vec3::Zero();
+    Real sumSq = 0;
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
+      const Vec3 gradW = p.mass[*j] * kernel.gradW(p.x[i] - p.x[*j]);
+      g += gradW;
+      sumSq += gradW.squaredNorm() * p.mass[i] / p.mass[*j];
+    }
+    Vec3 gw = Vec3::Zero();
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      gw += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+    g += world.restDensityOf(i) * gw;
+    const Real denominator = g.squaredNorm() + sumSq;
+    // A full neighbourhood gives a denominator of order (rho/h)^2; a particle with almost no
+    // neighbours gets alpha = 0 instead of an enormous stiffness (Bender 2017).
+    const Real h = kernel.supportRadius();
+    const Real typical = p.density[i] * p.density[i] / (h * h);
+    (*factor_)[i] = denominator > 1e-6 * typical ? p.density[i] / denominator : 0.0;
+  }
+
+  stats_.divergenceIterations = 0;
+  const Real dt = context.dt;
+  if (!params_.divergenceSolve || dt <= 0) return;
+
+  // Divergence-free solve (Bender 2017, Algorithm 2): makes Drho/Dt = 0 for the current velocities.
+  auto& warm = *kappaDivergence_;
+  if (params_.warmStartFactor > 0) {
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) kappa_[i] = params_.warmStartFactor * warm[i] / dt;
+    applyPressureVelocity(world, kappa_, dt);
+  }
+  std::fill(warm.begin(), warm.end(), 0.0);
+  if (params_.warmStartFactor > 0)
+    for (Index i = 0; i < n; ++i) warm[i] = kappa_[i] * dt;
+  Real error = computeDensityRate(world) * dt;
+  int iteration = 0;
+  while ((iteration < 1 || error > params_.divergenceTolerance) &&
+         iteration < params_.maxDivergenceIterations) {
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      kappa_[i] = predicted_[i] * (*factor_)[i] / dt;
+      warm[i] += kappa_[i] * dt;
+    }
+    applyPressureVelocity(world, kappa_, dt);
+    error = computeDensityRate(world) * dt;
+    ++iteration;
+  }
+  stats_.divergenceIterations = iteration;
+}
+
+void DfsphBender2017::correctVelocities(World& world, const StepContext& context) {
+  auto& p = world.particles;
+  const Index n = static_cast<Index>(p.size());
+  const Real dt = context.dt;
+  const Real invDt2 = 1.0 / (dt * dt);
+  auto& warm = *kappaDensity_;
+
+  // Warm start with a fraction of last step's accumulated stiffness (Bender 2017, section 4.2).
+  if (params_.warmStartFactor > 0) {
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) kappa_[i] = params_.warmStartFactor * warm[i] * invDt2;
+    applyPressureVelocity(world, kappa_, dt);
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) warm[i] = kappa_[i] / invDt2;
+  } else {
+    std::fill(warm.begin(), warm.end(), 0.0);
+  }
+
+  // Constant-density solve (Bender 2017, Algorithm 3).
+  Real error = predictDensity(world, dt);
+  int iteration = 0;
+  while ((iteration < params_.minIterations || error > params_.densityTolerance) &&
+         iteration < params_.maxIterations) {
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      kappa_[i] = (predicted_[i] - world.restDensityOf(i)) * invDt2 * (*factor_)[i];
+      warm[i] += kappa_[i] / invDt2;
+    }
+    applyPressureVelocity(world, kappa_, dt);
+    error = predictDensity(world, dt);
+    ++iteration;
+  }
+  stats_.densityIterations = iteration;
+  stats_.averageCompression = error;
+  stats_.maxCompression = DeterministicReducer::max(n, [&](std::size_t i) {
+    return predicted_[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0;
+  });
+  // Pressure p = kappa * rho (kappa is p/rho in Bender's notation), for output.
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) (*pressure_)[i] = warm[i] * invDt2 * p.density[i];
+}
+
+}  // namespace sim

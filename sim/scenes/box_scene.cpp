@@ -1,0 +1,64 @@
+#include "sim/scenes/box_scene.h"
+
+#include <cmath>
+
+namespace sim {
+
+Box tankDomain(const TankSpec& tank, Real spacing) {
+  const Real margin = (tank.wallLayers + 2) * spacing;
+  Vec3 hi = tank.innerMax + Vec3::Constant(margin);
+  if (!tank.closedTop) hi.y() += (tank.innerMax.y() - tank.innerMin.y());  // room for splashes
+  return Box(tank.innerMin - Vec3::Constant(margin), hi);
+}
+
+void addTankWalls(World& world, const TankSpec& tank, Real d, int tag) {
+  require(d > 0, "wall spacing must be > 0 m");
+  require((tank.innerMax - tank.innerMin).minCoeff() > 0, "tank must have a positive size");
+  const Vec3 size = tank.innerMax - tank.innerMin;
+  const Eigen::Vector3i cells = (size / d).array().round().cast<int>().max(1);
+  const int L = tank.wallLayers;
+  // Lattice nodes at innerMin + (k + 0.5) d for k in [-L, cells + L): the nodes outside the inner
+  // box are wall particles. Fluid blocks use the same lattice inside, so the first fluid layer
+  // sits d from the first wall layer.
+  for (int kz = -L; kz < cells.z() + L; ++kz)
+    for (int ky = -L; ky < cells.y() + L; ++ky)
+      for (int kx = -L; kx < cells.x() + L; ++kx) {
+        const bool insideX = kx >= 0 && kx < cells.x();
+        const bool insideY = ky >= 0 && (ky < cells.y() || !tank.closedTop);
+        const bool insideZ = kz >= 0 && kz < cells.z();
+        if (insideX && insideY && insideZ) continue;
+        if (!tank.closedTop && ky >= cells.y()) {
+          // Open top: the side walls stop at the tank height.
+          continue;
+        }
+        const Vec3 x = tank.innerMin + Vec3(kx + 0.5, ky + 0.5, kz + 0.5) * d;
+        Vec3 n = Vec3::Zero();
+        if (kx < 0) n.x() -= 1;
+        if (kx >= cells.x()) n.x() += 1;
+        if (ky < 0) n.y() -= 1;
+        if (ky >= cells.y()) n.y() += 1;
+        if (kz < 0) n.z() -= 1;
+        if (kz >= cells.z()) n.z() += 1;
+        world.walls.add(x, n.normalized(), tag);
+      }
+}
+
+std::size_t addFluidBlock(World& world, const Vec3& min, const Vec3& max, Real d,
+                          int materialIndex) {
+  require(d > 0, "fluid spacing must be > 0 m");
+  require(materialIndex >= 0 && materialIndex < world.materials.size(),
+          "fluid block refers to an undefined material");
+  const Real mass = world.materials[materialIndex].restDensity * d * d * d;
+  const Eigen::Vector3i cells = ((max - min) / d).array().round().cast<int>();
+  std::size_t added = 0;
+  for (int kz = 0; kz < cells.z(); ++kz)
+    for (int ky = 0; ky < cells.y(); ++ky)
+      for (int kx = 0; kx < cells.x(); ++kx) {
+        world.particles.add(min + Vec3(kx + 0.5, ky + 0.5, kz + 0.5) * d, Vec3::Zero(), mass,
+                            materialIndex);
+        ++added;
+      }
+  return added;
+}
+
+}  // namespace sim

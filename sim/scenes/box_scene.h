@@ -1,0 +1,27 @@
+// Builders for box-shaped test and benchmark scenes (hydrostatic tank, dam break): walls sampled as
+// layers of static particles around an axis-aligned tank, fluid blocks on a cubic lattice.
+// Eye scenes come from meshing/ and anatomy/ instead; these exist so the engine can be validated
+// on its own.
+#pragma once
+
+#include "sim/world/world.h"
+
+namespace sim {
+
+struct TankSpec {
+  Vec3 innerMin = Vec3::Zero();  // [m] the fluid side of the walls
+  Vec3 innerMax = Vec3::Zero();  // [m]
+  int wallLayers = 2;            // layers of wall particles; 2 cover the support radius at h = 2d
+  bool closedTop = false;        // a lid at innerMax.y (the up axis is +y)
+};
+
+// Domain that contains the tank, its walls and a margin (for WorldParameters::domain).
+Box tankDomain(const TankSpec& tank, Real spacing);
+// Adds the wall particles of the tank, spaced d, with outward normals (into the wall).
+void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag = 0);
+// Fills [min, max] with particles on a lattice of spacing d (cell-centred: first at min + d/2),
+// mass rho0 d^3 of material `materialIndex`. Returns the number added.
+std::size_t addFluidBlock(World& world, const Vec3& min, const Vec3& max, Real spacing,
+                          int materialIndex);
+
+}  // namespace sim

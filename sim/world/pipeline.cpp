@@ -1,0 +1,127 @@
+#include "sim/world/pipeline.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "sim/core/reduction.h"
+
+namespace sim {
+
+Pipeline::Pipeline(std::unique_ptr<PressureSolver> solver,
+                   std::vector<std::unique_ptr<Effect>> effects,
+                   std::vector<StageDecision> decisions)
+    : solver_(std::move(solver)), effects_(std::move(effects)), decisions_(std::move(decisions)) {
+  require(solver_ != nullptr, "a pipeline needs a pressure solver");
+  neighborSlot_ = timers_.slot("neighbors");
+  solverBeginSlot_ = timers_.slot(std::string(solver_->name()) + ".begin");
+  for (const auto& e : effects_) effectSlots_.push_back(timers_.slot(std::string(e->name())));
+  solverSlot_ = timers_.slot(std::string(solver_->name()) + ".solve");
+  integrateSlot_ = timers_.slot("integrate");
+}
+
+bool Pipeline::hasStage(std::string_view name) const {
+  if (solver_->name() == name) return true;
+  for (const auto& e : effects_)
+    if (e->name() == name) return true;
+  return false;
+}
+
+void Pipeline::attach(World& world) {
+  require(world.initialized(), "World::initialize() must run before Pipeline::attach()");
+  solver_->attach(world);
+  for (auto& e : effects_) e->attach(world);
+  attached_ = true;
+}
+
+TimeStepInfo Pipeline::chooseTimeStep(const World& world) const {
+  const auto& params = world.parameters();
+  const Real d = world.particleSpacing();
+  const auto& v = world.particles.v;
+  const Real vmax = std::sqrt(
+      DeterministicReducer::max(v.size(), [&](std::size_t i) { return v[i].squaredNorm(); }));
+  TimeStepInfo info{params.maxTimeStep, "max"};
+  auto limit = [&](Real dt, const std::string& by) {
+    if (dt < info.dt) info = {dt, by};
+  };
+  // Advection CFL, plus a body-force bound so a scene starting at rest does not take a step in
+  // which gravity alone moves particles by more than cfl * d.
+  if (vmax > 0) limit(params.cflNumber * d / vmax, "cfl");
+  const Real g = world.gravity.norm();
+  if (g > 0) limit(params.cflNumber * std::sqrt(d / g), "cfl");
+  limit(solver_->maxTimeStep(world), std::string(solver_->name()));
+  for (const auto& e : effects_) limit(e->maxTimeStep(world), std::string(e->name()));
+  if (info.dt < params.minTimeStep) info = {params.minTimeStep, "min"};
+  return info;
+}
+
+Real Pipeline::step(World& world) {
+  require(attached_, "Pipeline::attach() must run before step()");
+  auto& p = world.particles;
+  const std::size_t n = p.size();
+  {
+    ScopedStageTimer t(timers_, neighborSlot_);
+    world.updateNeighbors();
+  }
+  StepContext context{world.lastTimeStep};
+  {
+    ScopedStageTimer t(timers_, solverBeginSlot_);
+    solver_->beginStep(world, context);
+  }
+  lastStep_ = chooseTimeStep(world);
+  context.dt = lastStep_.dt;
+  const Real dt = context.dt;
+
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) p.a[i].setZero();
+  for (std::size_t k = 0; k < effects_.size(); ++k) {
+    if (effects_[k]->kind() != Effect::Kind::kExplicit) continue;
+    ScopedStageTimer t(timers_, effectSlots_[k]);
+    effects_[k]->apply(world, context);
+  }
+  {
+    ScopedStageTimer t(timers_, integrateSlot_);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) p.v[i] += dt * p.a[i];
+  }
+  for (std::size_t k = 0; k < effects_.size(); ++k) {
+    if (effects_[k]->kind() != Effect::Kind::kImplicit) continue;
+    ScopedStageTimer t(timers_, effectSlots_[k]);
+    effects_[k]->apply(world, context);
+  }
+  {
+    ScopedStageTimer t(timers_, solverSlot_);
+    solver_->correctVelocities(world, context);
+  }
+  {
+    ScopedStageTimer t(timers_, integrateSlot_);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) p.x[i] += dt * p.v[i];
+  }
+  world.time += dt;
+  world.lastTimeStep = dt;
+  ++world.stepCount;
+  return dt;
+}
+
+std::string Pipeline::describe() const {
+  std::ostringstream out;
+  out << "pipeline (in execution order):\n";
+  out << "  1. neighbors            cell grid + Z-order, CSR lists\n";
+  out << "  2. " << solver_->name() << ".begin         densities and solver factors\n";
+  int k = 3;
+  for (const auto& e : effects_)
+    if (e->kind() == Effect::Kind::kExplicit) out << "  " << k++ << ". " << e->name() << "\n";
+  out << "  " << k++ << ". integrate            v* = v + dt a\n";
+  for (const auto& e : effects_)
+    if (e->kind() == Effect::Kind::kImplicit) out << "  " << k++ << ". " << e->name() << "\n";
+  out << "  " << k++ << ". " << solver_->name() << ".solve         pressure correction\n";
+  out << "  " << k++ << ". integrate            x += dt v\n";
+  out << "stage decisions:\n";
+  for (const auto& d : decisions_)
+    out << "  " << (d.active ? "[on]  " : "[off] ") << d.name << (d.forced ? " (forced)" : "")
+        << ": " << d.reason << "\n";
+  return out.str();
+}
+
+}  // namespace sim

@@ -1,0 +1,87 @@
+#include "sim/world/stage_registry.h"
+
+#include <sstream>
+
+#include "sim/effects/gravity.h"
+#include "sim/effects/viscosity_monaghan2005.h"
+
+namespace sim {
+
+const std::vector<SolverEntry>& solverRegistry() {
+  static const std::vector<SolverEntry> entries = {
+      {"dfsph", "divergence-free SPH, mass-weighted density (Bender & Koschier 2017)",
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<DfsphBender2017>(o.dfsph);
+       }},
+      {"wcsph", "weakly compressible SPH, Tait equation (Becker & Teschner 2007)",
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<WcsphBecker2007>(o.wcsph);
+       }},
+  };
+  return entries;
+}
+
+const std::vector<EffectEntry>& effectRegistry() {
+  static const std::vector<EffectEntry> entries = {
+      {"gravity", "uniform body acceleration, turned with posture",
+       [](const World& w, const PipelineOptions&) {
+         const bool on = w.gravity.norm() > 0;
+         return StageDecision{"gravity", on, false,
+                              on ? "gravity is non-zero" : "gravity is zero in this scene"};
+       },
+       [](const World&, const PipelineOptions&) { return std::make_unique<Gravity>(); }},
+      {"viscosity", "explicit laminar viscosity (Monaghan 2005), for water-like fluids",
+       [](const World& w, const PipelineOptions&) {
+         Real nuMax = 0;
+         for (const auto& m : w.materials) nuMax = std::max(nuMax, m.kinematicViscosity());
+         std::ostringstream why;
+         if (nuMax > 0)
+           why << "a material has viscosity (max nu = " << nuMax << " m^2/s)";
+         else
+           why << "every material is inviscid";
+         return StageDecision{"viscosity", nuMax > 0, false, why.str()};
+       },
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<ViscosityMonaghan2005>(o.wallFriction);
+       }},
+  };
+  return entries;
+}
+
+Pipeline assemblePipeline(const World& world, const PipelineOptions& options) {
+  std::unique_ptr<PressureSolver> solver;
+  std::string known;
+  for (const auto& s : solverRegistry()) {
+    known += (known.empty() ? "" : ", ") + s.name;
+    if (s.name == options.solver) solver = s.create(world, options);
+  }
+  require(solver != nullptr,
+          "unknown pressure solver '" + options.solver + "' (known: " + known + ")");
+
+  for (const auto& [name, force] : options.forced) {
+    bool exists = false;
+    for (const auto& e : effectRegistry()) exists = exists || e.name == name;
+    require(exists, "cannot force unknown effect '" + name + "'");
+  }
+
+  std::vector<std::unique_ptr<Effect>> effects;
+  std::vector<StageDecision> decisions;
+  for (const auto& entry : effectRegistry()) {
+    StageDecision d = entry.needed(world, options);
+    const auto f = options.forced.find(entry.name);
+    if (f != options.forced.end() && f->second != Force::kAuto) {
+      const bool on = f->second == Force::kOn;
+      if (on != d.active) {
+        d.forced = true;
+        d.reason = std::string("forced ") + (on ? "on" : "off") + " by the protocol (rule: " +
+                   d.reason + ")";
+      }
+      d.active = on;
+    }
+    if (d.active) effects.push_back(entry.create(world, options));
+    decisions.push_back(std::move(d));
+  }
+  return Pipeline(std::move(solver), std::move(effects), std::move(decisions));
+}
+
+}  // namespace sim

@@ -1,0 +1,52 @@
+// The registration lists of pressure solvers and effects (STYLE.md point 3: one explicit list per
+// kind of plug-in, no self-registering statics) and the assembly of a Pipeline from a scene.
+//
+// Each effect entry has a name, a one-line description, a rule saying whether the scene needs it
+// (and why), and a factory. A protocol may force an effect on or off; the decision and its reason
+// are kept for `tamponade plan` and the run record.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "sim/fluid/dfsph_bender2017.h"
+#include "sim/fluid/wcsph_becker2007.h"
+#include "sim/world/pipeline.h"
+
+namespace sim {
+
+enum class Force { kAuto, kOn, kOff };
+
+// Everything a pipeline can be configured with. Stages read the parts they need.
+struct PipelineOptions {
+  std::string solver = "dfsph";
+  DfsphParameters dfsph;
+  WcsphParameters wcsph;
+  bool wallFriction = true;              // no-slip viscous walls
+  std::map<std::string, Force> forced;   // effect name -> forced on/off
+};
+
+struct SolverEntry {
+  std::string name;
+  std::string description;
+  std::function<std::unique_ptr<PressureSolver>(const World&, const PipelineOptions&)> create;
+};
+
+struct EffectEntry {
+  std::string name;
+  std::string description;
+  // Whether the scene calls for the effect, with the reason in words.
+  std::function<StageDecision(const World&, const PipelineOptions&)> needed;
+  std::function<std::unique_ptr<Effect>(const World&, const PipelineOptions&)> create;
+};
+
+const std::vector<SolverEntry>& solverRegistry();
+const std::vector<EffectEntry>& effectRegistry();
+
+// Builds the pipeline the scene calls for. Throws SimError for an unknown solver or effect name.
+Pipeline assemblePipeline(const World& world, const PipelineOptions& options);
+
+}  // namespace sim

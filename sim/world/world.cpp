@@ -1,0 +1,74 @@
+#include "sim/world/world.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace sim {
+
+void WorldParameters::validate() const {
+  require(std::isfinite(particleSpacing) && particleSpacing > 0.0,
+          "particle spacing must be a positive length in metres (got " +
+              std::to_string(particleSpacing) + ")");
+  require(supportRadiusFactor >= 1.0 && supportRadiusFactor <= 4.0,
+          "support radius factor must be in [1, 4] particle spacings (2 is the usual choice)");
+  require(gravity.allFinite(), "gravity must be finite");
+  require(!domain.isEmpty() && domain.volume() > 0.0, "simulation domain is empty");
+  require(cflNumber > 0.0 && cflNumber <= 1.0, "CFL number must be in (0, 1]");
+  require(minTimeStep > 0.0, "minimum time step must be > 0 s");
+  require(maxTimeStep >= minTimeStep, "maximum time step must be >= the minimum time step");
+  require(zSortInterval >= 1, "Z-order sort interval must be >= 1 step");
+}
+
+World::World(const WorldParameters& parameters)
+    : kernel(parameters.kernel, parameters.particleSpacing > 0
+                                    ? parameters.supportRadiusFactor * parameters.particleSpacing
+                                    : 1.0),
+      gravity(parameters.gravity),
+      parameters_(parameters) {
+  parameters_.validate();
+}
+
+void World::initialize() {
+  parameters_.validate();
+  require(particles.size() > 0, "the scene has no dynamic particles");
+  for (Index i = 0; i < particles.size(); ++i) {
+    const int m = particles.material[i];
+    require(m >= 0 && m < materials.size(),
+            "particle " + std::to_string(i) + " refers to material " + std::to_string(m) +
+                " but only " + std::to_string(materials.size()) + " are defined");
+    require(particles.mass[i] > 0.0 && std::isfinite(particles.mass[i]),
+            "particle " + std::to_string(i) + " has a non-positive mass");
+    require(particles.v[i].allFinite(), "particle " + std::to_string(i) + " has a non-finite velocity");
+  }
+  search_ = std::make_unique<NeighborSearch>(parameters_.domain, supportRadius());
+  search_->setStatic(walls.x);  // throws, naming the wall particle, if one lies outside
+  computeWallVolumes();
+  updatesSinceSort_ = parameters_.zSortInterval;  // sort on the first update
+  updateNeighbors();
+  initialized_ = true;
+}
+
+void World::computeWallVolumes() {
+  // Akinci et al. 2012, eq. 4: V_b = 1 / sum_k W_bk over wall neighbours k (including b itself),
+  // so that a densely sampled wall does not over-contribute to the fluid density.
+  const NeighborList& ss = search_->staticStatic();
+  const Real w0 = kernel.W0();
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < walls.size(); ++b) {
+    Real delta = w0;
+    for (const Index* k = ss.begin(static_cast<Index>(b)); k != ss.end(static_cast<Index>(b)); ++k)
+      delta += kernel.W(walls.x[b] - walls.x[*k]);
+    walls.volume[b] = 1.0 / delta;
+  }
+}
+
+void World::updateNeighbors() {
+  if (++updatesSinceSort_ >= parameters_.zSortInterval) {
+    search_->zOrder(particles.x, permutation_);
+    particles.fields.permute(permutation_);
+    updatesSinceSort_ = 0;
+  }
+  search_->update(particles.x);
+}
+
+}  // namespace sim

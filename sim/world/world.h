@@ -1,0 +1,75 @@
+// The World: everything a step reads and writes. Passed explicitly (no singletons).
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "sim/core/material.h"
+#include "sim/core/particle_set.h"
+#include "sim/core/types.h"
+#include "sim/kernels/kernel.h"
+#include "sim/neighbors/neighbor_search.h"
+
+namespace sim {
+
+struct WorldParameters {
+  Real particleSpacing = 0.0;          // [m] initial lattice spacing d of dynamic particles
+  Real supportRadiusFactor = 2.0;      // [1] kernel support radius h = factor * d
+  KernelKind kernel = KernelKind::kCubicSpline;
+  Vec3 gravity = Vec3(0, -9.81, 0);    // [m/s^2] in the simulation (eye) frame; may change in time
+  Box domain;                          // [m] every particle stays inside for the whole run
+  Real cflNumber = 0.4;                // [1] dt <= cfl * d / v_max
+  Real minTimeStep = 1e-6;             // [s]
+  Real maxTimeStep = 5e-3;             // [s]
+  int zSortInterval = 16;              // [steps] how often particle data are re-sorted in Z-order
+
+  void validate() const;
+};
+
+class World {
+ public:
+  explicit World(const WorldParameters& parameters);
+  World(const World&) = delete;
+  World& operator=(const World&) = delete;
+
+  // Call after all particles and walls are added: validates, bins the walls, computes wall
+  // volumes (Akinci et al. 2012) and the first neighbour lists. Throws SimError on bad input.
+  void initialize();
+  bool initialized() const { return initialized_; }
+
+  // Rebuilds neighbour lists; every zSortInterval calls it first reorders the dynamic particles
+  // by Z-order so that neighbours are close in memory.
+  void updateNeighbors();
+
+  Real restDensityOf(Index i) const { return materials[particles.material[i]].restDensity; }
+  // Rest volume V0 of a dynamic particle [m^3] (= mass / rest density).
+  Real restVolumeOf(Index i) const { return particles.mass[i] / restDensityOf(i); }
+
+  const WorldParameters& parameters() const { return parameters_; }
+  Real particleSpacing() const { return parameters_.particleSpacing; }
+  Real supportRadius() const { return kernel.supportRadius(); }
+
+  MaterialTable materials;
+  DynamicParticles particles;
+  WallParticles walls;
+  Kernel kernel;
+  Vec3 gravity;          // [m/s^2] current gravity (the runner turns it with posture)
+  Real time = 0.0;       // [s]
+  long stepCount = 0;
+  Real lastTimeStep = 0; // [s]
+
+  const NeighborList& fluidNeighbors() const { return search_->dynamicDynamic(); }
+  const NeighborList& wallNeighbors() const { return search_->dynamicStatic(); }
+  const NeighborSearch& search() const { return *search_; }
+
+ private:
+  void computeWallVolumes();
+
+  WorldParameters parameters_;
+  std::unique_ptr<NeighborSearch> search_;
+  std::vector<Index> permutation_;
+  long updatesSinceSort_ = 0;
+  bool initialized_ = false;
+};
+
+}  // namespace sim
