@@ -76,12 +76,15 @@ class WallParticles {
   std::size_t size() const { return fields.size(); }
   // `outwardNormal` points from the fluid into the wall material (zero if unknown); `tag` is a
   // caller-defined group (e.g. which wall or region), carried but never interpreted by sim/.
-  void add(const Vec3& position, const Vec3& outwardNormal = Vec3::Zero(), int groupTag = 0) {
+  // `particleVolume` [m^3] 0 means "unknown": World::initialize() then computes the Akinci volume.
+  void add(const Vec3& position, const Vec3& outwardNormal = Vec3::Zero(), int groupTag = 0,
+           Real particleVolume = 0.0) {
     const std::size_t i = size();
     fields.resize(i + 1);
     x[i] = position;
     normal[i] = outwardNormal;
     tag[i] = groupTag;
+    volume[i] = particleVolume;
   }
 
   FieldRegistry fields;

@@ -137,15 +137,17 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   if (!params_.divergenceSolve || dt <= 0) return;
 
   // Divergence-free solve (Bender 2017, Algorithm 2): makes Drho/Dt = 0 for the current velocities.
+  // Warm start only where the fluid is still compressing: re-applying last step's pressure to a
+  // particle that is now expanding would push it apart further and inject energy (the same
+  // condition SPlisHSPlasH applies).
   auto& warm = *kappaDivergence_;
-  if (params_.warmStartFactor > 0) {
+  computeDensityRate(world);
 #pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) kappa_[i] = params_.warmStartFactor * warm[i] / dt;
-    applyPressureVelocity(world, kappa_, dt);
+  for (Index i = 0; i < n; ++i) {
+    kappa_[i] = predicted_[i] > 0 ? params_.warmStartFactor * warm[i] / dt : 0.0;
+    warm[i] = kappa_[i] * dt;
   }
-  std::fill(warm.begin(), warm.end(), 0.0);
-  if (params_.warmStartFactor > 0)
-    for (Index i = 0; i < n; ++i) warm[i] = kappa_[i] * dt;
+  if (params_.warmStartFactor > 0) applyPressureVelocity(world, kappa_, dt);
   Real error = computeDensityRate(world) * dt;
   int iteration = 0;
   while ((iteration < 1 || error > params_.divergenceTolerance) &&
@@ -169,16 +171,17 @@ void DfsphBender2017::correctVelocities(World& world, const StepContext& context
   const Real invDt2 = 1.0 / (dt * dt);
   auto& warm = *kappaDensity_;
 
-  // Warm start with a fraction of last step's accumulated stiffness (Bender 2017, section 4.2).
-  if (params_.warmStartFactor > 0) {
+  // Warm start with a fraction of last step's accumulated stiffness (Bender 2017, section 4.2),
+  // only for particles that the prediction finds compressed (see the divergence solve).
+  predictDensity(world, dt);
 #pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) kappa_[i] = params_.warmStartFactor * warm[i] * invDt2;
-    applyPressureVelocity(world, kappa_, dt);
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) warm[i] = kappa_[i] / invDt2;
-  } else {
-    std::fill(warm.begin(), warm.end(), 0.0);
+  for (Index i = 0; i < n; ++i) {
+    kappa_[i] = predicted_[i] > world.restDensityOf(i)
+                    ? params_.warmStartFactor * warm[i] * invDt2
+                    : 0.0;
+    warm[i] = kappa_[i] / invDt2;
   }
+  if (params_.warmStartFactor > 0) applyPressureVelocity(world, kappa_, dt);
 
   // Constant-density solve (Bender 2017, Algorithm 3).
   Real error = predictDensity(world, dt);

@@ -5,7 +5,7 @@
 namespace sim {
 
 Box tankDomain(const TankSpec& tank, Real spacing) {
-  const Real margin = (tank.wallLayers + 2) * spacing;
+  const Real margin = 3 * spacing;
   Vec3 hi = tank.innerMax + Vec3::Constant(margin);
   if (!tank.closedTop) hi.y() += (tank.innerMax.y() - tank.innerMin.y());  // room for splashes
   return Box(tank.innerMin - Vec3::Constant(margin), hi);
@@ -16,30 +16,22 @@ void addTankWalls(World& world, const TankSpec& tank, Real d, int tag) {
   require((tank.innerMax - tank.innerMin).minCoeff() > 0, "tank must have a positive size");
   const Vec3 size = tank.innerMax - tank.innerMin;
   const Eigen::Vector3i cells = (size / d).array().round().cast<int>().max(1);
-  const int L = tank.wallLayers;
-  // Lattice nodes at innerMin + (k + 0.5) d for k in [-L, cells + L): the nodes outside the inner
-  // box are wall particles. Fluid blocks use the same lattice inside, so the first fluid layer
-  // sits d from the first wall layer.
-  for (int kz = -L; kz < cells.z() + L; ++kz)
-    for (int ky = -L; ky < cells.y() + L; ++ky)
-      for (int kx = -L; kx < cells.x() + L; ++kx) {
-        const bool insideX = kx >= 0 && kx < cells.x();
-        const bool insideY = ky >= 0 && (ky < cells.y() || !tank.closedTop);
-        const bool insideZ = kz >= 0 && kz < cells.z();
-        if (insideX && insideY && insideZ) continue;
-        if (!tank.closedTop && ky >= cells.y()) {
-          // Open top: the side walls stop at the tank height.
-          continue;
-        }
-        const Vec3 x = tank.innerMin + Vec3(kx + 0.5, ky + 0.5, kz + 0.5) * d;
+  const Vec3 step = size.cwiseQuotient(cells.cast<Real>());  // exactly fits the tank
+  for (int kz = 0; kz <= cells.z(); ++kz)
+    for (int ky = 0; ky <= cells.y(); ++ky)
+      for (int kx = 0; kx <= cells.x(); ++kx) {
+        const bool onX = kx == 0 || kx == cells.x();
+        const bool onY = ky == 0 || (ky == cells.y() && tank.closedTop);
+        const bool onZ = kz == 0 || kz == cells.z();
+        if (!onX && !onY && !onZ) continue;
         Vec3 n = Vec3::Zero();
-        if (kx < 0) n.x() -= 1;
-        if (kx >= cells.x()) n.x() += 1;
-        if (ky < 0) n.y() -= 1;
-        if (ky >= cells.y()) n.y() += 1;
-        if (kz < 0) n.z() -= 1;
-        if (kz >= cells.z()) n.z() += 1;
-        world.walls.add(x, n.normalized(), tag);
+        if (kx == 0) n.x() -= 1;
+        if (kx == cells.x()) n.x() += 1;
+        if (ky == 0) n.y() -= 1;
+        if (ky == cells.y() && tank.closedTop) n.y() += 1;
+        if (kz == 0) n.z() -= 1;
+        if (kz == cells.z()) n.z() += 1;
+        world.walls.add(tank.innerMin + Vec3(kx, ky, kz).cwiseProduct(step), n.normalized(), tag);
       }
 }
 

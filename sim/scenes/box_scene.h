@@ -11,13 +11,16 @@ namespace sim {
 struct TankSpec {
   Vec3 innerMin = Vec3::Zero();  // [m] the fluid side of the walls
   Vec3 innerMax = Vec3::Zero();  // [m]
-  int wallLayers = 2;            // layers of wall particles; 2 cover the support radius at h = 2d
   bool closedTop = false;        // a lid at innerMax.y (the up axis is +y)
 };
 
 // Domain that contains the tank, its walls and a margin (for WorldParameters::domain).
 Box tankDomain(const TankSpec& tank, Real spacing);
-// Adds the wall particles of the tank, spaced d, with outward normals (into the wall).
+// Adds the wall particles of the tank: one layer sampled on the tank's inner surface at spacing d,
+// with outward normals (into the wall) and Akinci et al. 2012 volumes computed by the World. This
+// is how mesh walls are sampled too. (A multi-layer lattice wall would be "permeable" to the
+// clamped pressure solvers: a particle between lattice wall particles sees rest density and
+// no force; a single surface layer is a density barrier. See docs/solvers.md.)
 void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag = 0);
 // Fills [min, max] with particles on a lattice of spacing d (cell-centred: first at min + d/2),
 // mass rho0 d^3 of material `materialIndex`. Returns the number added.

@@ -7,6 +7,14 @@
 #include "sim/core/reduction.h"
 
 namespace sim {
+namespace {
+
+Real maxSpeed(const std::vector<Vec3>& v) {  // [m/s]
+  return std::sqrt(
+      DeterministicReducer::max(v.size(), [&](std::size_t i) { return v[i].squaredNorm(); }));
+}
+
+}  // namespace
 
 Pipeline::Pipeline(std::unique_ptr<PressureSolver> solver,
                    std::vector<std::unique_ptr<Effect>> effects,
@@ -38,8 +46,7 @@ TimeStepInfo Pipeline::chooseTimeStep(const World& world) const {
   const auto& params = world.parameters();
   const Real d = world.particleSpacing();
   const auto& v = world.particles.v;
-  const Real vmax = std::sqrt(
-      DeterministicReducer::max(v.size(), [&](std::size_t i) { return v[i].squaredNorm(); }));
+  const Real vmax = maxSpeed(v);
   TimeStepInfo info{params.maxTimeStep, "max"};
   auto limit = [&](Real dt, const std::string& by) {
     if (dt < info.dt) info = {dt, by};
@@ -63,15 +70,46 @@ Real Pipeline::step(World& world) {
     ScopedStageTimer t(timers_, neighborSlot_);
     world.updateNeighbors();
   }
-  StepContext context{world.lastTimeStep};
   {
     ScopedStageTimer t(timers_, solverBeginSlot_);
-    solver_->beginStep(world, context);
+    solver_->beginStep(world, StepContext{world.lastTimeStep});
   }
   lastStep_ = chooseTimeStep(world);
-  context.dt = lastStep_.dt;
-  const Real dt = context.dt;
+  const Real maxDisplacement = world.parameters().maxDisplacement * world.particleSpacing();
+  velocityAtStart_ = p.v;
+  int attempt = 0;
+  for (;; ++attempt) {
+    StepContext context{lastStep_.dt};
+    advanceVelocities(world, context);
+    // The CFL bound is set from the velocities at the start of the step, but the pressure solve
+    // can create larger ones (an impact, a strongly compressed corner). A step whose corrected
+    // velocities would move a particle further than maxDisplacement leaves the range where the
+    // solver's linearised density prediction holds, and such errors grow from step to step. So
+    // it is rejected and redone with a shorter step (at most 3 times, never below the minimum).
+    const Real vmax = maxSpeed(p.v);
+    if (vmax * lastStep_.dt <= maxDisplacement || attempt == 3 ||
+        lastStep_.dt <= world.parameters().minTimeStep)
+      break;
+    p.v = velocityAtStart_;
+    lastStep_ = {std::max(0.5 * maxDisplacement / vmax, world.parameters().minTimeStep), "rejected"};
+  }
+  rejectedSteps_ += attempt;
+  const Real dt = lastStep_.dt;
+  {
+    ScopedStageTimer t(timers_, integrateSlot_);
+#pragma omp parallel for schedule(static)
+    for (std::size_t i = 0; i < n; ++i) p.x[i] += dt * p.v[i];
+  }
+  world.time += dt;
+  world.lastTimeStep = dt;
+  ++world.stepCount;
+  return dt;
+}
 
+void Pipeline::advanceVelocities(World& world, const StepContext& context) {
+  auto& p = world.particles;
+  const std::size_t n = p.size();
+  const Real dt = context.dt;
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) p.a[i].setZero();
   for (std::size_t k = 0; k < effects_.size(); ++k) {
@@ -89,19 +127,8 @@ Real Pipeline::step(World& world) {
     ScopedStageTimer t(timers_, effectSlots_[k]);
     effects_[k]->apply(world, context);
   }
-  {
-    ScopedStageTimer t(timers_, solverSlot_);
-    solver_->correctVelocities(world, context);
-  }
-  {
-    ScopedStageTimer t(timers_, integrateSlot_);
-#pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) p.x[i] += dt * p.v[i];
-  }
-  world.time += dt;
-  world.lastTimeStep = dt;
-  ++world.stepCount;
-  return dt;
+  ScopedStageTimer t(timers_, solverSlot_);
+  solver_->correctVelocities(world, context);
 }
 
 std::string Pipeline::describe() const {

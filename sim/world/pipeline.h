@@ -46,6 +46,9 @@ class Pipeline {
   const StageTimers& timers() const { return timers_; }
   StageTimers& timers() { return timers_; }
   const TimeStepInfo& lastTimeStep() const { return lastStep_; }
+  // Steps redone with a shorter time step because the pressure solve produced velocities that
+  // would move a particle more than WorldParameters::maxDisplacement (see step()).
+  long rejectedSteps() const { return rejectedSteps_; }
   // Human-readable pipeline: stages in execution order with the reason each is there.
   std::string describe() const;
 
@@ -56,7 +59,12 @@ class Pipeline {
   StageTimers timers_;
   int neighborSlot_ = 0, solverBeginSlot_ = 0, solverSlot_ = 0, integrateSlot_ = 0;
   std::vector<int> effectSlots_;
+  // Non-pressure effects, velocity prediction and pressure solve for one step length.
+  void advanceVelocities(World& world, const StepContext& context);
+
   TimeStepInfo lastStep_;
+  std::vector<Vec3> velocityAtStart_;  // [m/s] for redoing a rejected step
+  long rejectedSteps_ = 0;
   bool attached_ = false;
 };
 
