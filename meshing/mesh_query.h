@@ -1,0 +1,31 @@
+// Inside/outside and distance queries against a closed triangle mesh (CGAL AABB tree and
+// Side_of_triangle_mesh behind a PIMPL, so no CGAL type leaks into users' translation units).
+// Build once, query many times; the queries are const and safe from several OpenMP threads.
+#pragma once
+
+#include <memory>
+
+#include "meshing/triangle_mesh.h"
+
+namespace meshing {
+
+class MeshQuery {
+ public:
+  // `mesh` must be closed and outward oriented (checkMesh() output); it is copied.
+  explicit MeshQuery(const TriangleMesh& mesh);
+  ~MeshQuery();
+  MeshQuery(MeshQuery&&) noexcept;
+  MeshQuery& operator=(MeshQuery&&) noexcept;
+
+  // true for points strictly inside or on the surface.
+  bool isInside(const Vec3& p) const;
+  double squaredDistance(const Vec3& p) const;  // [unit^2] to the nearest surface point
+  // Nearest surface point and the index of the face it lies on.
+  Vec3 closestPoint(const Vec3& p, int* face = nullptr) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace meshing
