@@ -148,8 +148,13 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
   const aiScene* scene = importer.ReadFile(
       path, aiProcess_Triangulate | aiProcess_DropNormals | aiProcess_JoinIdenticalVertices |
                 aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  const std::string assimpError = importer.GetErrorString();
+  // SortByPType + SBP_REMOVE drop point and line meshes; nothing left means no triangles.
+  if (scene == nullptr && assimpError.find("No meshes remaining") != std::string::npos)
+    throw MeshError(path, "contains no triangles (only points, lines or nothing)",
+                    "export the cavity as a closed triangle surface");
   if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || scene->mRootNode == nullptr)
-    throw MeshError(path, std::string("cannot read the file as a mesh: ") + importer.GetErrorString(),
+    throw MeshError(path, "cannot read the file as a mesh: " + assimpError,
                     "check that it is a valid " + ext.substr(1) +
                         " file (not truncated, not another format renamed)");
 

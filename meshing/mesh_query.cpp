@@ -8,6 +8,10 @@
 #include <CGAL/Side_of_triangle_mesh.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+
 #include "meshing/mesh_error.h"
 
 namespace meshing {
@@ -64,6 +68,26 @@ Vec3 MeshQuery::closestPoint(const Vec3& p, int* face) const {
   const auto [q, primitive] = impl_->tree->closest_point_and_primitive(Point(p.x(), p.y(), p.z()));
   if (face) *face = static_cast<int>(primitive.idx());
   return Vec3(q.x(), q.y(), q.z());
+}
+
+bool MeshQuery::lineCrossings(const Vec3& p, int axis, std::vector<double>& crossings) const {
+  crossings.clear();
+  Kernel::Vector_3 direction(axis == 0, axis == 1, axis == 2);
+  const Kernel::Line_3 line(Point(p.x(), p.y(), p.z()), direction);
+  using Hit = Tree::Intersection_and_primitive_id<Kernel::Line_3>::Type;
+  std::vector<Hit> hits;
+  impl_->tree->all_intersections(line, std::back_inserter(hits));
+  for (const Hit& hit : hits) {
+    const Point* q = boost::get<Point>(&hit.first);
+    if (q == nullptr) return false;  // the line lies in a face: a segment
+    crossings.push_back(CGAL::to_double((*q)[axis]));
+  }
+  std::sort(crossings.begin(), crossings.end());
+  if (crossings.size() % 2 != 0) return false;
+  // Equal crossings: the line passes through an edge or vertex shared by several faces.
+  for (size_t k = 1; k < crossings.size(); ++k)
+    if (crossings[k] - crossings[k - 1] <= 1e-12 * (std::abs(crossings[k]) + 1e-300)) return false;
+  return true;
 }
 
 }  // namespace meshing

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "meshing/triangle_mesh.h"
 
@@ -22,6 +23,11 @@ class MeshQuery {
   double squaredDistance(const Vec3& p) const;  // [unit^2] to the nearest surface point
   // Nearest surface point and the index of the face it lies on.
   Vec3 closestPoint(const Vec3& p, int* face = nullptr) const;
+  // Coordinates along `axis` (0 x, 1 y, 2 z) where the axis-parallel line through p crosses the
+  // surface, sorted. Returns false when the line grazes an edge, a vertex or a face (duplicate or
+  // segment intersections, odd count): the parity of the crossings is then unreliable and the
+  // caller must fall back to isInside() per point.
+  bool lineCrossings(const Vec3& p, int axis, std::vector<double>& crossings) const;
 
  private:
   struct Impl;

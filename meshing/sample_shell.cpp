@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "meshing/lattice_box.h"
 #include "meshing/mesh_error.h"
@@ -42,26 +43,44 @@ ShellSamples sampleShell(const TriangleMesh& mesh, const ShellSamplingOptions& o
   const MeshMeasures m = measureMesh(mesh);
   const Vec3 grow = Vec3::Constant(tMax + d);
   const detail::LatticeBox box(m.boundsMin - grow, m.boundsMax + grow, d, options.latticeOrigin, "shell sampling");
-  std::vector<double> depth(box.count(), -1.0);  // < 0: not in the shell
-  std::vector<char> outer(box.count(), 0);
-#pragma omp parallel for schedule(dynamic, 4096)
-  for (long long k = 0; k < static_cast<long long>(box.count()); ++k) {
-    const Vec3 p = box.point(static_cast<size_t>(k));
-    const Vec3 q = query.closestPoint(p);
-    const double r = (p - q).norm();  // [unit]
-    if (r < gap || r > tMax) continue;
-    const double t = options.thickness(q);
-    if (r > t || query.isInside(p)) continue;
-    depth[static_cast<size_t>(k)] = r;
-    outer[static_cast<size_t>(k)] = r > t - d;
+  // Per column: inside points are skipped by the crossing parity; outside, the distance is
+  // 1-Lipschitz, so a point farther than tMax from the wall rules out the next
+  // floor((r - tMax) / d) points up the column without queries.
+  std::vector<ShellSamples> perColumn(box.columns());
+#pragma omp parallel
+  {
+    std::vector<double> crossings;
+    std::vector<char> inside;
+#pragma omp for schedule(dynamic, 16)
+    for (long long cl = 0; cl < static_cast<long long>(box.columns()); ++cl) {
+      const size_t c = static_cast<size_t>(cl);
+      detail::insideColumn(box, query, c, crossings, inside);
+      double farUpTo = -std::numeric_limits<double>::infinity();  // [unit] z up to which points are > tMax away
+      for (size_t k = 0; k < inside.size(); ++k) {
+        if (inside[k]) continue;
+        const Vec3 p = box.point(box.index(c, k));
+        if (p.z() <= farUpTo) continue;
+        const Vec3 q = query.closestPoint(p);
+        const double r = (p - q).norm();  // [unit]
+        if (r > tMax) {
+          farUpTo = p.z() + (r - tMax);
+          continue;
+        }
+        if (r < gap) continue;
+        const double t = options.thickness(q);
+        if (r > t) continue;
+        perColumn[c].points.push_back(p);
+        perColumn[c].depth.push_back(r);
+        perColumn[c].isOuter.push_back(r > t - d);
+      }
+    }
   }
   ShellSamples out;
-  for (size_t k = 0; k < depth.size(); ++k)
-    if (depth[k] >= 0) {
-      out.points.push_back(box.point(k));
-      out.depth.push_back(depth[k]);
-      out.isOuter.push_back(outer[k]);
-    }
+  for (const ShellSamples& column : perColumn) {
+    out.points.insert(out.points.end(), column.points.begin(), column.points.end());
+    out.depth.insert(out.depth.end(), column.depth.begin(), column.depth.end());
+    out.isOuter.insert(out.isOuter.end(), column.isOuter.begin(), column.isOuter.end());
+  }
   return out;
 }
 

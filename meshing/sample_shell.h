@@ -19,7 +19,7 @@ struct ShellSamplingOptions {
 };
 
 struct ShellSamples {
-  std::vector<Vec3> points;   // [unit] #N, lattice order
+  std::vector<Vec3> points;   // [unit] #N, column order as in sampleVolume()
   std::vector<char> isOuter;  // 1 for the outermost layer (within d of the outer surface): anchors
   std::vector<double> depth;  // [unit] distance from the inner surface, #N
 };

@@ -18,7 +18,8 @@ struct VolumeSamplingOptions {
 };
 
 // Lattice points inside the closed, outward mesh with distance to the wall >= wallGap (AABB
-// tree distance, Side_of_triangle_mesh), in lattice order (x fastest, then y, then z):
+// tree distance; inside by the parity of crossings along lattice columns, Side_of_triangle_mesh
+// where a column grazes an edge), in column order (z fastest, columns ordered x then y):
 // deterministic and independent of the thread count.
 //
 // Expected count: lattice points inside a region K number vol(K)/d^3 on average (over lattice
