@@ -1,6 +1,7 @@
 #include "meshing/check_mesh.h"
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -16,9 +17,12 @@ namespace {
 constexpr size_t kMaxListed = 6;  // face indices listed per problem before "..."
 
 std::string point(const Vec3& p) {
+  // Round-off noise such as -4.9e-17 next to 9.5 reads as 0.
+  const double scale = p.cwiseAbs().maxCoeff();
+  const auto clean = [&](double c) { return std::abs(c) < 1e-12 * scale ? 0.0 : c; };
   std::ostringstream s;
   s.precision(5);
-  s << '(' << p.x() << ", " << p.y() << ", " << p.z() << ')';
+  s << '(' << clean(p.x()) << ", " << clean(p.y()) << ", " << clean(p.z()) << ')';
   return s.str();
 }
 
@@ -259,7 +263,8 @@ bool closeHoles(TriangleMesh& m, std::vector<int>& origin,
     for (int v = start; !done[v]; v = next.at(v)) {
       done[v] = 1;
       loop.push_back(v);
-      faces.push_back(origin[static_cast<size_t>(faceOfEdge.at(v))]);
+      const int face = origin[static_cast<size_t>(faceOfEdge.at(v))];
+      if (std::find(faces.begin(), faces.end(), face) == faces.end()) faces.push_back(face);
       if (!next.count(next.at(v))) break;
     }
     Vec3 c = Vec3::Zero();

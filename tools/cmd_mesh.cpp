@@ -98,22 +98,30 @@ void printReport(const meshing::ImportResult& imported, const meshing::MeshRepor
   std::printf("units:     %s%s\n", meshing::toString(imported.unit), imported.unitGuessed ? " (guessed)" : "");
   for (const auto& w : imported.warnings) std::printf("warning:   %s\n", w.c_str());
   std::printf("input:     %d vertices, %d faces\n", report.inputVertices, report.inputFaces);
-  for (const auto& r : report.repairs) std::printf("repaired:  %s\n", r.c_str());
+  for (const auto& r : report.repairs) std::printf("repaired:  %s\n", r.c_str());  // places in mm
   for (const auto& r : report.refusals) std::printf("REFUSED:   %s\n", r.c_str());
   const auto& m = report.measures;
-  const meshing::Vec3 size = (m.boundsMax - m.boundsMin) * 1e3;  // [mm]
+  const meshing::Vec3 size = m.boundsMax - m.boundsMin;  // [mm]: checked in mm
   std::printf("status:    %s\n", !report.isUsable() ? "refused" : report.wasRepaired() ? "repaired" : "ok");
-  std::printf("area:      %.4g mm^2\n", m.area * 1e6);
+  std::printf("area:      %.4g mm^2\n", m.area);
   if (report.isUsable())
-    std::printf("volume:    %.4g mm^3 (%.4g mL)\n", m.signedVolume * 1e9, m.signedVolume * 1e6);
+    std::printf("volume:    %.4g mm^3 (%.4g mL)\n", m.signedVolume, m.signedVolume * 1e-3);
   std::printf("size:      %.4g x %.4g x %.4g mm (bounding box)\n", size.x(), size.y(), size.z());
+}
+
+// checkMesh() on the mesh in mm, so that the places named in its messages read in mm.
+meshing::MeshReport checkInMillimetres(const meshing::TriangleMesh& metres, const meshing::MeshCheckOptions& options) {
+  meshing::TriangleMesh mm = metres;
+  for (meshing::Vec3& v : mm.vertices) v *= 1e3;
+  meshing::MeshReport report = meshing::checkMesh(mm, options);
+  return report;
 }
 
 int runCheck(const MeshOptions& o) {
   const meshing::ImportResult imported = meshing::importMesh(o.file, o.units);
   meshing::MeshCheckOptions checkOptions;
   checkOptions.maxHoleEdges = o.maxHoleEdges;
-  const meshing::MeshReport report = meshing::checkMesh(imported.mesh, checkOptions);
+  const meshing::MeshReport report = checkInMillimetres(imported.mesh, checkOptions);
   printReport(imported, report, o.file);
   if (!report.isUsable()) {
     std::fprintf(stderr, "tamponade mesh: %s: mesh refused: %s\n", o.file.c_str(), report.refusals.front().c_str());
@@ -124,19 +132,24 @@ int runCheck(const MeshOptions& o) {
 
 int runSample(const MeshOptions& o) {
   const meshing::ImportResult imported = meshing::importMesh(o.file, o.units);
-  const meshing::MeshReport report = meshing::checkMesh(imported.mesh);
+  const meshing::MeshReport report = checkInMillimetres(imported.mesh, {});
   printReport(imported, report, o.file);
   if (!report.isUsable()) {
     std::fprintf(stderr, "tamponade mesh: %s: mesh refused: %s\n", o.file.c_str(), report.refusals.front().c_str());
     return 2;
   }
   const double d = *o.spacing;  // [m]
-  const auto wall = meshing::sampleSurface(report.mesh, d);
+  meshing::TriangleMesh cavity = report.mesh;  // [m] back from mm
+  for (meshing::Vec3& v : cavity.vertices) v *= 1e-3;
+  const double volume = report.measures.signedVolume * 1e-9;  // [m^3]
+  const auto wall = meshing::sampleSurface(cavity, d);
   meshing::VolumeSamplingOptions volumeOptions;
   volumeOptions.spacing = d;
-  const auto interior = meshing::sampleVolume(report.mesh, volumeOptions);
-  const auto wallSpacing = meshing::measureSpacing(wall.points, 3 * d);
-  const auto interiorSpacing = meshing::measureSpacing(interior, 3 * d);
+  const auto interior = meshing::sampleVolume(cavity, volumeOptions);
+  // 2 d finds every nearest neighbour: lattice neighbours are d apart, and a maximal wall packing
+  // (exclusion 0.9 d) leaves no point farther than 1.8 d from its nearest sample.
+  const auto wallSpacing = meshing::measureSpacing(wall.points, 2 * d);
+  const auto interiorSpacing = meshing::measureSpacing(interior, 2 * d);
   std::printf("spacing:   %.4g mm (interior gap %.4g mm from the wall)\n", d * 1e3, 0.5 * d * 1e3);
   std::printf("wall:      %zu particles, nearest neighbour min %.4g / mean %.4g mm\n", wall.size(),
               wallSpacing.minimum * 1e3, wallSpacing.mean * 1e3);
@@ -144,7 +157,7 @@ int runSample(const MeshOptions& o) {
               "(%.1f %% of the volume; the d/2 wall gap holds the rest)\n",
               interior.size(), interiorSpacing.minimum * 1e3, interiorSpacing.mean * 1e3,
               static_cast<double>(interior.size()) * d * d * d * 1e9,
-              100.0 * static_cast<double>(interior.size()) * d * d * d / report.measures.signedVolume);
+              100.0 * static_cast<double>(interior.size()) * d * d * d / volume);
   if (!o.out.empty()) {
     std::vector<meshing::Vec3> points = wall.points;
     points.insert(points.end(), interior.begin(), interior.end());

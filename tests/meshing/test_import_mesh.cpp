@@ -9,6 +9,7 @@
 
 #include "meshing/check_mesh.h"
 #include "meshing/import_mesh.h"
+#include "meshing/load_mesh.h"
 #include "meshing/mesh_error.h"
 #include "meshing/mesh_measures.h"
 #include "meshing/mesh_writer.h"
@@ -137,4 +138,18 @@ TEST_CASE("unreadable files give MeshError naming the file, the problem and the 
       CHECK_THAT(what, Catch::Contains("("));  // every message carries a fix in parentheses
     }
   }
+}
+
+TEST_CASE("loadMesh: shipped test meshes load, repair or refuse", "[unit][import]") {
+  // data/meshes/test (tests run in the source root, see cmake/TamponadeTests.cmake).
+  const LoadedMesh good = loadMesh("data/meshes/test/sphere_r12mm.stl", LengthUnit::millimetre);
+  CHECK(good.report.repairs.empty());
+  CHECK(good.mesh.faces.size() == 1280);
+  // Icosphere of r = 12 mm at 1280 faces: 0.86 % below the sphere's volume (chordal error).
+  CHECK(good.report.measures.signedVolume == Approx(4.0 / 3.0 * M_PI * 1.728e-6 * (1 - 0.0086)).epsilon(0.001));
+  const LoadedMesh inverted = loadMesh("data/meshes/test/sphere_r12mm_inverted.obj", LengthUnit::millimetre);
+  CHECK_THAT(inverted.report.repairs.at(0), Catch::Contains("reversed all 1280 faces"));
+  CHECK(loadMesh("data/meshes/test/sphere_r12mm_coarse.off").unit == LengthUnit::millimetre);
+  CHECK_THROWS_WITH(loadMesh("data/meshes/test/sphere_r12mm_open.ply", LengthUnit::millimetre),
+                    Catch::StartsWith("data/meshes/test/sphere_r12mm_open.ply: mesh refused: open surface"));
 }
