@@ -11,7 +11,14 @@ namespace meshing {
 SpacingStatistics measureSpacing(const std::vector<Vec3>& points, double searchRadius) {
   if (!(searchRadius > 0))
     throw MeshError("spacing statistics", "search radius must be positive", "");
-  detail::SpatialHash grid(searchRadius);
+  SpacingStatistics s;
+  if (points.empty()) return s;
+  Vec3 lo = points.front(), hi = points.front();
+  for (const Vec3& p : points) {
+    lo = lo.cwiseMin(p);
+    hi = hi.cwiseMax(p);
+  }
+  detail::SpatialHash grid(lo, hi, searchRadius);
   for (size_t i = 0; i < points.size(); ++i) grid.insert(static_cast<int>(i), points[i]);
   std::vector<double> nearest(points.size(), std::numeric_limits<double>::infinity());
 #pragma omp parallel for schedule(static)
@@ -23,7 +30,6 @@ SpacingStatistics measureSpacing(const std::vector<Vec3>& points, double searchR
     });
     if (best <= searchRadius * searchRadius) nearest[i] = std::sqrt(best);
   }
-  SpacingStatistics s;
   s.minimum = std::numeric_limits<double>::infinity();
   double sum = 0;
   size_t found = 0;

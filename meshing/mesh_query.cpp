@@ -64,6 +64,11 @@ double MeshQuery::squaredDistance(const Vec3& p) const {
   return CGAL::to_double(impl_->tree->squared_distance(Point(p.x(), p.y(), p.z())));
 }
 
+bool MeshQuery::isWithin(const Vec3& p, double distance) const {
+  // Sphere_3 queries on the AABB tree test the solid ball (squared distance <= r^2).
+  return impl_->tree->do_intersect(Kernel::Sphere_3(Point(p.x(), p.y(), p.z()), distance * distance));
+}
+
 Vec3 MeshQuery::closestPoint(const Vec3& p, int* face) const {
   const auto [q, primitive] = impl_->tree->closest_point_and_primitive(Point(p.x(), p.y(), p.z()));
   if (face) *face = static_cast<int>(primitive.idx());

@@ -21,6 +21,9 @@ class MeshQuery {
   // true for points strictly inside or on the surface.
   bool isInside(const Vec3& p) const;
   double squaredDistance(const Vec3& p) const;  // [unit^2] to the nearest surface point
+  // true if some surface point lies within `distance` of p. Much cheaper than squaredDistance()
+  // deep inside a round cavity, where every face is nearly equidistant and the tree cannot prune.
+  bool isWithin(const Vec3& p, double distance) const;
   // Nearest surface point and the index of the face it lies on.
   Vec3 closestPoint(const Vec3& p, int* face = nullptr) const;
   // Coordinates along `axis` (0 x, 1 y, 2 z) where the axis-parallel line through p crosses the

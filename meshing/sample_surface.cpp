@@ -81,7 +81,12 @@ SurfaceSamples sampleSurface(const TriangleMesh& mesh, const SurfaceSamplingOpti
   std::sort(sequence.begin(), sequence.end(),
             [&](size_t i, size_t j) { return order[i] != order[j] ? order[i] < order[j] : i < j; });
   SurfaceSamples out;
-  detail::SpatialHash grid(radius);
+  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (const Vec3& c : candidate) {
+    lo = lo.cwiseMin(c);
+    hi = hi.cwiseMax(c);
+  }
+  detail::SpatialHash grid(lo, hi, radius);
   const double r2 = radius * radius;
   for (size_t c : sequence) {
     bool free = true;

@@ -1,7 +1,6 @@
 #include "meshing/sample_volume.h"
 
 #include <cmath>
-#include <limits>
 
 #include "meshing/lattice_box.h"
 #include "meshing/mesh_error.h"
@@ -23,9 +22,8 @@ std::vector<Vec3> sampleVolume(const TriangleMesh& mesh, const MeshQuery& query,
   const MeshMeasures m = measureMesh(mesh);
   const detail::LatticeBox box(m.boundsMin, m.boundsMax, d, options.latticeOrigin, "volume sampling");
   // Per column (parallel, dynamic: columns differ in cost): inside flags from crossings, then
-  // the wall distance. The distance is 1-Lipschitz, so a point at distance r from the wall
-  // vouches for every point up the column within r - gap of it: one query skips ahead
-  // floor((r - gap) / d) points and a column costs O(log(R/d)) distance queries, not O(R/d).
+  // "is the wall within the gap?" as a ball query on the AABB tree, which prunes well even deep
+  // inside, where exact distance queries visit most of the tree.
   std::vector<std::vector<Vec3>> perColumn(box.columns());
 #pragma omp parallel
   {
@@ -35,15 +33,12 @@ std::vector<Vec3> sampleVolume(const TriangleMesh& mesh, const MeshQuery& query,
     for (long long cl = 0; cl < static_cast<long long>(box.columns()); ++cl) {
       const size_t c = static_cast<size_t>(cl);
       detail::insideColumn(box, query, c, crossings, inside);
-      double clearUpTo = -std::numeric_limits<double>::infinity();  // [unit] z up to which points are >= gap away
       for (size_t k = 0; k < inside.size(); ++k) {
         if (!inside[k]) continue;
         const Vec3 p = box.point(box.index(c, k));
-        if (gap > 0 && p.z() > clearUpTo) {
-          const double r = std::sqrt(query.squaredDistance(p));
-          if (r < gap) continue;
-          clearUpTo = p.z() + (r - gap);
-        }
+        // Strictly closer than the gap is rejected; the ball query is closed, so shrink it by a
+        // relative 1e-12 to keep points exactly at the gap, as documented.
+        if (gap > 0 && query.isWithin(p, gap * (1 - 1e-12))) continue;
         if (options.keep && !options.keep(p)) continue;
         perColumn[c].push_back(p);
       }
