@@ -26,12 +26,23 @@ std::string point(const Vec3& p) {
   return s.str();
 }
 
+// Input face indices, each once, in order of first appearance; -1 (a face added by a hole
+// repair) reads "new".
 std::string faceList(const std::vector<int>& faces) {
+  std::vector<int> unique;
+  for (int f : faces)
+    if (std::find(unique.begin(), unique.end(), f) == unique.end()) unique.push_back(f);
   std::ostringstream s;
-  for (size_t k = 0; k < faces.size() && k < kMaxListed; ++k) s << (k ? ", " : "") << faces[k];
-  if (faces.size() > kMaxListed) s << ", ... (" << faces.size() << " in all)";
+  for (size_t k = 0; k < unique.size() && k < kMaxListed; ++k) {
+    s << (k ? ", " : "");
+    if (unique[k] < 0) s << "new";
+    else s << unique[k];
+  }
+  if (unique.size() > kMaxListed) s << ", ... (" << unique.size() << " in all)";
   return s.str();
 }
+
+std::string faceName(int f) { return f < 0 ? std::string("a hole-filling face") : "face " + std::to_string(f); }
 
 Vec3 centroid(const TriangleMesh& m, size_t f) {
   const Triangle& t = m.faces[f];
@@ -377,8 +388,8 @@ MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options)
                               centroid(m, static_cast<size_t>(pairs[0].second)));
     report.refusals.push_back(
         "self-intersecting surface: " + std::string(pairs.size() >= 64 ? "at least " : "") +
-        std::to_string(pairs.size()) + " pairs of faces cross, e.g. faces " +
-        std::to_string(faces[0]) + " and " + std::to_string(faces[1]) + " near " + point(where) +
+        std::to_string(pairs.size()) + " pairs of faces cross, e.g. " + faceName(faces[0]) + " and " +
+        faceName(faces[1]) + " near " + point(where) +
         " (faces " + faceList(faces) + "); fix the surface in the modelling tool");
     return report;
   }

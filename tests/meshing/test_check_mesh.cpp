@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <limits>
+#include <regex>
 
 #include "meshing/cgal_checks.h"
 #include "meshing/check_mesh.h"
@@ -102,8 +103,17 @@ TEST_CASE("bad meshes: repaired with the repair listed, or refused saying what a
     m.vertices[0] *= -1.5;
     const MeshReport r = checkMesh(m);
     REQUIRE_FALSE(r.isUsable());
-    CHECK_THAT(joined(r.refusals), Catch::Contains("self-intersecting surface") &&
-                                       Catch::Contains("pairs of faces cross, e.g. faces"));
+    const std::string refusal = joined(r.refusals);
+    CHECK_THAT(refusal, Catch::Contains("self-intersecting surface") &&
+                            Catch::Contains("pairs of faces cross, e.g. face "));
+    // WHERE: one of the two faces named first is a spike face around the moved vertex 0.
+    std::smatch match;
+    REQUIRE(std::regex_search(refusal, match, std::regex("e\\.g\\. face ([0-9]+) and face ([0-9]+)")));
+    const auto touchesVertex0 = [&](const std::string& index) {
+      const Triangle& f = sphere.faces[std::stoul(index)];
+      return f[0] == 0 || f[1] == 0 || f[2] == 0;
+    };
+    CHECK((touchesVertex0(match[1].str()) || touchesVertex0(match[2].str())));
   }
   SECTION("two components: the largest kept and the other named; refused on request") {
     TriangleMesh m = sphere;
