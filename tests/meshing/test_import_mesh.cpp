@@ -153,3 +153,43 @@ TEST_CASE("loadMesh: shipped test meshes load, repair or refuse", "[unit][import
   CHECK_THROWS_WITH(loadMesh("data/meshes/test/sphere_r12mm_open.ply", LengthUnit::millimetre),
                     Catch::StartsWith("data/meshes/test/sphere_r12mm_open.ply: mesh refused: open surface"));
 }
+
+TEST_CASE("import applies nested node transforms (COLLADA)", "[unit][import]") {
+  const TempDir dir("transforms");
+  // A tetrahedron with 10-unit legs under two nodes: outer scales by 2 and moves +5 in x, inner
+  // moves +1 in y (before the outer scale, so +2 in the end).
+  meshing_test::writeText(dir.file("tet.dae"), R"DAE(<?xml version="1.0" encoding="utf-8"?>
+<COLLADA xmlns="http://www.collada.org/2005/11/COLLADASchema" version="1.4.1">
+  <asset><unit name="meter" meter="1"/><up_axis>Y_UP</up_axis></asset>
+  <library_geometries>
+    <geometry id="tet" name="tet">
+      <mesh>
+        <source id="tet-pos">
+          <float_array id="tet-pos-array" count="12">0 0 0 10 0 0 0 10 0 0 0 10</float_array>
+          <technique_common><accessor source="#tet-pos-array" count="4" stride="3">
+            <param name="X" type="float"/><param name="Y" type="float"/><param name="Z" type="float"/>
+          </accessor></technique_common>
+        </source>
+        <vertices id="tet-vtx"><input semantic="POSITION" source="#tet-pos"/></vertices>
+        <triangles count="4"><input semantic="VERTEX" source="#tet-vtx" offset="0"/>
+          <p>0 2 1 0 1 3 0 3 2 1 2 3</p></triangles>
+      </mesh>
+    </geometry>
+  </library_geometries>
+  <library_visual_scenes>
+    <visual_scene id="scene">
+      <node id="outer"><matrix>2 0 0 5  0 2 0 0  0 0 2 0  0 0 0 1</matrix>
+        <node id="inner"><matrix>1 0 0 0  0 1 0 1  0 0 1 0  0 0 0 1</matrix>
+          <instance_geometry url="#tet"/></node></node>
+    </visual_scene>
+  </library_visual_scenes>
+  <scene><instance_visual_scene url="#scene"/></scene>
+</COLLADA>
+)DAE");
+  const ImportResult r = importMesh(dir.file("tet.dae"), LengthUnit::millimetre);
+  const MeshMeasures m = measureMesh(r.mesh);
+  // float32 coordinates in the file: 1e-9 m absolute is far below their rounding at 25 mm.
+  CHECK((m.boundsMin - Vec3(0.005, 0.002, 0.0)).norm() < 1e-9);
+  CHECK((m.boundsMax - Vec3(0.025, 0.022, 0.020)).norm() < 1e-9);
+  CHECK(m.signedVolume == Approx(std::pow(0.020, 3) / 6).epsilon(1e-6));  // scale^3 of 1000/6 mm^3
+}
