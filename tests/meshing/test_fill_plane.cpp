@@ -55,6 +55,27 @@ TEST_CASE("fill plane on a sphere matches the spherical cap", "[validation][fill
   }
 }
 
+TEST_CASE("fill plane on a prolate (myopic) cavity and in a tilted direction", "[validation][fill]") {
+  const TriangleMesh sphere = meshing_test::eyeSphere(4);
+  // A prolate spheroid is the sphere stretched along z by 1.25 (a 30 mm axial length from a 24 mm
+  // sphere). Volumes of polyhedra scale exactly by the determinant under a linear map, so the
+  // plane across z moves by exactly the stretch factor: only bisection round-off (1e-12 of the
+  // extent) separates the two.
+  TriangleMesh prolate = sphere;
+  for (Vec3& v : prolate.vertices) v.z() *= 1.25;
+  for (double f : {0.1, 0.6, 0.9}) {
+    const FillPlane round = findFillPlane(sphere, f, Vec3::UnitZ());
+    const FillPlane longEye = findFillPlane(prolate, f, Vec3::UnitZ());
+    CHECK(longEye.offset == Approx(1.25 * round.offset).margin(1e-12 * 0.03));
+    CHECK(longEye.volumeAbove == Approx(1.25 * round.volumeAbove).epsilon(1e-9));
+  }
+  // On the sphere every direction is alike: a tilted gravity gives the same cap height (the
+  // icosphere is not perfectly round: 5120 faces, cap volumes within ~0.2 %, heights closer).
+  const FillPlane upright = findFillPlane(sphere, 0.7, Vec3::UnitY());
+  const FillPlane tilted = findFillPlane(sphere, 0.7, Vec3(0.3, 0.8, -0.52).normalized());
+  CHECK(tilted.offset == Approx(upright.offset).margin(0.002 * kR));
+}
+
 TEST_CASE("which side fills: light oil rises, heavy oil sinks", "[unit][fill]") {
   const TriangleMesh m = meshing_test::eyeSphere(3);
   const Vec3 gravity(0, -1, 0);  // [unit direction] upright patient: -y inferior
