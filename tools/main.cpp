@@ -14,12 +14,14 @@ int runVersion(Args) {
   std::printf("tamponade %s\n", TAMPONADE_VERSION);
   return 0;
 }
+int runMesh(Args args);  // tools/cmd_mesh.cpp
 }  // namespace tools
 
 namespace {
 
 constexpr std::array kCommands = {
     tools::Command{"version", "print the version", tools::runVersion},
+    tools::Command{"mesh", "check, repair and sample eye meshes", tools::runMesh},
 };
 
 void printUsage(std::FILE* out) {

@@ -1,0 +1,223 @@
+#include "meshing/import_mesh.h"
+
+#include <assimp/Importer.hpp>
+#include <assimp/postprocess.h>
+#include <assimp/scene.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <sstream>
+#include <unordered_map>
+
+#include "meshing/mesh_error.h"
+#include "meshing/mesh_measures.h"
+
+namespace meshing {
+
+LengthUnit parseLengthUnit(std::string_view text) {
+  if (text == "mm") return LengthUnit::millimetre;
+  if (text == "m") return LengthUnit::metre;
+  throw MeshError("units", "unknown length unit '" + std::string(text) + "'",
+                  "use 'mm' or 'm'");
+}
+
+const char* toString(LengthUnit unit) {
+  switch (unit) {
+    case LengthUnit::millimetre: return "mm";
+    case LengthUnit::metre: return "m";
+    case LengthUnit::unknown: break;
+  }
+  return "unknown";
+}
+
+double metresPer(LengthUnit unit) {
+  switch (unit) {
+    case LengthUnit::millimetre: return 1e-3;
+    case LengthUnit::metre: return 1.0;
+    case LengthUnit::unknown: break;
+  }
+  throw MeshError("units", "no length unit given", "declare mm or m");
+}
+
+namespace {
+
+struct Vec3BitsHash {
+  size_t operator()(const std::array<double, 3>& p) const {
+    size_t h = 1469598103934665603ull;
+    for (double c : p) {
+      std::uint64_t bits;
+      std::memcpy(&bits, &c, sizeof bits);
+      h = (h ^ bits) * 1099511628211ull;
+    }
+    return h;
+  }
+};
+
+std::string formatLength(double metres) {
+  std::ostringstream s;
+  s.precision(3);
+  if (metres >= 0.1) s << metres << " m";
+  else if (metres >= 1e-3) s << metres * 1e3 << " mm";
+  else s << metres * 1e6 << " um";
+  return s.str();
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// Walks the node hierarchy, applying each node's accumulated transform (identity for STL/OBJ/PLY,
+// not for glTF/FBX/DAE).
+void collectNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
+                 TriangleMesh& out) {
+  const aiMatrix4x4 transform = parent * node.mTransformation;
+  for (unsigned k = 0; k < node.mNumMeshes; ++k) {
+    const aiMesh& m = *scene.mMeshes[node.mMeshes[k]];
+    const int base = static_cast<int>(out.vertices.size());
+    for (unsigned v = 0; v < m.mNumVertices; ++v) {
+      const aiVector3D p = transform * m.mVertices[v];
+      out.vertices.emplace_back(p.x, p.y, p.z);
+    }
+    for (unsigned f = 0; f < m.mNumFaces; ++f) {
+      const aiFace& face = m.mFaces[f];
+      if (face.mNumIndices != 3) continue;  // points and lines left by SortByPType
+      out.faces.push_back({base + static_cast<int>(face.mIndices[0]),
+                           base + static_cast<int>(face.mIndices[1]),
+                           base + static_cast<int>(face.mIndices[2])});
+    }
+  }
+  for (unsigned c = 0; c < node.mNumChildren; ++c)
+    collectNode(scene, *node.mChildren[c], transform, out);
+}
+
+}  // namespace
+
+int joinIdenticalVertices(TriangleMesh& mesh) {
+  std::unordered_map<std::array<double, 3>, int, Vec3BitsHash> index;
+  index.reserve(mesh.vertices.size());
+  std::vector<int> remap(mesh.vertices.size(), -1);
+  std::vector<char> used(mesh.vertices.size(), 0);
+  for (const Triangle& f : mesh.faces)
+    for (int v : f) used[static_cast<size_t>(v)] = 1;
+  std::vector<Vec3> kept;
+  kept.reserve(mesh.vertices.size());
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (!used[v]) continue;
+    const Vec3& p = mesh.vertices[v];
+    // +0.0 and -0.0 must join: normalise the sign of zero before hashing the bits.
+    const std::array<double, 3> key{p.x() + 0.0, p.y() + 0.0, p.z() + 0.0};
+    const auto [it, inserted] = index.emplace(key, static_cast<int>(kept.size()));
+    if (inserted) kept.push_back(p);
+    remap[v] = it->second;
+  }
+  const int removed = static_cast<int>(mesh.vertices.size() - kept.size());
+  for (Triangle& f : mesh.faces)
+    for (int& v : f) v = remap[static_cast<size_t>(v)];
+  mesh.vertices = std::move(kept);
+  return removed;
+}
+
+ImportResult importMesh(const std::string& path, LengthUnit unit) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (!fs::exists(path, ec))
+    throw MeshError(path, "file not found", "check the path and the working directory");
+  if (fs::is_directory(path, ec))
+    throw MeshError(path, "is a directory, not a mesh file", "give the path of a .stl/.obj/.ply/.off file");
+  if (fs::file_size(path, ec) == 0)
+    throw MeshError(path, "file is empty (0 bytes)", "re-export the mesh; the write probably failed");
+
+  Assimp::Importer importer;
+  const std::string ext = lowerExtension(path);
+  if (ext.empty() || !importer.IsExtensionSupported(ext)) {
+    std::string list;
+    importer.GetExtensionList(list);
+    throw MeshError(path, "unknown mesh format '" + ext + "'",
+                    "export as .stl, .obj, .ply or .off (assimp also reads " + list + ")");
+  }
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  // DropNormals: STL gives every corner its face normal, which stops JoinIdenticalVertices from
+  // merging corners (STACK.md pitfall 8). We join again ourselves across sub-meshes below.
+  const aiScene* scene = importer.ReadFile(
+      path, aiProcess_Triangulate | aiProcess_DropNormals | aiProcess_JoinIdenticalVertices |
+                aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  const std::string assimpError = importer.GetErrorString();
+  // SortByPType + SBP_REMOVE drop point and line meshes; nothing left means no triangles.
+  if (scene == nullptr && assimpError.find("No meshes remaining") != std::string::npos)
+    throw MeshError(path, "contains no triangles (only points, lines or nothing)",
+                    "export the cavity as a closed triangle surface");
+  if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || scene->mRootNode == nullptr)
+    throw MeshError(path, "cannot read the file as a mesh: " + assimpError,
+                    "check that it is a valid " + ext.substr(1) +
+                        " file (not truncated, not another format renamed)");
+
+  ImportResult result;
+  collectNode(*scene, *scene->mRootNode, aiMatrix4x4(), result.mesh);
+  if (result.mesh.faces.empty())
+    throw MeshError(path, "contains no triangles (only points, lines or nothing)",
+                    "export the cavity as a closed triangle surface");
+  for (size_t v = 0; v < result.mesh.vertices.size(); ++v) {
+    if (!result.mesh.vertices[v].allFinite()) {
+      std::ostringstream s;
+      s << "vertex " << v << " has a NaN or infinite coordinate (" << result.mesh.vertices[v].transpose()
+        << ")";
+      throw MeshError(path, s.str(), "repair or re-export the mesh in the modelling tool");
+    }
+  }
+  result.joinedVertices = joinIdenticalVertices(result.mesh);
+
+  // Units: declared, or guessed from the bounding-box diagonal.
+  const MeshMeasures raw = measureMesh(result.mesh);
+  const double diagonal = raw.diagonal();  // [file units]
+  std::ostringstream diag;
+  diag.precision(4);
+  diag << diagonal;
+  if (unit == LengthUnit::unknown) {
+    result.unitGuessed = true;
+    const auto plausible = [&](LengthUnit u) {
+      const double s = raw.size() * metresPer(u);
+      return s >= kMinEyeSize && s <= kMaxEyeSize;
+    };
+    if (diagonal >= 10 && diagonal <= 60) unit = LengthUnit::millimetre;
+    else if (diagonal >= 0.01 && diagonal <= 0.06) unit = LengthUnit::metre;
+    else if (plausible(LengthUnit::millimetre)) unit = LengthUnit::millimetre;
+    else if (plausible(LengthUnit::metre)) unit = LengthUnit::metre;
+    else
+      throw MeshError(path,
+                      "size " + diag.str() + " (bounding-box diagonal, file units) is implausible for "
+                      "an eye in mm (" + formatLength(raw.size() * 1e-3) + " across) and in m (" +
+                      formatLength(raw.size()) + " across)",
+                      "an eye cavity is 20-30 mm across; rescale the mesh to mm or m");
+    result.warnings.push_back(std::string("no units declared: assumed ") + toString(unit) +
+                              " because the bounding-box diagonal is " + diag.str() +
+                              " file units (an eye is 20-30 mm across); declare the units "
+                              "(--units mm|m, or units in the protocol) to silence this");
+  }
+  result.unit = unit;
+  const double scale = metresPer(unit);  // [m per file unit]
+  for (Vec3& p : result.mesh.vertices) p *= scale;
+
+  const double size = raw.size() * scale;  // [m]
+  if (size > kMaxEyeSize || size < kMinEyeSize) {
+    const bool big = size > kMaxEyeSize;
+    std::string fix;
+    if (unit == LengthUnit::metre && big) fix = "the file is probably in mm: declare --units mm";
+    else if (unit == LengthUnit::millimetre && !big) fix = "the file is probably in m: declare --units m";
+    else fix = "an eye cavity is 20-30 mm across; check the units the file was exported in";
+    throw MeshError(path,
+                    "implausible size " + formatLength(size) + " across with units " + toString(unit) +
+                        (big ? " (an eye cavity is smaller than " : " (an eye cavity is larger than ") +
+                        formatLength(big ? kMaxEyeSize : kMinEyeSize) + ")",
+                    fix);
+  }
+  return result;
+}
+
+}  // namespace meshing
