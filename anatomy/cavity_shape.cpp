@@ -19,8 +19,6 @@ constexpr double kMm = 1e-3;  // [m]
 // by up to this much (the sclera, <= 1 mm thick; Vurgese 2012) must not fold.
 constexpr double kMinimumConcaveRadius = 1.5e-3;  // [m]
 
-std::string mm(double metres) { return std::to_string(metres / kMm) + " mm"; }
-
 // 5-point Gauss-Legendre nodes and weights on [-1, 1].
 constexpr std::array<double, 5> kGaussNodes = {0.0, -0.5384693101056831, 0.5384693101056831,
                                                -0.9061798459386640, 0.9061798459386640};
@@ -33,36 +31,36 @@ constexpr std::array<double, 5> kGaussWeights = {0.5688888888888889, 0.478628670
 CavityShape::CavityShape(const CavityGeometry& g) : geometry_(g) {
   const double a = g.semiAxisHorizontal, b = g.semiAxisVertical, c = g.semiAxisAxial;
   require(a > 0.0 && b > 0.0 && c > 0.0 && std::isfinite(a + b + c),
-          "cavity: ellipsoid semi-axes must be positive and finite (got " + mm(a) + ", " + mm(b) +
-              ", " + mm(c) + ")");
-  require(g.capSag >= 0.0, "cavity: cap sag must be >= 0 (got " + mm(g.capSag) + ")");
+          "cavity: ellipsoid semi-axes must be positive and finite (got " + mmText(a) + ", " + mmText(b) +
+              ", " + mmText(c) + ")");
+  require(g.capSag >= 0.0, "cavity: cap sag must be >= 0 (got " + mmText(g.capSag) + ")");
   rimZ_ = c + g.apexDepth - g.capPlaneDepth;
   require(rimZ_ > -0.5 * c && rimZ_ < 0.95 * c,
-          "cavity: the cap plane (" + mm(g.capPlaneDepth) + " behind the corneal apex) must cut "
-          "the ellipsoid between its anterior tip (" + mm(g.apexDepth) + ") and a quarter of "
+          "cavity: the cap plane (" + mmText(g.capPlaneDepth) + " behind the corneal apex) must cut "
+          "the ellipsoid between its anterior tip (" + mmText(g.apexDepth) + ") and a quarter of "
           "its axial length behind the centre; move the lens/IOL plane");
   rimTheta_ = std::acos(-rimZ_ / c);
   const double rimA = a * std::sin(rimTheta_), rimB = b * std::sin(rimTheta_);
   require(g.capSag < 0.5 * (rimZ_ + c),
-          "cavity: cap sag " + mm(g.capSag) + " reaches too far toward the posterior pole");
+          "cavity: cap sag " + mmText(g.capSag) + " reaches too far toward the posterior pole");
 
   require(g.staphylomaDepth >= 0.0 && g.staphylomaWidth >= 0.0,
           "cavity: staphyloma depth and width must be >= 0");
   if (g.staphylomaDepth > 0.0) {
     bumpRadius_ = 0.5 * g.staphylomaWidth;
     require(bumpRadius_ <= 0.7 * std::min(a, b),
-            "cavity: staphyloma width " + mm(g.staphylomaWidth) + " is too wide; at most " +
-                mm(1.4 * std::min(a, b)) + " (70 % of the eye's transverse diameter) so that it "
+            "cavity: staphyloma width " + mmText(g.staphylomaWidth) + " is too wide; at most " +
+                mmText(1.4 * std::min(a, b)) + " (70 % of the eye's transverse diameter) so that it "
                 "stays on the posterior wall");
-    require(bumpRadius_ >= 1.0 * kMm, "cavity: staphyloma width " + mm(g.staphylomaWidth) +
+    require(bumpRadius_ >= 1.0 * kMm, "cavity: staphyloma width " + mmText(g.staphylomaWidth) +
                                           " is too narrow (at least 2 mm)");
     // Concave radius at the staphyloma's edge: 1/(depth g''(R)) = 2 R^2 / (pi^2 depth).
     const double concaveRadius = 2.0 * bumpRadius_ * bumpRadius_ / (kPi * kPi * g.staphylomaDepth);
     require(concaveRadius >= kMinimumConcaveRadius,
-            "cavity: staphyloma depth " + mm(g.staphylomaDepth) + " over width " +
-                mm(g.staphylomaWidth) + " folds its edge (concave radius " + mm(concaveRadius) +
+            "cavity: staphyloma depth " + mmText(g.staphylomaDepth) + " over width " +
+                mmText(g.staphylomaWidth) + " folds its edge (concave radius " + mmText(concaveRadius) +
                 " < 1.5 mm, the sclera could not be offset); use depth <= " +
-                mm(2.0 * bumpRadius_ * bumpRadius_ / (kPi * kPi * kMinimumConcaveRadius)) +
+                mmText(2.0 * bumpRadius_ * bumpRadius_ / (kPi * kPi * kMinimumConcaveRadius)) +
                 " or a wider staphyloma");
   }
 

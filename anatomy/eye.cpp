@@ -19,11 +19,6 @@ constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr int kMeridians = 360;
 constexpr int kThetas = 512;
 
-std::string mm(double metres) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof(buffer), "%.2f mm", metres * 1e3);
-  return buffer;
-}
 
 std::string describe(const ClinicalPosition& p) {
   char buffer[96];
@@ -41,8 +36,8 @@ Eye::Eye(Laterality laterality, const CavityShape& cavity, const ClinicalLandmar
               l.maculaDiameter > 0.0 && l.opticDiscDiameter > 0.0 && l.posteriorPoleRadius > 0.0,
           "eye landmarks: distances must be positive (limbusToRim may be 0)");
   require(l.oraFromLimbus > l.limbusToRim,
-          "eye landmarks: the ora serrata (" + mm(l.oraFromLimbus) + " posterior to the limbus) "
-          "must lie posterior to the cavity's rim (" + mm(l.limbusToRim) + ")");
+          "eye landmarks: the ora serrata (" + mmText(l.oraFromLimbus) + " posterior to the limbus) "
+          "must lie posterior to the cavity's rim (" + mmText(l.limbusToRim) + ")");
 
   // Tabulate the arc length to the rim: Gauss-Legendre per cell, accumulated from the rim.
   const double rimTheta = cavity_.rimTheta();
@@ -61,8 +56,8 @@ Eye::Eye(Laterality laterality, const CavityShape& cavity, const ClinicalLandmar
     const double meridian = kTwoPi * i / kMeridians;
     const double equator = distanceFromLimbus({equatorTheta, meridian});
     require(l.oraFromLimbus < equator,
-            "eye landmarks: the ora serrata (" + mm(l.oraFromLimbus) + " posterior to the "
-            "limbus) must lie anterior to the equator (" + mm(equator) + " on some meridian)");
+            "eye landmarks: the ora serrata (" + mmText(l.oraFromLimbus) + " posterior to the "
+            "limbus) must lie anterior to the equator (" + mmText(equator) + " on some meridian)");
   }
 
   fovea_ = cavity_.posteriorPole();
@@ -70,7 +65,7 @@ Eye::Eye(Laterality laterality, const CavityShape& cavity, const ClinicalLandmar
   const double discMeridian = cavity_.meridianOfAzimuth(nasalAzimuth);
   const double poleDistance = distanceToPosteriorPole(discMeridian);
   require(poleDistance - l.foveaToDisc > l.oraFromLimbus,
-          "eye landmarks: the optic disc (" + mm(l.foveaToDisc) + " from the fovea) would lie "
+          "eye landmarks: the optic disc (" + mmText(l.foveaToDisc) + " from the fovea) would lie "
           "anterior to the ora serrata");
   opticDisc_ = cavity_.wallPoint(wallCoordinateAt(discMeridian, poleDistance - l.foveaToDisc));
 }
@@ -103,8 +98,8 @@ WallCoordinate Eye::wallCoordinateAt(double meridian, double distance) const {
   const double target = distance - landmarks_.limbusToRim;  // [m] from the rim
   const double total = arcFromRim(0.0, meridian);
   require(target >= -1e-12 && target <= total + 1e-12,
-          "wall distance " + mm(distance) + " posterior to the limbus is off the modelled wall (" +
-              mm(landmarks_.limbusToRim) + " .. " + mm(total + landmarks_.limbusToRim) + ")");
+          "wall distance " + mmText(distance) + " posterior to the limbus is off the modelled wall (" +
+              mmText(landmarks_.limbusToRim) + " .. " + mmText(total + landmarks_.limbusToRim) + ")");
   // arcFromRim decreases with theta: bisection on the tabulated theta grid, then linear.
   const double rimTheta = cavity_.rimTheta();
   int lo = 0, hi = kThetas;  // arc(lo) >= target >= arc(hi)
@@ -130,17 +125,17 @@ WallPoint Eye::wallPointAt(const ClinicalPosition& position) const {
   const double meridian = cavity_.meridianOfAzimuth(std::atan2(direction.y(), direction.x()));
   require(fromLimbus >= landmarks_.limbusToRim,
           "clinical position " + describe(position) + " is anterior to the modelled wall, which "
-          "starts " + mm(landmarks_.limbusToRim) + " posterior to the limbus (at the lens/IOL)");
+          "starts " + mmText(landmarks_.limbusToRim) + " posterior to the limbus (at the lens/IOL)");
   const double pole = distanceToPosteriorPole(meridian);
   require(fromLimbus <= pole, "clinical position " + describe(position) + " lies beyond the "
-                              "posterior pole (" + mm(pole) + " from the limbus on this meridian)");
+                              "posterior pole (" + mmText(pole) + " from the limbus on this meridian)");
   const WallCoordinate w = wallCoordinateAt(meridian, fromLimbus);
   return {cavity_.wallPoint(w), cavity_.wallNormal(w)};
 }
 
 ClinicalPosition Eye::clinicalPositionOf(const Vec3& point, DistanceReference from) const {
   require(cavity_.closestPart(point) == CavityPart::kWall,
-          "point (" + mm(point.x()) + ", " + mm(point.y()) + ", " + mm(point.z()) +
+          "point (" + mmText(point.x()) + ", " + mmText(point.y()) + ", " + mmText(point.z()) +
               ") is on the lens/IOL cap, which has no clinical wall position");
   const WallCoordinate w = cavity_.closestWallCoordinate(point);
   const Vec3 q = cavity_.wallPoint(w);

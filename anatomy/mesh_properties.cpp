@@ -1,5 +1,6 @@
 #include "anatomy/mesh_properties.h"
 
+#include <Eigen/Geometry>  // cross products
 #include <algorithm>
 #include <cstdint>
 #include <unordered_map>

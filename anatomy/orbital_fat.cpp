@@ -10,8 +10,7 @@ namespace anatomy {
 
 OrbitalFat makeOrbitalFat(const ScleraShell& sclera, const OrbitalFatParameters& p) {
   require(p.thickness >= 0.5e-3 && p.thickness <= 30e-3,
-          "orbital fat thickness " + std::to_string(p.thickness * 1e3) +
-              " mm is out of range (0.5..30 mm)");
+          "orbital fat thickness " + mmText(p.thickness) + " is out of range (0.5..30 mm)");
   const double degree = std::numbers::pi / 180.0;
   require(p.polarExtent >= 10.0 * degree && p.polarExtent <= 90.0 * degree,
           "orbital fat polar extent " + std::to_string(p.polarExtent / degree) +

@@ -15,7 +15,7 @@ ScleraShell::ScleraShell(const Eye& eye, const ScleraThicknessProfile& profile)
                              profile.midEquatorPole, profile.posteriorPole};
   for (double t : values)
     require(t > 0.0 && t <= 1.5e-3,
-            "sclera thickness " + std::to_string(t * 1e3) + " mm is out of range (0 < t <= 1.5 mm)");
+            "sclera thickness " + mmText(t) + " is out of range (0 < t <= 1.5 mm)");
 }
 
 double ScleraShell::thicknessAt(const WallCoordinate& w) const {

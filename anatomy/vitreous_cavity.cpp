@@ -20,11 +20,9 @@ constexpr double kVerticalRadiusSlope = -0.0864e-3;    // [m/D]
 constexpr double kEmmetropicAxialLength = 23.58e-3;    // [m] Atchison 2006
 constexpr double kApexDepth = kEmmetropicAxialLength - 2.0 * kAxialRadius0;  // [m] 3.228 mm
 
-std::string mm(double metres) { return std::to_string(metres / kMm) + " mm"; }
-
 void requireRange(double value, double lo, double hi, const std::string& what) {
-  require(value >= lo && value <= hi, what + " " + mm(value) + " is out of range: use " + mm(lo) +
-                                          " .. " + mm(hi));
+  require(value >= lo && value <= hi, what + " " + mmText(value) + " is out of range: use " + mmText(lo) +
+                                          " .. " + mmText(hi));
 }
 
 void validateAnterior(const AnteriorBoundary& a) {
@@ -85,8 +83,8 @@ CavityGeometry staphylomaGeometry(const StaphylomaCavityParameters& p) {
   validateAnterior(p.anterior);
   const double baseAxialLength = p.axialLength - p.staphylomaDepth;
   require(baseAxialLength >= 22.0 * kMm,
-          "staphyloma: axial length " + mm(p.axialLength) + " minus depth " +
-              mm(p.staphylomaDepth) + " leaves a globe shorter than 22 mm");
+          "staphyloma: axial length " + mmText(p.axialLength) + " minus depth " +
+              mmText(p.staphylomaDepth) + " leaves a globe shorter than 22 mm");
   CavityGeometry g =
       atchisonGeometry(refractionForAxialLength(baseAxialLength), kApexDepth, p.anterior);
   g.staphylomaDepth = p.staphylomaDepth;

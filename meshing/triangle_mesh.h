@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>  // cross(): declared in Core but defined here (else: link errors)
 #include <array>
 #include <vector>
 
