@@ -48,6 +48,14 @@ struct WallCoordinate {
 
 enum class CavityPart { kWall, kCap };
 
+// Where a point (on or near the boundary) projects: the part it is nearest to, and its nearest
+// wall point within its meridian plane (also computed for cap points).
+struct CavityProjection {
+  CavityPart part = CavityPart::kWall;
+  WallCoordinate wall;
+  double wallDistance = 0.0;  // [m] from the point to that wall point
+};
+
 class CavityShape {
  public:
   // Validates the geometry (positive axes, rim plane inside the ellipsoid, staphyloma inside the
@@ -70,9 +78,12 @@ class CavityShape {
   double arcLength(double theta0, double theta1, double meridian) const;
   // Wall parameters of the wall point nearest to `p` within p's meridian plane.
   WallCoordinate closestWallCoordinate(const Vec3& p) const;
-  // Which part of the boundary `p` is nearest to; with a normal, ties (< 1 um) go to the part
-  // whose normal matches better.
-  CavityPart closestPart(const Vec3& p, const Vec3* normal = nullptr) const;
+  // Which part of the boundary `p` is nearest to, and its nearest wall coordinate; with a normal,
+  // ties (< 1 um) go to the part whose normal matches better. ~100 surface evaluations.
+  CavityProjection project(const Vec3& p, const Vec3* normal = nullptr) const;
+  CavityPart closestPart(const Vec3& p, const Vec3* normal = nullptr) const {
+    return project(p, normal).part;
+  }
 
   double volume() const { return volume_; }  // [m^3] closed form (header comment)
   Vec3 cornealApex() const;                  // on the axis, anterior of the cavity

@@ -134,10 +134,11 @@ WallPoint Eye::wallPointAt(const ClinicalPosition& position) const {
 }
 
 ClinicalPosition Eye::clinicalPositionOf(const Vec3& point, DistanceReference from) const {
-  require(cavity_.closestPart(point) == CavityPart::kWall,
+  const CavityProjection projection = cavity_.project(point);
+  require(projection.part == CavityPart::kWall,
           "point (" + mmText(point.x()) + ", " + mmText(point.y()) + ", " + mmText(point.z()) +
               ") is on the lens/IOL cap, which has no clinical wall position");
-  const WallCoordinate w = cavity_.closestWallCoordinate(point);
+  const WallCoordinate& w = projection.wall;
   const Vec3 q = cavity_.wallPoint(w);
   ClinicalPosition result;
   result.from = from;

@@ -21,8 +21,9 @@ bool inSector(double hour, double centre) {
 
 RegionSet regionsAt(const Eye& eye, const Vec3& point, const Vec3* normal) {
   const CavityShape& cavity = eye.cavity();
-  if (cavity.closestPart(point, normal) == CavityPart::kCap) return 0;
-  const WallCoordinate w = cavity.closestWallCoordinate(point);
+  const CavityProjection projection = cavity.project(point, normal);
+  if (projection.part == CavityPart::kCap) return 0;
+  const WallCoordinate& w = projection.wall;
   const ClinicalLandmarks& l = eye.landmarks();
   if (eye.distanceFromLimbus(w) < l.oraFromLimbus) return 0;
 

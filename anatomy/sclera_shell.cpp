@@ -40,8 +40,8 @@ double ScleraShell::thicknessAt(const WallCoordinate& w) const {
 }
 
 double ScleraShell::thicknessAt(const Vec3& point) const {
-  if (eye_->cavity().closestPart(point) == CavityPart::kCap) return 0.0;
-  return thicknessAt(eye_->cavity().closestWallCoordinate(point));
+  const CavityProjection projection = eye_->cavity().project(point);
+  return projection.part == CavityPart::kCap ? 0.0 : thicknessAt(projection.wall);
 }
 
 std::vector<double> ScleraShell::vertexThickness(const meshing::TriangleMesh& cavityMesh) const {
