@@ -2,12 +2,14 @@
 // wall distance = R x angle, chord = 2 R sin(angle / 2).
 #include <catch2/catch.hpp>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "anatomy/anatomy_error.h"
 #include "anatomy/clock_hour.h"
 #include "anatomy/retinal_break.h"
 #include "anatomy/retinal_regions.h"
+#include "anatomy/vitreous_cavity.h"
 #include "sphere_eye.h"
 
 using namespace anatomy;
@@ -133,4 +135,27 @@ TEST_CASE("retinal breaks: membership on a sphere, rejection anterior to the ora
                     Catch::Contains("'hole 3'") && Catch::Contains("diameter"));
   CHECK_THROWS_WITH(RetinalBreak(od, {"hole 4", {6.0, 80.0 * kMm}, 1.0 * kMm}),
                     Catch::Contains("'hole 4'") && Catch::Contains("beyond the posterior pole"));
+}
+
+TEST_CASE("retinal area of the emmetropic model matches MRI data", "[validation][regions]") {
+  // Nagra M et al., J Anat 2017;231(3):319-324 (reference-data.md 4.4): retinal area
+  // 1363 +- 160 mm^2 by 3-T MRI in 73 adults with AL 24.51 +- 1.57 mm. The model eye of that
+  // axial length must lie within one standard deviation: the cohort's spread, which also covers
+  // the model's [U] landmarks (ora 6.2 mm, rim 4.5 mm behind the limbus). Measured: ~1292 mm^2.
+  EmmetropicCavityParameters p;
+  p.axialLength = 24.51 * kMm;
+  p.resolution = 128;
+  const VitreousCavity cavity = makeEmmetropicCavity(p);
+  const Eye eye(Laterality::kRight, cavity.shape);
+  double retinalArea = 0.0;  // [m^2] faces whose centroid is retina
+  for (const auto& f : cavity.mesh.faces) {
+    const Vec3& a = cavity.mesh.vertices[static_cast<size_t>(f[0])];
+    const Vec3& b = cavity.mesh.vertices[static_cast<size_t>(f[1])];
+    const Vec3& c = cavity.mesh.vertices[static_cast<size_t>(f[2])];
+    const Vec3 normal = (b - a).cross(c - a).normalized();
+    if (regionsAt(eye, (a + b + c) / 3.0, &normal) & kRetina)
+      retinalArea += 0.5 * (b - a).cross(c - a).norm();
+  }
+  INFO("retinal area " << retinalArea * 1e6 << " mm^2");
+  CHECK(std::abs(retinalArea - 1363e-6) <= 160e-6);
 }
