@@ -124,11 +124,12 @@ Vec3 CavityShape::wallPoint(const WallCoordinate& w) const {
 Vec3 CavityShape::ellipsoidNormal(const WallCoordinate& w) const {
   const double a = geometry_.semiAxisHorizontal, b = geometry_.semiAxisVertical,
                c = geometry_.semiAxisAxial;
-  // Gradient of x^2/a^2 + y^2/b^2 + z^2/c^2 divided by sin(theta) (finite at the pole).
-  const Vec3 n(std::cos(w.meridian) / a, std::sin(w.meridian) / b,
-               std::sin(w.theta) < 1e-12 ? -1.0 / c : -std::cos(w.theta) / (c * std::sin(w.theta)));
-  if (std::sin(w.theta) < 1e-12) return {0.0, 0.0, -1.0};
-  return n.normalized();
+  // Gradient of x^2/a^2 + y^2/b^2 + z^2/c^2 at the point, scaled by 1/sin(theta); at the pole
+  // the normal is -z.
+  const double s = std::sin(w.theta);
+  if (s < 1e-12) return {0.0, 0.0, -1.0};
+  return Vec3(std::cos(w.meridian) / a, std::sin(w.meridian) / b, -std::cos(w.theta) / (c * s))
+      .normalized();
 }
 
 Vec3 CavityShape::wallNormal(const WallCoordinate& w) const {
@@ -250,14 +251,18 @@ CavityProjection CavityShape::project(const Vec3& p, const Vec3* normal) const {
   // The vertical distance to the cap graph bounds the true distance from above.
   const double capDistance =
       std::abs(p.z() + centroidZ_ - (rimZ_ - geometry_.capSag * (1.0 - u2)));
+  // Within 1 um of both parts (the rim) the normal decides; without one the wall wins, so rim
+  // vertices get the wall's sclera thickness and clinical position.
   constexpr double kTie = 1e-6;  // [m]
-  if (normal != nullptr && std::abs(capDistance - result.wallDistance) < kTie) {
-    const double meridian = std::atan2(p.y() / rimB, p.x() / rimA);
-    const double capMatch = normal->dot(capNormal(std::sqrt(u2), meridian));
-    const double wallMatch = normal->dot(wallNormal(result.wall));
-    result.part = capMatch > wallMatch ? CavityPart::kCap : CavityPart::kWall;
-  } else {
-    result.part = capDistance < result.wallDistance ? CavityPart::kCap : CavityPart::kWall;
+  if (std::abs(capDistance - result.wallDistance) < kTie) {
+    if (normal != nullptr) {
+      const double meridian = std::atan2(p.y() / rimB, p.x() / rimA);
+      const double capMatch = normal->dot(capNormal(std::sqrt(u2), meridian));
+      const double wallMatch = normal->dot(wallNormal(result.wall));
+      result.part = capMatch > wallMatch ? CavityPart::kCap : CavityPart::kWall;
+    }
+  } else if (capDistance < result.wallDistance) {
+    result.part = CavityPart::kCap;
   }
   return result;
 }

@@ -78,8 +78,9 @@ class CavityShape {
   double arcLength(double theta0, double theta1, double meridian) const;
   // Wall parameters of the wall point nearest to `p` within p's meridian plane.
   WallCoordinate closestWallCoordinate(const Vec3& p) const;
-  // Which part of the boundary `p` is nearest to, and its nearest wall coordinate; with a normal,
-  // ties (< 1 um) go to the part whose normal matches better. ~100 surface evaluations.
+  // Which part of the boundary `p` is nearest to, and its nearest wall coordinate. Ties (< 1 um,
+  // i.e. the rim) go to the part whose normal matches `normal` better, or to the wall without
+  // one. ~90 surface evaluations (~7 us).
   CavityProjection project(const Vec3& p, const Vec3* normal = nullptr) const;
   CavityPart closestPart(const Vec3& p, const Vec3* normal = nullptr) const {
     return project(p, normal).part;

@@ -203,3 +203,20 @@ TEST_CASE("cavity parameters out of range are rejected with the parameter named"
   staphyloma.staphylomaWidth = 30.0 * kMm;
   CHECK_THROWS_WITH(makeStaphylomaCavity(staphyloma), Catch::Contains("too wide"));
 }
+
+TEST_CASE("projection: cap, wall, and the rim settled by the normal", "[unit][cavity]") {
+  const CavityShape shape(test::sphereGeometry(1.0e-3));
+  CHECK(shape.project(shape.capPoint(0.5, 0.3)).part == CavityPart::kCap);
+  CHECK(shape.project(shape.wallPoint({1.0, 0.3})).part == CavityPart::kWall);
+  // 0.1 mm inside the cavity from a wall point: still the wall, at 0.1 mm.
+  const WallCoordinate w{0.8, 2.0};
+  const CavityProjection inside = shape.project(shape.wallPoint(w) - 1e-4 * shape.wallNormal(w));
+  CHECK(inside.part == CavityPart::kWall);
+  CHECK(inside.wallDistance == Approx(1e-4).epsilon(1e-6));
+  CHECK(inside.wall.theta == Approx(w.theta).margin(1e-9));
+  // A rim point belongs to both parts: the wall by default, the cap when its normal says so.
+  const Vec3 rim = shape.capPoint(1.0, 0.7);
+  CHECK(shape.project(rim).part == CavityPart::kWall);
+  const Vec3 capNormal = shape.capNormal(1.0, 0.7);
+  CHECK(shape.project(rim, &capNormal).part == CavityPart::kCap);
+}
