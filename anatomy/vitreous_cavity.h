@@ -10,8 +10,9 @@
 // emmetropic axial length is 23.58 mm, Atchison 2006). Hence AL = 23.58 mm - 0.299 mm/D x SR.
 //  * emmetropic: the SR = 0 ellipsoid (oblate, wider than long) scaled uniformly so the axial
 //    length is as requested (the same scaling gkaModelEye applies for a given axial length);
-//  * myopic: SR = -(AL - 23.58 mm) / 0.299 mm/D, radii from the linear fit (prolate once
-//    AL >~ 27 mm; beyond the fit's data range this is a linear extrapolation);
+//  * myopic: SR = -(AL - 23.58 mm) / 0.299 mm/D, radii from the linear fit: longer than wide
+//    beyond AL 27.1 mm (SR -11.6 D), longer than high beyond 29.3 mm (SR -19 D), i.e. prolate
+//    in both planes from there; far beyond the fit's data range this is a linear extrapolation;
 //  * staphyloma: the myopic eye of axial length AL - depth plus a posterior outpouching of the
 //    given depth and base width, so that the requested AL is the biometric one (to the bottom of
 //    the staphyloma). Depth/width are not in the reference data ([U]: a few mm deep, 10-15 mm

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "anatomy/anatomy_error.h"
+#include "anatomy/material_library.h"
 #include "anatomy/mesh_properties.h"
 #include "anatomy/orbital_fat.h"
 #include "anatomy/sclera_shell.h"
@@ -100,4 +101,19 @@ TEST_CASE("orbital fat behind a staphyloma is closed and outside the sclera", "[
   OrbitalFatParameters bad;
   bad.thickness = 0.0;
   CHECK_THROWS_WITH(makeOrbitalFat(sclera, bad), Catch::Contains("orbital fat thickness"));
+}
+
+TEST_CASE("tissue geometries name materials of the library", "[unit][tissue]") {
+  const CavityShape sphere(test::sphereGeometry());
+  const Eye eye(Laterality::kRight, sphere);
+  const ScleraShell sclera(eye);
+  const MaterialLibrary& library = MaterialLibrary::builtin();
+  const MaterialRecord& scleraMaterial = library.find(sclera.materialName());
+  CHECK(scleraMaterial.kind == MaterialKind::kTissue);
+  CHECK(scleraMaterial.youngsModulus.has_value());
+  OrbitalFatParameters p;
+  p.resolution = 16;
+  const MaterialRecord& fatMaterial = library.find(makeOrbitalFat(sclera, p).materialName);
+  CHECK(fatMaterial.kind == MaterialKind::kTissue);
+  CHECK(fatMaterial.poissonRatio.has_value());
 }
