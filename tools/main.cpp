@@ -10,6 +10,7 @@
 #include "tools/commands.h"
 
 namespace tools {
+int runMeshGenerate(Args args);  // cmd_mesh_generate.cpp
 int runVersion(Args) {
   std::printf("tamponade %s\n", TAMPONADE_VERSION);
   return 0;
@@ -22,6 +23,7 @@ namespace {
 constexpr std::array kCommands = {
     tools::Command{"version", "print the version", tools::runVersion},
     tools::Command{"mesh", "check, repair and sample eye meshes", tools::runMesh},
+    tools::Command{"mesh-generate", "write a parametric vitreous cavity mesh", tools::runMeshGenerate},
 };
 
 void printUsage(std::FILE* out) {
