@@ -10,6 +10,7 @@
 #include "tools/commands.h"
 
 namespace tools {
+int runValidate(Args args);  // tools/cmd_validate.cpp
 int runVersion(Args) {
   std::printf("tamponade %s\n", TAMPONADE_VERSION);
   return 0;
@@ -20,6 +21,7 @@ namespace {
 
 constexpr std::array kCommands = {
     tools::Command{"version", "print the version", tools::runVersion},
+    tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
 };
 
 void printUsage(std::FILE* out) {
