@@ -1,5 +1,7 @@
 #include "protocols/format/describe_protocol.h"
 
+#include <algorithm>
+
 #include "protocols/format/units.h"
 
 namespace protocols {
@@ -11,7 +13,7 @@ class Lines {
   // `key = text` with a note saying where the value came from.
   void add(const std::string& key, const std::string& text, const SourceLocation& where) {
     std::string line = key + " = " + text;
-    if (line.size() < 52) line.resize(52, ' ');
+    line.resize(std::max<std::size_t>(line.size() + 2, 52), ' ');
     line += where.isInFile() ? "# line " + std::to_string(where.line) : std::string("# default");
     text_ += line + "\n";
   }
@@ -110,14 +112,15 @@ std::string describeProtocol(const Protocol& p) {
     } else {
       out.add(prefix + ".name", quoted(std::string(toString(s.name.value))), s.name.where);
     }
-    out.add(prefix + ".label", quoted(s.label), s.where);
+    out.add(prefix + ".label", quoted(s.label.value), s.label.where);
     out.add(prefix + ".duration",
             s.untilSteady ? "until steady, at most " + formatQuantity(s.duration.value, Dimension::kDuration)
                           : formatQuantity(s.duration.value, Dimension::kDuration),
             s.duration.where);
     total += s.duration.value;
   }
-  out.addPlain("# schedule: " + std::to_string(p.schedule.postures.size()) + " postures, at most " +
+  out.addPlain("# schedule: " + std::to_string(p.schedule.postures.size()) +
+               (p.schedule.postures.size() == 1 ? " posture" : " postures") + ", at most " +
                formatQuantity(total, Dimension::kDuration) + " (" + formatIn(total, "min") + ") simulated");
 
   for (std::size_t k = 0; k < kEffectNames.size(); ++k)

@@ -61,7 +61,7 @@ const ParameterSpec kParameters[] = {
   {.key = "eye.breaks", .kind = K::kTableArray, .doc = "Retinal breaks, one [[eye.breaks]] table each."},
   {.key = "eye.breaks.name", .kind = K::kString, .requirement = R::kRequired, .example = "\"superior tear\"",
    .doc = "Name used in the report."},
-  {.key = "eye.breaks.clock_hour", .kind = K::kNumber, .displayUnit = "h", .min = 1, .max = 13,
+  {.key = "eye.breaks.clock_hour", .kind = K::kNumber, .min = 1, .max = 13,
    .maxInclusive = false, .requirement = R::kRequired, .example = "12",
    .doc = "Clock position as the surgeon sees the fundus (12 superior); decimals allowed, 12.5 = half past 12."},
   {.key = "eye.breaks.posterior_to_limbus", .kind = K::kQuantity, .dimension = D::kLength, .displayUnit = "mm",
@@ -233,7 +233,7 @@ std::vector<std::string_view> childKeys(std::string_view tablePath) {
 std::string rangeText(const ParameterSpec& spec) {
   if (!spec.hasRange()) return {};
   const std::string_view unit = spec.displayUnit;
-  const std::string suffix = unit.empty() || unit == "h" ? "" : " " + std::string(unit);
+  const std::string suffix = unit.empty() || unit == "%" ? "" : " " + std::string(unit);
   if (spec.min > -kUnbounded && spec.max < kUnbounded)
     return (spec.minInclusive ? "[" : "(") + number(spec.min, unit) + ", " + number(spec.max, unit) +
            (spec.maxInclusive ? "]" : ")") + suffix;

@@ -275,13 +275,13 @@ void ProtocolParser::readSchedule(const Table& root, Protocol& p) {
                         "), or gravity_direction = [x, y, z] in the eye frame");
     if (name) {
       posture.name = {static_cast<PostureName>(name->value), name->where};
-      posture.label = std::string(kPostureNames[name->value]);
+      posture.label = {std::string(kPostureNames[name->value]), defaultAt_};
     } else if (gravity) {
       posture.name = {PostureName::kCustom, gravity->where};
       posture.gravityDirection = *gravity;
-      posture.label = "custom";
+      posture.label = {"custom", defaultAt_};
     }
-    if (auto label = reader_.string(pt, "label")) posture.label = label->value;
+    if (auto label = reader_.string(pt, "label")) posture.label = *label;
     const auto duration = reader_.durationOrSteady(pt, "duration");
     const auto limit = reader_.quantity(pt, "max_duration");
     if (duration) {

@@ -110,7 +110,7 @@ struct TamponadeSpec {
 
 struct Posture {
   Located<PostureName> name;                  // kCustom when given as a gravity direction
-  std::string label;                          // the name, or the user's label of a custom one
+  Located<std::string> label;                 // the user's label, else the name or "custom"
   Located<std::array<double, 3>> gravityDirection;  // [1] unit vector, eye frame; kCustom only
   bool untilSteady = false;
   Located<double> duration;                   // [s]; with untilSteady the upper bound

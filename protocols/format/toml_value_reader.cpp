@@ -10,6 +10,11 @@ namespace {
 
 std::string shortNumber(double v) { return formatIn(v, ""); }
 
+std::string withArticle(std::string_view noun) {
+  const bool vowel = !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
+  return (vowel ? "an " : "a ") + std::string(noun);
+}
+
 // The example of a spec as a TOML assignment, for "how to fix it": `fill = "90 %"`.
 std::string exampleOf(const ParameterSpec& s, std::string_view key) {
   if (s.example.empty()) return {};
@@ -100,7 +105,7 @@ bool TomlValueReader::checkRange(const Table& t, std::string_view key, const Par
   const bool aboveMin = s.minInclusive ? v >= s.min : v > s.min;
   const bool belowMax = s.maxInclusive ? v <= s.max : v < s.max;
   if (aboveMin && belowMax) return true;
-  std::string shown = formatIn(v, s.displayUnit == "h" ? "" : s.displayUnit);
+  std::string shown = formatIn(v, s.displayUnit);
   error(value.where,
         shownKey(t, key) + " = " + shown + " is outside the allowed range " + rangeText(s),
         std::string(s.doc) + (s.example.empty() ? "" : " " + exampleOf(s, key)));
@@ -151,16 +156,11 @@ std::optional<Located<double>> TomlValueReader::quantity(const Table& t, std::st
     const double v = *node->value<double>();
     if (s.dimension != Dimension::kFraction) {
       error(result.where,
-            shownKey(t, key) + " = " + shortNumber(v) + " has no unit, and a " +
-                std::string(dimensionName(s.dimension)) + " needs one",
+            shownKey(t, key) + " = " + shortNumber(v) + " has no unit, and " +
+                withArticle(dimensionName(s.dimension)) + " needs one",
             "write it as a string with a unit, e.g. " + std::string(key) + " = \"" +
                 shortNumber(v) + " " + std::string(s.displayUnit) + "\" (" +
                 std::string(dimensionName(s.dimension)) + " units: " + unitSymbols(s.dimension) + ")");
-      return std::nullopt;
-    }
-    if (v < 0.0 || v > 1.0) {
-      error(result.where, shownKey(t, key) + " = " + shortNumber(v) + " is not a fraction in [0, 1]",
-            "write a fraction like 0.9 or a percentage like \"" + shortNumber(v) + " %\"");
       return std::nullopt;
     }
     result.value = v;
@@ -254,7 +254,8 @@ std::optional<Located<std::size_t>> TomlValueReader::choice(const Table& t, std:
   for (std::size_t k = 0; k < s.choices.size(); ++k)
     if (s.choices[k] == value) return Located<std::size_t>{k, at(node->source())};
   std::string fix = didYouMean(value, s.choices);
-  fix += (fix.empty() ? "" : " ") + std::string("(choose one of ") + joinNames(s.choices, true) + ")";
+  fix += fix.empty() ? "choose one of " + joinNames(s.choices, true)
+                     : " (choose one of " + joinNames(s.choices, true) + ")";
   error(at(node->source()),
         "unknown " + std::string(key) + " '" + std::string(value) + "' for " + shownKey(t, key), fix);
   return std::nullopt;
@@ -328,8 +329,19 @@ std::optional<Located<double>> TomlValueReader::durationOrSteady(const Table& t,
                                                                  std::string_view key) {
   const toml::node* node = find(t, key);
   if (node == nullptr) return std::nullopt;
-  if (node->is_string() && *node->value<std::string_view>() == "until steady")
-    return Located<double>{-1.0, at(node->source())};
+  constexpr std::string_view kSteady = "until steady";
+  if (node->is_string()) {
+    const std::string_view text = *node->value<std::string_view>();
+    if (text == kSteady) return Located<double>{-1.0, at(node->source())};
+    const bool startsLikeNumber = !text.empty() && std::string_view("0123456789.+-").find(text.front()) != std::string_view::npos;
+    if (!startsLikeNumber) {
+      error(at(node->source()),
+            shownKey(t, key) + " = \"" + std::string(text) + "\" is neither a duration nor \"until steady\"",
+            editDistance(text, kSteady) <= 3 ? "did you mean \"until steady\"?"
+                                             : "write a duration like \"10 min\", or \"until steady\"");
+      return std::nullopt;
+    }
+  }
   return quantity(t, key);
 }
 

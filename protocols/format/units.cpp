@@ -104,6 +104,11 @@ std::string dimensionsText(std::span<const Dimension> allowed) {
   return text;
 }
 
+std::string withArticle(const std::string& noun) {
+  const bool vowel = !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
+  return (vowel ? "an " : "a ") + noun;
+}
+
 }  // namespace
 
 std::span<const Unit> knownUnits() { return kUnits; }
@@ -181,7 +186,7 @@ Quantity parseQuantity(std::string_view text, std::span<const Dimension> allowed
                             std::string(body) + " %\"");
       return {number, D::kFraction};
     }
-    throw UnitError(quoted + " has no unit, and a " + dimensionsText(allowed) +
+    throw UnitError(quoted + " has no unit, and " + withArticle(dimensionsText(allowed)) +
                         " needs one",
                     "add a unit, " + example + " (" + unitsHint(allowed) + ")");
   }
@@ -202,8 +207,8 @@ Quantity parseQuantity(std::string_view text, std::span<const Dimension> allowed
   for (Dimension d : allowed)
     if (u->dimension == d) return {number * u->toSi, d};
   throw UnitError("'" + unit + "' in " + quoted + " is a unit of " +
-                      std::string(dimensionName(u->dimension)) + ", but a " +
-                      dimensionsText(allowed) + " is expected",
+                      std::string(dimensionName(u->dimension)) + ", but " +
+                      withArticle(dimensionsText(allowed)) + " is expected",
                   unitsHint(allowed));
 }
 
