@@ -28,15 +28,23 @@ std::vector<std::string> nearestNames(std::string_view word,
     return out;
   };
   const std::string lowerWord = lower(word);
-  const std::size_t threshold = std::max<std::size_t>(2, word.size() / 3);
+  // Scores in half edits: a difference of case only scores 1, any other edit 2, so "od"
+  // suggests "OD" and not also "OS".
+  const std::size_t threshold = 2 * std::max<std::size_t>(2, word.size() / 3);
   std::size_t best = threshold + 1;
   std::vector<std::string> names;
   for (std::string_view candidate : candidates) {
-    std::size_t d = editDistance(lowerWord, lower(candidate));
-    if (d == 0 && candidate != word) d = 1;
-    if (d > threshold || d > best) continue;
-    if (d < best) names.clear();
-    best = d;
+    std::size_t score = 2 * editDistance(lowerWord, lower(candidate));
+    if (score == 0 && candidate != word) score = 1;
+    // A truncated or extended name ("elastic" for "elasticity") is a likely slip however many
+    // letters are missing.
+    const std::string lowerCandidate = lower(candidate);
+    const bool isPrefix = lowerWord.size() >= 4 && (lowerCandidate.starts_with(lowerWord) ||
+                                                    lowerWord.starts_with(lowerCandidate));
+    if (isPrefix) score = std::min(score, threshold);
+    if (score > threshold || score > best) continue;
+    if (score < best) names.clear();
+    best = score;
     names.emplace_back(candidate);
   }
   return names;

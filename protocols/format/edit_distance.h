@@ -13,7 +13,8 @@ namespace protocols {
 std::size_t editDistance(std::string_view a, std::string_view b);
 
 // The candidates closest to `word` (all ties), if close enough to be a plausible typo: within
-// a third of the word's length, at least 2 edits. Empty when nothing is close.
+// a third of the word's length (at least 2 edits), or one a prefix of the other (4+ letters).
+// Empty when nothing is close.
 std::vector<std::string> nearestNames(std::string_view word,
                                       std::span<const std::string_view> candidates);
 

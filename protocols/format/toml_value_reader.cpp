@@ -69,7 +69,8 @@ void TomlValueReader::reportUnknownKeys(const Table& t) {
     if (isKnown) continue;
     const std::string where = t.shownPath.empty() ? "at the top level" : "in [" + t.shownPath + "]";
     std::string fix = didYouMean(key.str(), known);
-    fix += (fix.empty() ? "" : " ") + std::string("(known keys ") + where + ": " + joinNames(known) + ")";
+    const std::string list = "known keys " + where + ": " + joinNames(known);
+    fix += fix.empty() ? list : " (" + list + ")";
     error(at(key.source()), "unknown key '" + std::string(key.str()) + "' " + where, fix);
   }
 }
