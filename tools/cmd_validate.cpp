@@ -14,7 +14,7 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: tamponade validate PROTOCOL.toml\n"
-    "       tamponade validate --reference   (print the Markdown key reference of docs/protocols.md)\n\n"
+    "       tamponade validate --reference   (print the generated tables of docs/protocols.md)\n\n"
     "Checks a protocol file without running anything and prints it normalised in SI units,\n"
     "defaults filled in. On errors prints each as file:line:column and exits with code 2.\n";
 
@@ -26,7 +26,11 @@ int runValidate(Args args) {
     return 0;
   }
   if (args.size() == 1 && args[0] == "--reference") {
-    std::fputs(protocols::renderParameterReference().c_str(), stdout);
+    std::printf("<!-- begin parameter-reference -->\n%s<!-- end parameter-reference -->\n\n",
+                protocols::renderParameterReference().c_str());
+    std::printf("<!-- begin unit-table -->\n%s<!-- end unit-table -->\n\n", protocols::renderUnitTable().c_str());
+    std::printf("<!-- begin accuracy-presets -->\n%s<!-- end accuracy-presets -->\n",
+                protocols::renderAccuracyPresetTable().c_str());
     return 0;
   }
   if (args.size() != 1 || args[0].starts_with("-")) {

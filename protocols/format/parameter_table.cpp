@@ -307,4 +307,14 @@ std::string renderUnitTable() {
   return md;
 }
 
+std::string renderAccuracyPresetTable() {
+  std::string md = "| preset | particle_spacing | solver_tolerance | min_time_step | max_time_step |\n"
+                   "|---|---|---|---|---|\n";
+  for (const AccuracyPresetValues& p : kAccuracyPresets)
+    md += "| `" + std::string(p.name) + "` | " + formatIn(p.particleSpacing, "mm") + " | " +
+          formatIn(p.solverTolerance, "%") + " | " + formatIn(p.minTimeStep, "s") + " | " +
+          formatIn(p.maxTimeStep, "ms") + " |\n";
+  return md;
+}
+
 }  // namespace protocols

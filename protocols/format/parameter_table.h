@@ -70,5 +70,7 @@ std::string typeText(const ParameterSpec& spec);
 std::string renderParameterReference();
 // The Markdown table of accepted units per dimension.
 std::string renderUnitTable();
+// The Markdown table of the accuracy presets' values.
+std::string renderAccuracyPresetTable();
 
 }  // namespace protocols

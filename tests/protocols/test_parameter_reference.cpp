@@ -32,9 +32,10 @@ std::string section(const std::string& doc, const std::string& name) {
 
 TEST_CASE("docs/protocols.md holds the generated reference tables", "[unit][protocol][docs]") {
   const std::string doc = readFile(std::filesystem::path(TAMPONADE_SOURCE_DIR) / "docs" / "protocols.md");
-  INFO("regenerate the key table with: tamponade validate --reference");
+  INFO("regenerate the tables with: tamponade validate --reference");
   CHECK(section(doc, "parameter-reference") == protocols::renderParameterReference());
   CHECK(section(doc, "unit-table") == protocols::renderUnitTable());
+  CHECK(section(doc, "accuracy-presets") == protocols::renderAccuracyPresetTable());
 }
 
 TEST_CASE("the parameter table is complete and consistent", "[unit][protocol]") {
