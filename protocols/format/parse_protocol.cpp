@@ -368,6 +368,11 @@ Protocol parseProtocolText(std::string_view text, const std::filesystem::path& f
 }
 
 Protocol parseProtocol(const std::filesystem::path& file) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(file, ec)) {
+    throw ProtocolError({Diagnostic{SourceLocation{file.string(), 0, 0}, "is a folder, not a protocol file",
+                                    "give the path of a .toml protocol file"}});
+  }
   std::ifstream in(file, std::ios::binary);
   if (!in) {
     throw ProtocolError({Diagnostic{SourceLocation{file.string(), 0, 0}, "cannot open the protocol file",

@@ -81,7 +81,7 @@ const toml::node* TomlValueReader::find(const Table& t, std::string_view key) {
     const ParameterSpec& s = spec(t, key);
     if (s.requirement == Requirement::kRequired) {
       const std::string where = t.shownPath.empty() ? "at the top level" : "in [" + t.shownPath + "]";
-      std::string fix = s.kind == ValueKind::kTable ? "add a [" + std::string(s.key) + "] table"
+      std::string fix = s.kind == ValueKind::kTable ? "add the table [" + std::string(s.key) + "]"
                         : s.kind == ValueKind::kTableArray
                             ? "add at least one [[" + std::string(s.key) + "]] table"
                             : "add " + std::string(key) + " = " + std::string(s.example);

@@ -57,7 +57,7 @@ std::vector<BadCase> badCases() {
       {"wrong type", withLine(4, "side = 1"), "eye.side must be a string, one of 'OD', 'OS', not a integer 1", 4, 8},
       {"missing required key", withLine(7, ""), "missing required key 'tamponade.fill' in [tamponade]", 5, 1},
       {"missing required table", withLine(8, "").substr(0, withLine(8, "").find("[[schedule")),
-       "missing required key 'schedule' at the top level \u2014 add a [schedule] table", 1, 1},
+       "missing required key 'schedule' at the top level \u2014 add the table [schedule]", 1, 1},
       {"missing format version", withLine(1, ""), "missing required key 'format_version'", 1, 1},
       {"unsupported format version", withLine(1, "format_version = 2"), "format_version = 2 is outside the allowed range [1, 1]", 1, 18},
       {"number without unit", withLine(4, "side = \"OD\"\naxial_length = 24"),
@@ -206,7 +206,8 @@ TEST_CASE("all problems of a file are reported at once, in file order", "[unit][
   }
 }
 
-TEST_CASE("a missing file is a ProtocolError naming it", "[unit][protocol]") {
+TEST_CASE("a missing file or a folder is a ProtocolError naming it", "[unit][protocol]") {
+  CHECK_THROWS_WITH(protocols::parseProtocol(kProtocolDir), Catch::Contains("is a folder, not a protocol file"));
   CHECK_THROWS_MATCHES(protocols::parseProtocol("/no/such/protocol.toml"), ProtocolError,
                        Catch::Matchers::Message(
                            "/no/such/protocol.toml: cannot open the protocol file \u2014 check the path "
