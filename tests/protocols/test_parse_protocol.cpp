@@ -307,3 +307,34 @@ TEST_CASE("the example protocols say what their names promise", "[unit][protocol
     CHECK(total <= 2.0);
   }
 }
+
+TEST_CASE("custom agent, tissues, gravity direction and forced effects are read", "[unit][protocol][examples]") {
+  const auto p = protocols::parseProtocol(kProtocolDir / "custom_agent_reclined.toml");
+  CHECK(p.tamponade.isCustom());
+  REQUIRE(p.tamponade.viscosity.has_value());
+  CHECK(p.tamponade.viscosity->value.kind == protocols::ViscosityKind::kKinematic);
+  CHECK(p.tamponade.density->value == Approx(970.0).epsilon(1e-12));
+  CHECK(p.tamponade.interfacialTension->value == Approx(0.035).epsilon(1e-12));
+  CHECK(p.tamponade.fill.value == 0.85);
+  REQUIRE(p.eye.sclera.has_value());
+  CHECK(p.eye.sclera->youngsModulus->value == Approx(2e6).epsilon(1e-12));
+  CHECK(p.eye.sclera->mode.value == protocols::TissueMode::kRigid);
+  CHECK(p.eye.sclera->anchoring.value == protocols::Anchoring::kOuterSurface);  // default
+  REQUIRE(p.eye.orbitalFat.has_value());
+  CHECK(p.eye.orbitalFat->material.value == "orbital_fat");
+  CHECK(p.eye.orbitalFat->anchoring.value == protocols::Anchoring::kBackFace);
+  CHECK(p.eye.breaks.at(0).reference == protocols::DistanceReference::kOraSerrata);
+  REQUIRE(p.schedule.postures.size() == 1);
+  const protocols::Posture& posture = p.schedule.postures[0];
+  CHECK(posture.name.value == protocols::PostureName::kCustom);
+  CHECK(posture.label.value == "reclined 45 deg");
+  const auto& g = posture.gravityDirection.value;
+  // [0, -0.7071, -0.7071] normalised: unit length to rounding, equal components kept equal.
+  CHECK(std::sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]) == Approx(1.0).epsilon(1e-14));
+  CHECK(g[1] == g[2]);
+  CHECK(p.effects.get("interfacial_tension").value == protocols::EffectSetting::kOn);
+  CHECK(p.effects.get("elasticity").value == protocols::EffectSetting::kOff);
+  CHECK(p.effects.get("wall_adhesion").value == protocols::EffectSetting::kAuto);
+  CHECK(p.accuracy.particleSpacing.value == Approx(0.6e-3).epsilon(1e-12));
+  CHECK(p.accuracy.solverTolerance.value == protocols::kAccuracyPresets[0].solverTolerance);
+}
