@@ -11,6 +11,7 @@
 
 namespace tools {
 int runMeshGenerate(Args args);  // cmd_mesh_generate.cpp
+int runValidate(Args args);  // tools/cmd_validate.cpp
 int runVersion(Args) {
   std::printf("tamponade %s\n", TAMPONADE_VERSION);
   return 0;
@@ -24,6 +25,7 @@ constexpr std::array kCommands = {
     tools::Command{"version", "print the version", tools::runVersion},
     tools::Command{"mesh", "check, repair and sample eye meshes", tools::runMesh},
     tools::Command{"mesh-generate", "write a parametric vitreous cavity mesh", tools::runMeshGenerate},
+    tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
 };
 
 void printUsage(std::FILE* out) {

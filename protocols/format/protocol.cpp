@@ -1,0 +1,37 @@
+#include "protocols/format/protocol.h"
+
+#include <stdexcept>
+
+namespace protocols {
+
+namespace {
+
+template <class Enum, std::size_t N>
+std::string_view nameOf(Enum v, const std::array<std::string_view, N>& names) {
+  const auto index = static_cast<std::size_t>(v);
+  return index < N ? names[index] : std::string_view("?");
+}
+
+}  // namespace
+
+const Located<EffectSetting>& EffectSwitches::get(std::string_view effect) const {
+  for (std::size_t k = 0; k < kEffectNames.size(); ++k)
+    if (kEffectNames[k] == effect) return settings[k];
+  throw std::logic_error("no effect named '" + std::string(effect) + "' in kEffectNames");
+}
+
+std::string_view toString(EyeKind v) { return nameOf(v, kEyeKindNames); }
+std::string_view toString(EyeSide v) { return nameOf(v, kEyeSideNames); }
+std::string_view toString(TissueMode v) { return nameOf(v, kTissueModeNames); }
+std::string_view toString(Anchoring v) { return nameOf(v, kAnchoringNames); }
+std::string_view toString(PostureName v) {
+  return v == PostureName::kCustom ? std::string_view("custom") : nameOf(v, kPostureNames);
+}
+std::string_view toString(EffectSetting v) {
+  constexpr std::array<std::string_view, 3> kNames = {"auto", "on", "off"};
+  return nameOf(v, kNames);
+}
+std::string_view toString(SolverName v) { return nameOf(v, kSolverNames); }
+std::string_view toString(AccuracyPreset v) { return nameOf(v, kAccuracyPresetNames); }
+
+}  // namespace protocols
