@@ -68,8 +68,23 @@ FrameReader::FrameReader(const std::filesystem::path& h5Path) : impl_(std::make_
   // Without the lock, a run still writing (it holds an exclusive lock) can be read; the reader
   // then sees the file as of the writer's last flush (see frame_writer.h).
   check(H5Pset_file_locking(access.get(), false, true), s.root, "cannot disable file locking");
-  s.file = checked(H5Fopen(h5Path.c_str(), H5F_ACC_RDONLY, access.get()), s.root,
-                   "cannot open as HDF5", "give the frames.h5 of a run folder");
+  // The writer's close degree: HDF5 requires it to match when the file is open in-process.
+  check(H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG), s.root,
+        "cannot set the file close mode");
+  hid_t id = H5Fopen(h5Path.c_str(), H5F_ACC_RDONLY, access.get());
+  if (id < 0) {
+    // If this process itself has the file open (a FrameWriter), HDF5 shares that open file and
+    // insists on the writer's locking setting: retry with the default one, and if that fails
+    // too, report the first reason.
+    const std::string firstReason = hdf5::takeErrorStack();
+    check(H5Pset_file_locking(access.get(), true, true), s.root, "cannot set file locking");
+    id = H5Fopen(h5Path.c_str(), H5F_ACC_RDONLY, access.get());
+    H5Eclear2(H5E_DEFAULT);
+    if (id < 0)
+      throw IoError(s.root.file, "", "cannot open as HDF5 [" + firstReason + "]",
+                    "give the frames.h5 of a run folder");
+  }
+  s.file = Handle(id);
   if (!hdf5::hasAttribute(s.file.get(), "format", s.root) ||
       hdf5::readStringAttribute(s.file.get(), "format", s.root) != layout::kFramesFormat)
     throw IoError(s.root.file, "", "not a frames file of this toolkit (no format attribute)",

@@ -149,6 +149,8 @@ std::vector<std::string> readStrings(hid_t fileType, std::size_t count, const Pl
   if (H5Tis_variable_str(fileType) > 0) {
     Handle memType = checked(H5Tcopy(H5T_C_S1), place, "cannot create a string type");
     check(H5Tset_size(memType.get(), H5T_VARIABLE), place, "cannot size a string type");
+    // HDF5 converts strings only between equal character sets.
+    check(H5Tset_cset(memType.get(), H5Tget_cset(fileType)), place, "cannot set character set");
     std::vector<char*> pointers(count, nullptr);
     check(read(memType.get(), pointers.data()), place, "cannot read text");
     for (std::size_t k = 0; k < count; ++k) {
@@ -161,6 +163,7 @@ std::vector<std::string> readStrings(hid_t fileType, std::size_t count, const Pl
   Handle memType = checked(H5Tcopy(H5T_C_S1), place, "cannot create a string type");
   check(H5Tset_size(memType.get(), size), place, "cannot size a string type");
   check(H5Tset_strpad(memType.get(), H5T_STR_NULLTERM), place, "cannot set string padding");
+  check(H5Tset_cset(memType.get(), H5Tget_cset(fileType)), place, "cannot set character set");
   std::vector<char> buffer(size * count + 1, '\0');
   check(read(memType.get(), buffer.data()), place, "cannot read text");
   for (std::size_t k = 0; k < count; ++k) {
