@@ -92,6 +92,12 @@ XdmfDataset describeDataset(hid_t parent, const std::string& name, const std::st
 }  // namespace
 
 struct FrameWriter::Impl {
+  // Metadata cache bounds before a reopen. The entry count is what matters: a chunked dataset's
+  // B-tree node holds ~100 kB in memory but counts ~1 kB in the cache's own size (measured with
+  // massif: ~260 kB of heap per frame of 7 datasets), so 512 entries keep the writer near 10 MB.
+  static constexpr std::size_t kMaxCacheBytes = 16u << 20;  // [bytes]
+  static constexpr int kMaxCacheEntries = 512;
+
   // The datasets of one group written in one frame, in registry order.
   struct GroupRecord {
     std::string name;
@@ -102,7 +108,6 @@ struct FrameWriter::Impl {
     std::vector<GroupRecord> groups;
   };
   struct Series {
-    Handle dataset;
     hsize_t rows = 0;
     std::vector<std::string> columns;  // including "time"
   };
@@ -133,6 +138,23 @@ struct FrameWriter::Impl {
   void flushFile() {
     check(H5Fflush(file.get(), H5F_SCOPE_LOCAL), root, "cannot flush to disk",
           "check free disk space");
+  }
+
+  // Call only with no object of the file open.
+  void boundCache() {
+    // With evictions off the metadata cache keeps every entry it ever loaded. Once it passes the
+    // bounds, close and reopen the file: everything is flushed, so this only empties the cache
+    // and bounds the writer's memory.
+    std::size_t maxSize = 0, minClean = 0, currentSize = 0;
+    int entries = 0;
+    check(H5Fget_mdc_size(file.get(), &maxSize, &minClean, &currentSize, &entries), root,
+          "cannot read the metadata cache size");
+    if (currentSize > kMaxCacheBytes || entries > kMaxCacheEntries) {
+      check(file.close(), root, "cannot close the frames file", "check free disk space");
+      Handle access = writerAccess(root);
+      file = checked(H5Fopen(h5Path.c_str(), H5F_ACC_RDWR, access.get()), root,
+                     "cannot reopen the frames file");
+    }
   }
 
   // Records each field's unit once under /metadata/units/<group>.
@@ -365,19 +387,19 @@ FrameWriter FrameWriter::resume(const std::filesystem::path& h5Path, std::int64_
   for (const std::string& name : hdf5::linkNames(series.get(), seriesPlace)) {
     const Place place = seriesPlace.at(name);
     Impl::Series table;
-    table.dataset = checked(H5Dopen2(series.get(), name.c_str(), H5P_DEFAULT), place,
-                            "cannot open series");
-    table.columns = hdf5::readStringArrayAttribute(table.dataset.get(), "columns", place);
-    const auto [rows, width] = hdf5::datasetShape(table.dataset.get(), place);
+    Handle dataset = checked(H5Dopen2(series.get(), name.c_str(), H5P_DEFAULT), place,
+                             "cannot open series");
+    table.columns = hdf5::readStringArrayAttribute(dataset.get(), "columns", place);
+    const auto [rows, width] = hdf5::datasetShape(dataset.get(), place);
     std::vector<double> values(rows * width);
     if (!values.empty())
-      check(H5Dread(table.dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+      check(H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
                     values.data()),
             place, "cannot read series");
     hsize_t keep = 0;
     while (keep < rows && values[keep * width] <= time) ++keep;
     const hsize_t dims[2] = {keep, width};
-    check(H5Dset_extent(table.dataset.get(), dims), place,
+    check(H5Dset_extent(dataset.get(), dims), place,
           "cannot remove rows written after the checkpoint");
     table.rows = keep;
     s.series.emplace(name, std::move(table));
@@ -399,8 +421,11 @@ void FrameWriter::writeStatic(const std::string& group, const sim::FieldRegistry
   Handle statics = hdf5::openGroup(s.file.get(), "static", s.root);
   Handle handle = hdf5::openOrCreateGroup(statics.get(), group, s.root.at("static"));
   Impl::GroupRecord record{group, s.writeFields(handle.get(), "/static/" + group, fields, nullptr)};
+  handle.close();
+  statics.close();
   s.recordUnits(group, fields);
   s.flushFile();
+  s.boundCache();
   s.statics.push_back(std::move(record));
   s.reformatAllFrames();
   s.rewriteXdmf();
@@ -453,7 +478,9 @@ std::size_t FrameWriter::writeFrame(double time, std::int64_t step,
     throw;
   }
   for (const auto& g : groups) s.recordUnits(g.name, *g.fields);
+  frames.close();
   s.flushFile();
+  s.boundCache();
 
   s.frameTexts.push_back(formatXdmfFrame(s.composeXdmf(record), s.h5FileName));
   s.frames.push_back(record.info);
@@ -482,9 +509,10 @@ void FrameWriter::appendSeries(const std::string& name, double time,
   columns.insert(columns.end(), columnNames.begin(), columnNames.end());
   const hsize_t width = columns.size();
 
+  Handle group = hdf5::openGroup(s.file.get(), "series", s.root);
+  Handle dataset;
   auto it = s.series.find(name);
   if (it == s.series.end()) {
-    Handle group = hdf5::openGroup(s.file.get(), "series", s.root);
     const hsize_t dims[2] = {0, width};
     const hsize_t maxDims[2] = {H5S_UNLIMITED, width};
     // 64 rows per chunk: a coverage table of a few dozen columns is a few KiB per chunk.
@@ -493,26 +521,29 @@ void FrameWriter::appendSeries(const std::string& name, double time,
     Handle creation = checked(H5Pcreate(H5P_DATASET_CREATE), place, "cannot create properties");
     check(H5Pset_chunk(creation.get(), 2, chunk), place, "cannot set chunking");
     Impl::Series series;
-    series.dataset = checked(H5Dcreate2(group.get(), name.c_str(), H5T_IEEE_F64LE, space.get(),
-                                        H5P_DEFAULT, creation.get(), H5P_DEFAULT),
-                             place, "cannot create the series table");
+    dataset = checked(H5Dcreate2(group.get(), name.c_str(), H5T_IEEE_F64LE, space.get(),
+                                 H5P_DEFAULT, creation.get(), H5P_DEFAULT),
+                      place, "cannot create the series table");
     std::vector<std::string> units{"s"};
     if (columnUnits.empty())
       units.resize(width, "");
     else
       units.insert(units.end(), columnUnits.begin(), columnUnits.end());
-    hdf5::writeAttribute(series.dataset.get(), "columns", columns, place);
-    hdf5::writeAttribute(series.dataset.get(), "units", units, place);
+    hdf5::writeAttribute(dataset.get(), "columns", columns, place);
+    hdf5::writeAttribute(dataset.get(), "units", units, place);
     series.columns = columns;
     it = s.series.emplace(name, std::move(series)).first;
   } else if (it->second.columns != columns) {
     throw IoError(place.file, place.object, "columns differ from the table's first row",
                   "append rows with the same column names every time");
+  } else {
+    dataset = checked(H5Dopen2(group.get(), name.c_str(), H5P_DEFAULT), place,
+                      "cannot open the series table");
   }
   Impl::Series& series = it->second;
   const hsize_t newDims[2] = {series.rows + 1, width};
-  check(H5Dset_extent(series.dataset.get(), newDims), place, "cannot extend the table");
-  Handle fileSpace = checked(H5Dget_space(series.dataset.get()), place, "cannot select row");
+  check(H5Dset_extent(dataset.get(), newDims), place, "cannot extend the table");
+  Handle fileSpace = checked(H5Dget_space(dataset.get()), place, "cannot select row");
   const hsize_t start[2] = {series.rows, 0};
   const hsize_t count[2] = {1, width};
   check(H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
@@ -520,11 +551,14 @@ void FrameWriter::appendSeries(const std::string& name, double time,
   Handle memorySpace = checked(H5Screate_simple(2, count, nullptr), place, "cannot select row");
   std::vector<double> row{time};
   row.insert(row.end(), values.begin(), values.end());
-  check(H5Dwrite(series.dataset.get(), H5T_NATIVE_DOUBLE, memorySpace.get(), fileSpace.get(),
+  check(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, memorySpace.get(), fileSpace.get(),
                  H5P_DEFAULT, row.data()),
         place, "cannot write row", "check free disk space");
   series.rows += 1;
+  dataset.close();
+  group.close();
   s.flushFile();
+  s.boundCache();
 }
 
 void FrameWriter::flush() {
