@@ -48,11 +48,11 @@ void appendDataItem(std::string& out, const XdmfDataset& dataset, const std::str
   // Plain appends: GCC 12 reports a false -Wrestrict on `" " + std::to_string(...)` here.
   out += indent;
   out += "<DataItem Dimensions=\"";
+  // Always "rows components", also for scalars (rows x 1): the exact shape of the HDF5 dataset,
+  // which XDMF readers compare with what they read.
   out += std::to_string(dataset.rows);
-  if (dataset.components != 1) {
-    out += ' ';
-    out += std::to_string(dataset.components);
-  }
+  out += ' ';
+  out += std::to_string(dataset.components);
   out += "\" NumberType=\"";
   out += dataset.kind == sim::ScalarKind::kReal ? "Float" : "Int";
   out += "\" Precision=\"";

@@ -125,13 +125,9 @@ TEST_CASE("the XDMF sidecar is well-formed and references only existing datasets
     sawFrameWallField |= path.find("/wall/wall_oil_fraction") != std::string::npos;
     const DatasetCheck found = inspect(file, path);
     REQUIRE(found.rows >= 0);  // the dataset exists
-    // Dimensions "rows" for scalars (stored rows x 1), "rows components" otherwise.
-    const std::string dims = e.attributes.at("Dimensions");
-    const std::string expectedDims = found.columns == 1
-                                         ? std::to_string(found.rows)
-                                         : std::to_string(found.rows) + " " +
-                                               std::to_string(found.columns);
-    CHECK(dims == expectedDims);
+    // Dimensions are the dataset's exact shape, "rows components" (scalars are rows x 1).
+    CHECK(e.attributes.at("Dimensions") ==
+          std::to_string(found.rows) + " " + std::to_string(found.columns));
     CHECK(e.attributes.at("NumberType") == (found.isInteger ? "Int" : "Float"));
     CHECK(e.attributes.at("Precision") == std::to_string(found.bytes));
   }
