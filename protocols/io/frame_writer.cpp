@@ -269,6 +269,13 @@ FrameWriter::FrameWriter(const std::filesystem::path& h5Path, const RunMetadata&
     throw IoError(s.root.file, "", "the file exists already",
                   "choose another output folder, delete the old run, or resume it");
 
+  // Checked before the file exists, so that bad metadata leaves nothing behind.
+  for (const auto& [key, value] : metadata.numbers)
+    if (metadata.strings.count(key) || key.empty())
+      throw IoError(s.root.file, "/metadata/run",
+                    "metadata key '" + key + "' is empty or given both as text and as number",
+                    "give each metadata key once, non-empty");
+
   Handle access = writerAccess(s.root);
   s.file = checked(H5Fcreate(h5Path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), s.root,
                    "cannot create the frames file",

@@ -280,6 +280,14 @@ TEST_CASE("bad use of frame files is reported with file and object", "[unit][io]
       CHECK_THAT(e.what(), Catch::Contains("cannot open as HDF5") && Catch::Contains("HDF5:"));
     }
   }
+  SECTION("a metadata key given twice") {
+    protocols::RunMetadata meta;
+    meta.strings["fill"] = "90 %";
+    meta.numbers["fill"] = 0.9;
+    CHECK_THROWS_WITH(FrameWriter(dir / "meta.h5", meta),
+                      Catch::Contains("'fill'") && Catch::Contains("both as text and as number"));
+    CHECK_FALSE(std::filesystem::exists(dir / "meta.h5"));
+  }
   SECTION("group names must be usable and unique") {
     FrameWriter writer(dir / "other.h5", {});
     CHECK_THROWS_WITH(writer.writeFrame(0, 0, {{"a/b", &fluid.fields}}),
