@@ -300,3 +300,18 @@ TEST_CASE("bad use of frame files is reported with file and object", "[unit][io]
     CHECK(writer.writeFrame(0, 0, {{"fluid", &fluid.fields}}) == 0);
   }
 }
+
+TEST_CASE("empty particle groups are written and read back as zero rows", "[unit][io]") {
+  // A scene without tissue still passes its (empty) tissue group: nothing may fail on zero rows.
+  iotest::TempDir dir;
+  sim::DynamicParticles tissue;
+  {
+    FrameWriter writer(dir / "frames.h5", {});
+    writer.writeFrame(0, 0, {{"tissue", &tissue.fields}});
+  }
+  FrameReader reader(dir / "frames.h5");
+  const auto x = reader.readField(0, "tissue", "position");
+  CHECK(x.rows == 0);
+  CHECK(x.components == 3);
+  CHECK(x.reals.empty());
+}
