@@ -1,0 +1,276 @@
+#include "protocols/io/checkpoint.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <set>
+
+#include "protocols/io/field_dataset.h"
+#include "protocols/io/frame_file_layout.h"
+#include "protocols/io/hdf5_support.h"
+
+namespace protocols {
+
+using hdf5::check;
+using hdf5::checked;
+using hdf5::Handle;
+using hdf5::Place;
+
+namespace {
+
+Handle checkpointAccess(const Place& place) {
+  Handle access = checked(H5Pcreate(H5P_FILE_ACCESS), place, "cannot create file properties");
+  // Checksummed v1.8 metadata: a damaged checkpoint is reported, not silently misread.
+  check(H5Pset_libver_bounds(access.get(), H5F_LIBVER_V18, H5F_LIBVER_V18), place,
+        "cannot select the HDF5 file format version");
+  check(H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG), place,
+        "cannot set the file close mode");
+  return access;
+}
+
+std::string joinNames(const std::vector<std::string>& names) {
+  std::string out;
+  for (const auto& n : names) out += (out.empty() ? "'" : ", '") + n + "'";
+  return out;
+}
+
+void requireValidName(const std::string& what, const std::string& name, const Place& place) {
+  if (name.empty() || name == "." || name.find('/') != std::string::npos)
+    throw IoError(place.file, place.object, what + " name '" + name + "' is not usable in HDF5",
+                  "use a non-empty name without '/'");
+}
+
+void writeContents(hid_t file, const CheckpointState& state, const Place& root) {
+  hdf5::writeAttribute(file, "format", std::string(layout::kCheckpointFormat), root);
+  hdf5::writeAttribute(file, "format_version", layout::kCheckpointFormatVersion, root);
+  hdf5::writeAttribute(file, "toolkit_version", std::string(TAMPONADE_VERSION), root);
+  hdf5::writeAttribute(file, "time", state.time, root);
+  hdf5::writeAttribute(file, "step", state.step, root);
+  hdf5::writeAttribute(file, "dt", state.dt, root);
+
+  Handle counters = hdf5::openOrCreateGroup(file, "counters", root);
+  const Place counterPlace = root.at("counters");
+  for (const auto& [name, value] : state.realCounters)
+    hdf5::writeAttribute(counters.get(), name, value, counterPlace);
+  for (const auto& [name, value] : state.integerCounters) {
+    if (state.realCounters.count(name))
+      throw IoError(root.file, counterPlace.object,
+                    "counter '" + name + "' is both a real and an integer counter",
+                    "give each counter one name");
+    hdf5::writeAttribute(counters.get(), name, value, counterPlace);
+  }
+
+  Handle blobs = hdf5::openOrCreateGroup(file, "blobs", root);
+  for (const auto& [name, bytes] : state.blobs) {
+    const Place place = root.at("blobs/" + name);
+    requireValidName("blob", name, root.at("blobs"));
+    const hsize_t size = bytes.size();
+    Handle space = checked(H5Screate_simple(1, &size, nullptr), place, "cannot create dataspace");
+    Handle dataset = checked(H5Dcreate2(blobs.get(), name.c_str(), H5T_STD_U8LE, space.get(),
+                                        H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                             place, "cannot create dataset");
+    if (size > 0)
+      check(H5Dwrite(dataset.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                     bytes.data()),
+            place, "cannot write dataset", "check free disk space");
+  }
+
+  Handle groups = hdf5::openOrCreateGroup(file, "groups", root);
+  const hdf5::FieldDatasetOptions exact{false, 0};  // float64, contiguous: bit-exact and fast
+  for (const auto& [name, registry] : state.groups) {
+    requireValidName("group", name, root.at("groups"));
+    if (!registry)
+      throw IoError(root.file, "/groups/" + name, "no field registry given",
+                    "pass &particles.fields");
+    Handle group = hdf5::openOrCreateGroup(groups.get(), name, root.at("groups"));
+    hdf5::writeAttribute(group.get(), "particles", static_cast<std::int64_t>(registry->size()),
+                         root.at("groups/" + name));
+    for (const auto& field : *registry)
+      if (field->info().checkpointed)
+        hdf5::writeFieldDataset(group.get(), *field, exact, root.at("groups/" + name));
+  }
+}
+
+}  // namespace
+
+void writeCheckpoint(const std::filesystem::path& path, const CheckpointState& state) {
+  hdf5::silenceErrorPrinting();
+  const std::string temporary = path.string() + ".tmp";
+  const Place root{temporary, "/"};
+  try {
+    {
+      Handle access = checkpointAccess(root);
+      // TRUNC replaces a stale .tmp that a killed writer may have left.
+      Handle file = checked(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT,
+                                      access.get()),
+                            root, "cannot create checkpoint",
+                            "check that the run folder exists and is writable");
+      writeContents(file.get(), state, root);
+      check(file.close(), root, "cannot close checkpoint", "check free disk space");
+    }
+    // Durable before visible: the new file's bytes reach the disk before the rename publishes
+    // it, and the folder is synced so the rename itself survives a power loss.
+    hdf5::fsyncPath(temporary, false);
+    if (std::rename(temporary.c_str(), path.c_str()) != 0)
+      throw IoError(path.string(), "", "cannot replace the previous checkpoint",
+                    "check that the run folder is writable");
+    const std::filesystem::path folder =
+        path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+    hdf5::fsyncPath(folder.string(), true);
+  } catch (...) {
+    std::remove(temporary.c_str());
+    throw;
+  }
+}
+
+namespace {
+
+struct StoredField {
+  sim::ScalarKind kind;
+  hsize_t rows;
+  hsize_t components;
+};
+
+StoredField describeStored(hid_t group, const std::string& name, const Place& groupPlace) {
+  const Place place = groupPlace.at(name);
+  Handle dataset = checked(H5Dopen2(group, name.c_str(), H5P_DEFAULT), place,
+                           "cannot open dataset");
+  Handle type = checked(H5Dget_type(dataset.get()), place, "cannot read dataset type");
+  const auto [rows, components] = hdf5::datasetShape(dataset.get(), place);
+  const bool isReal = H5Tget_class(type.get()) == H5T_FLOAT;
+  if (isReal && H5Tget_size(type.get()) != 8)
+    throw IoError(place.file, place.object, "stored with less than float64 precision",
+                  "checkpoints must be written by writeCheckpoint");
+  return {isReal ? sim::ScalarKind::kReal : sim::ScalarKind::kInt32, rows, components};
+}
+
+}  // namespace
+
+CheckpointState readCheckpoint(const std::filesystem::path& path,
+                               const std::map<std::string, sim::FieldRegistry*>& restoreInto) {
+  hdf5::silenceErrorPrinting();
+  const Place root{path.string(), "/"};
+  if (!std::filesystem::exists(path))
+    throw IoError(root.file, "", "no checkpoint at this path",
+                  "resume a run folder that holds a checkpoint.h5");
+  Handle access = checkpointAccess(root);
+  Handle file = checked(H5Fopen(path.c_str(), H5F_ACC_RDONLY, access.get()), root,
+                        "cannot open checkpoint", "the checkpoint is damaged or not HDF5");
+  if (!hdf5::hasAttribute(file.get(), "format", root) ||
+      hdf5::readStringAttribute(file.get(), "format", root) != layout::kCheckpointFormat)
+    throw IoError(root.file, "", "not a checkpoint of this toolkit (no format attribute)",
+                  "resume a run folder that holds a checkpoint.h5");
+  const std::int64_t version = hdf5::readInt64Attribute(file.get(), "format_version", root);
+  if (version != layout::kCheckpointFormatVersion)
+    throw IoError(root.file, "", "checkpoint format version " + std::to_string(version) +
+                                     " is not this toolkit's (" +
+                                     std::to_string(layout::kCheckpointFormatVersion) + ")",
+                  "resume with the toolkit version that wrote it");
+
+  CheckpointState state;
+  state.time = hdf5::readDoubleAttribute(file.get(), "time", root);
+  state.step = hdf5::readInt64Attribute(file.get(), "step", root);
+  state.dt = hdf5::readDoubleAttribute(file.get(), "dt", root);
+  state.groups = restoreInto;
+
+  Handle counters = hdf5::openGroup(file.get(), "counters", root);
+  const Place counterPlace = root.at("counters");
+  for (const std::string& name : hdf5::attributeNames(counters.get(), counterPlace)) {
+    Handle attribute = checked(H5Aopen(counters.get(), name.c_str(), H5P_DEFAULT), counterPlace,
+                               "cannot open counter '" + name + "'");
+    Handle type = checked(H5Aget_type(attribute.get()), counterPlace, "cannot read counter type");
+    if (H5Tget_class(type.get()) == H5T_INTEGER)
+      state.integerCounters[name] = hdf5::readInt64Attribute(counters.get(), name, counterPlace);
+    else
+      state.realCounters[name] = hdf5::readDoubleAttribute(counters.get(), name, counterPlace);
+  }
+
+  Handle blobs = hdf5::openGroup(file.get(), "blobs", root);
+  for (const std::string& name : hdf5::linkNames(blobs.get(), root.at("blobs"))) {
+    const Place place = root.at("blobs/" + name);
+    Handle dataset = checked(H5Dopen2(blobs.get(), name.c_str(), H5P_DEFAULT), place,
+                             "cannot open blob");
+    auto& bytes = state.blobs[name];
+    bytes.resize(hdf5::datasetShape(dataset.get(), place).first);
+    if (!bytes.empty())
+      check(H5Dread(dataset.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT,
+                    bytes.data()),
+            place, "cannot read blob");
+  }
+
+  // Validate every group and field before restoring anything: a mismatch leaves the registries
+  // untouched.
+  Handle groups = hdf5::openGroup(file.get(), "groups", root);
+  const Place groupsPlace = root.at("groups");
+  const std::vector<std::string> stored = hdf5::linkNames(groups.get(), groupsPlace);
+  std::vector<std::string> extraGroups;
+  for (const auto& name : stored)
+    if (!restoreInto.count(name)) extraGroups.push_back(name);
+  if (!extraGroups.empty())
+    throw IoError(root.file, "/groups",
+                  "holds particle group(s) " + joinNames(extraGroups) +
+                      " that this run does not have",
+                  "resume with the protocol that wrote the checkpoint");
+  std::vector<Handle> groupHandles;
+  for (const auto& [name, registry] : restoreInto) {
+    const Place place = groupsPlace.at(name);
+    if (!registry)
+      throw IoError(root.file, place.object, "no field registry given", "pass &particles.fields");
+    if (std::find(stored.begin(), stored.end(), name) == stored.end())
+      throw IoError(root.file, place.object, "particle group is not in the checkpoint",
+                    "resume with the protocol that wrote the checkpoint");
+    Handle group = hdf5::openGroup(groups.get(), name, groupsPlace);
+    const std::vector<std::string> storedFields = hdf5::linkNames(group.get(), place);
+    std::vector<std::string> missing;
+    std::vector<std::string> wanted;
+    for (const auto& field : *registry) {
+      if (!field->info().checkpointed) continue;
+      wanted.push_back(field->info().name);
+      if (std::find(storedFields.begin(), storedFields.end(), field->info().name) ==
+          storedFields.end())
+        missing.push_back(field->info().name);
+    }
+    if (!missing.empty())
+      throw IoError(root.file, place.object,
+                    "field(s) " + joinNames(missing) +
+                        " are checkpointed by this run but absent from the checkpoint",
+                    "the checkpoint was written with other effects active; resume with the "
+                    "protocol and toolkit version that wrote it, or start the run afresh");
+    std::vector<std::string> extra;
+    for (const auto& name2 : storedFields)
+      if (std::find(wanted.begin(), wanted.end(), name2) == wanted.end()) extra.push_back(name2);
+    if (!extra.empty())
+      throw IoError(root.file, place.object,
+                    "field(s) " + joinNames(extra) +
+                        " are in the checkpoint but this run does not checkpoint them",
+                    "resume with the protocol and toolkit version that wrote the checkpoint");
+    for (const auto& field : *registry) {
+      if (!field->info().checkpointed) continue;
+      const StoredField s = describeStored(group.get(), field->info().name, place);
+      const Place fieldPlace = place.at(field->info().name);
+      if (s.kind != field->kind() || s.components != static_cast<hsize_t>(field->components()))
+        throw IoError(root.file, fieldPlace.object,
+                      "stored as " + hdf5::elementName(s.kind, static_cast<int>(s.components)) +
+                          " but this run's field is " +
+                          hdf5::elementName(field->kind(), field->components()),
+                      "resume with the toolkit version that wrote the checkpoint");
+      if (s.rows != registry->size())
+        throw IoError(root.file, fieldPlace.object,
+                      "holds " + std::to_string(s.rows) + " particles but this run has " +
+                          std::to_string(registry->size()),
+                      "resume with the protocol (and accuracy) that wrote the checkpoint");
+    }
+    groupHandles.push_back(std::move(group));
+  }
+
+  std::size_t k = 0;
+  for (const auto& [name, registry] : restoreInto) {
+    const Place place = groupsPlace.at(name);
+    for (const auto& field : *registry)
+      if (field->info().checkpointed)
+        hdf5::restoreFieldDataset(groupHandles[k].get(), *field, place);
+    ++k;
+  }
+  return state;
+}
+
+}  // namespace protocols
