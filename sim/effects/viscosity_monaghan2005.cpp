@@ -13,8 +13,10 @@ Real ViscosityMonaghan2005::maxTimeStep(const World& world) const {
   Real nuMax = 0;
   for (const auto& m : world.materials) nuMax = std::max(nuMax, m.kinematicViscosity());
   if (nuMax <= 0) return std::numeric_limits<Real>::infinity();
-  const Real h = world.supportRadius();
-  return 0.125 * h * h / nuMax;
+  // Diffusion limit dt <= 0.125 d^2 / nu with the particle spacing d (the smoothing length of the
+  // classic bound, Morris et al. 1997), not the support radius 2d, which would be 4x too large.
+  const Real d = world.particleSpacing();
+  return 0.125 * d * d / nuMax;
 }
 
 void ViscosityMonaghan2005::apply(World& world, const StepContext&) {

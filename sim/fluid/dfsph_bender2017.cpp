@@ -73,6 +73,12 @@ Real DfsphBender2017::predictDensity(World& world, Real dt) {
          }) / n;
 }
 
+Real DfsphBender2017::maxCompression(const World& world) const {
+  return DeterministicReducer::max(predicted_.size(), [&](std::size_t i) {
+    return predicted_[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0;
+  });
+}
+
 Real DfsphBender2017::computeDensityRate(World& world) {
   auto& p = world.particles;
   const auto& walls = world.walls;
@@ -154,7 +160,7 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
          iteration < params_.maxDivergenceIterations) {
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
-      kappa_[i] = predicted_[i] * (*factor_)[i] / dt;
+      kappa_[i] = params_.relaxation * predicted_[i] * (*factor_)[i] / dt;
       warm[i] += kappa_[i] * dt;
     }
     applyPressureVelocity(world, kappa_, dt);
@@ -185,26 +191,35 @@ void DfsphBender2017::correctVelocities(World& world, const StepContext& context
 
   // Constant-density solve (Bender 2017, Algorithm 3).
   Real error = predictDensity(world, dt);
+  Real maxError = maxCompression(world);
   int iteration = 0;
-  while ((iteration < params_.minIterations || error > params_.densityTolerance) &&
+  // Stop when the mean compression is below the tolerance (Bender 2017) AND no particle is
+  // compressed by more than maxErrorFactor times it: the mean alone lets a few strongly
+  // compressed particles at corners keep their error, and they then leak through walls.
+  while ((iteration < params_.minIterations || error > params_.densityTolerance ||
+          maxError > params_.maxErrorFactor * params_.densityTolerance) &&
          iteration < params_.maxIterations) {
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
-      kappa_[i] = (predicted_[i] - world.restDensityOf(i)) * invDt2 * (*factor_)[i];
+      kappa_[i] = params_.relaxation * (predicted_[i] - world.restDensityOf(i)) * invDt2 * (*factor_)[i];
       warm[i] += kappa_[i] / invDt2;
     }
     applyPressureVelocity(world, kappa_, dt);
     error = predictDensity(world, dt);
+    maxError = maxCompression(world);
     ++iteration;
   }
   stats_.densityIterations = iteration;
   stats_.averageCompression = error;
-  stats_.maxCompression = DeterministicReducer::max(n, [&](std::size_t i) {
-    return predicted_[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0;
-  });
-  // Pressure p = kappa * rho (kappa is p/rho in Bender's notation), for output.
+  stats_.maxCompression = maxError;
+  // Pressure p = kappa * rho (kappa is p/rho in Bender's notation), for output. Both solves apply
+  // pressure impulses over a step (the divergence solve at its start with the last step's length,
+  // stored as kappa * dt), so the pressure that balances the body forces is their sum.
+  const Real lastDt = world.lastTimeStep > 0 ? world.lastTimeStep : dt;
+  const auto& warmDivergence = *kappaDivergence_;
 #pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) (*pressure_)[i] = warm[i] * invDt2 * p.density[i];
+  for (Index i = 0; i < n; ++i)
+    (*pressure_)[i] = (warm[i] * invDt2 + warmDivergence[i] / lastDt) * p.density[i];
 }
 
 }  // namespace sim

@@ -19,11 +19,17 @@ namespace sim {
 struct DfsphParameters {
   Real densityTolerance = 1e-3;     // [1] stop when mean compression (rho*/rho0 - 1) falls below
   Real divergenceTolerance = 1e-3;  // [1] stop when mean dt * (Drho/Dt)/rho0 falls below
+  Real maxErrorFactor = 10.0;       // [1] also iterate while max compression > factor * tolerance
   int minIterations = 2;
   int maxIterations = 100;
   int maxDivergenceIterations = 100;
   bool divergenceSolve = true;
   Real warmStartFactor = 0.5;       // [1] fraction of last step's pressure applied first
+  // [1] Jacobi relaxation of each pressure update. The local update with the full factor
+  // (omega = 1, Bender's choice) barely damps the checkerboard mode of the pressure field: the
+  // residual left when the average-error criterion stops the iteration is particle-scale
+  // velocity noise that makes a fluid at rest jitter near walls (docs/solvers.md).
+  Real relaxation = 1.0;
   Index minNeighborsForDivergence = 20;  // fewer: free-surface particle, skipped (Bender 2017)
 };
 
@@ -41,6 +47,7 @@ class DfsphBender2017 final : public PressureSolver {
   // Predicted density rho* (densityOnly) or density rate Drho/Dt; returns the mean error measure.
   Real predictDensity(World& world, Real dt);
   Real computeDensityRate(World& world);
+  Real maxCompression(const World& world) const;  // of the current prediction
 
   DfsphParameters params_;
   std::vector<Real>* factor_ = nullptr;       // alpha_i [kg s^2... see header] (not checkpointed)

@@ -4,6 +4,7 @@
 
 #include "sim/effects/gravity.h"
 #include "sim/effects/viscosity_monaghan2005.h"
+#include "sim/effects/xsph_monaghan1989.h"
 
 namespace sim {
 
@@ -43,6 +44,18 @@ const std::vector<EffectEntry>& effectRegistry() {
        },
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<ViscosityMonaghan2005>(o.wallFriction);
+       }},
+      {"velocity_smoothing", "XSPH velocity smoothing (Monaghan 1989), numerical damping",
+       [](const World&, const PipelineOptions& o) {
+         const bool on = o.velocitySmoothing > 0 && o.solver != "wcsph";
+         return StageDecision{
+             "velocity_smoothing", on, false,
+             on ? "incompressible solver: damps particle-scale noise physical viscosity cannot"
+                : (o.solver == "wcsph" ? "WCSPH carries its own artificial viscosity"
+                                       : "velocity smoothing set to 0")};
+       },
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<XsphMonaghan1989>(o.velocitySmoothing);
        }},
   };
   return entries;

@@ -26,6 +26,7 @@ struct PipelineOptions {
   DfsphParameters dfsph;
   WcsphParameters wcsph;
   bool wallFriction = true;              // no-slip viscous walls
+  Real velocitySmoothing = 0.05;         // [1] XSPH strength for incompressible solvers (0 = off)
   std::map<std::string, Force> forced;   // effect name -> forced on/off
 };
 

@@ -32,7 +32,10 @@ HydrostaticResult runTank(const PipelineOptions& options, Real settleTime) {
 
   const auto& pressure = w.particles.fields.get<Real>("pressure");
   const Real rho = 1000.0, g = 9.81;
-  const Real H = height;  // the fluid column's top face
+  // Free-surface height: the settled column's top particle layer plus half a spacing.
+  Real top = 0;
+  for (const Vec3& x : w.particles.x) top = std::max(top, x.y());
+  const Real H = top + 0.5 * d;
   Real sum = 0, maxErr = 0;
   int count = 0;
   for (Index i = 0; i < w.particles.size(); ++i) {
