@@ -18,10 +18,12 @@
 #include "tools/commands.h"
 
 namespace tools {
+int runMeshGenerate(Args args);
 namespace {
 
 constexpr const char* kMeshUsage =
     "usage: tamponade mesh check FILE [--units mm|m] [--max-hole-edges N]\n"
+    "       tamponade mesh generate --type emmetropic|myopic|staphyloma --out FILE  (see --help)\n"
     "       tamponade mesh sample FILE --spacing LENGTH [--units mm|m] [--out points.ply]\n\n"
     "check   reads a mesh (STL, OBJ, PLY, OFF, ...), reports what is wrong and what was repaired,\n"
     "        area, volume, size and units. Exit 0 if usable (as is or repaired), 2 if refused.\n"
@@ -182,6 +184,7 @@ int runMesh(Args args) {
     return 2;
   }
   const std::string_view sub = args[0];
+  if (sub == "generate") return runMeshGenerate(args.subspan(1));  // tools/cmd_mesh_generate.cpp
   for (const std::string_view a : args)
     if (a == "--help" || a == "-h") {
       std::fputs(kMeshUsage, stdout);
@@ -190,7 +193,7 @@ int runMesh(Args args) {
   try {
     if (sub == "check") return runCheck(parseOptions(args.subspan(1), false));
     if (sub == "sample") return runSample(parseOptions(args.subspan(1), true));
-    throw UsageError("unknown mesh command '" + std::string(sub) + "' (use check or sample)");
+    throw UsageError("unknown mesh command '" + std::string(sub) + "' (use check, sample or generate)");
   } catch (const UsageError& e) {
     std::fprintf(stderr, "tamponade mesh: %s\n\n%s", e.what(), kMeshUsage);
     return 2;

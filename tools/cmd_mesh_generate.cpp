@@ -1,4 +1,4 @@
-// `tamponade mesh-generate`: writes a parametric vitreous cavity (anatomy/vitreous_cavity.h) as a
+// `tamponade mesh generate`: writes a parametric vitreous cavity (anatomy/vitreous_cavity.h) as a
 // mesh file and prints its axial length, volume, area and watertightness. Bad options or
 // parameters: exit code 2; a file that cannot be written: exit code 1.
 #include <cstdio>
@@ -18,7 +18,7 @@ namespace tools {
 namespace {
 
 constexpr const char* kHelp =
-    "usage: tamponade mesh-generate --type emmetropic|myopic|staphyloma --out FILE.stl|.obj|.ply\n"
+    "usage: tamponade mesh generate --type emmetropic|myopic|staphyloma --out FILE.stl|.obj|.ply\n"
     "                               [--axial-length L] [--staphyloma-depth D]\n"
     "                               [--staphyloma-width W] [--lens-depth L] [--cap-sag S]\n"
     "                               [--resolution N] [--units mm|m]\n"
@@ -115,7 +115,7 @@ int runMeshGenerate(Args args) {
     if (type != "staphyloma" && (depth || width))
       throw UsageError("--staphyloma-depth/--staphyloma-width apply only to --type staphyloma");
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "tamponade mesh-generate: %s\n\n%s", e.what(), kHelp);
+    std::fprintf(stderr, "tamponade mesh generate: %s\n\n%s", e.what(), kHelp);
     return 2;
   }
 
@@ -146,13 +146,13 @@ int runMeshGenerate(Args args) {
       cavity = anatomy::makeStaphylomaCavity(p);
     } else {
       std::fprintf(stderr,
-                   "tamponade mesh-generate: unknown --type '%s' (emmetropic, myopic or "
+                   "tamponade mesh generate: unknown --type '%s' (emmetropic, myopic or "
                    "staphyloma)\n",
                    type.c_str());
       return 2;
     }
   } catch (const anatomy::AnatomyError& e) {
-    std::fprintf(stderr, "tamponade mesh-generate: %s\n", e.what());
+    std::fprintf(stderr, "tamponade mesh generate: %s\n", e.what());
     return 2;
   }
 
@@ -160,7 +160,7 @@ int runMeshGenerate(Args args) {
   try {
     meshing::writeMesh(cavity->mesh, out, fileScale);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "tamponade mesh-generate: %s\n", e.what());
+    std::fprintf(stderr, "tamponade mesh generate: %s\n", e.what());
     return 1;
   }
   const auto& g = cavity->shape.geometry();

@@ -10,7 +10,6 @@
 #include "tools/commands.h"
 
 namespace tools {
-int runMeshGenerate(Args args);  // cmd_mesh_generate.cpp
 int runValidate(Args args);  // tools/cmd_validate.cpp
 int runVersion(Args) {
   std::printf("tamponade %s\n", TAMPONADE_VERSION);
@@ -23,8 +22,7 @@ namespace {
 
 constexpr std::array kCommands = {
     tools::Command{"version", "print the version", tools::runVersion},
-    tools::Command{"mesh", "check, repair and sample eye meshes", tools::runMesh},
-    tools::Command{"mesh-generate", "write a parametric vitreous cavity mesh", tools::runMeshGenerate},
+    tools::Command{"mesh", "check, repair, sample and generate eye meshes", tools::runMesh},
     tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
 };
 

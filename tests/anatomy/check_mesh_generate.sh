@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `tamponade mesh-generate`: good runs exit 0 and report a watertight cavity; bad input exits 2
+# `tamponade mesh generate`: good runs exit 0 and report a watertight cavity; bad input exits 2
 # with a message naming the problem; an unwritable file exits 1.
 # usage: check_mesh_generate.sh <tamponade executable> <scratch directory>
 set -u
@@ -9,9 +9,9 @@ mkdir -p "$dir"
 status=0
 expect() {  # expect <exit code> <text in output> <args...>
   local code=$1 text=$2; shift 2
-  local out; out=$("$exe" mesh-generate "$@" 2>&1); local rc=$?
+  local out; out=$("$exe" mesh generate "$@" 2>&1); local rc=$?
   if [ "$rc" -ne "$code" ] || ! grep -qF -- "$text" <<<"$out"; then
-    echo "FAIL: mesh-generate $* -> exit $rc (want $code), output lacks '$text':"; echo "$out"
+    echo "FAIL: mesh generate $* -> exit $rc (want $code), output lacks '$text':"; echo "$out"
     status=1
   fi
 }
@@ -19,7 +19,7 @@ expect 0 "watertight      yes" --type emmetropic --resolution 32 --out "$dir/e.s
 expect 0 "axial length    28.00 mm" --type myopic --axial-length 28mm --resolution 32 --out "$dir/m.obj"
 expect 0 "staphyloma      depth 2.00 mm, width 8.00 mm" --type staphyloma --axial-length 29mm \
   --staphyloma-depth 2mm --staphyloma-width 8mm --resolution 32 --out "$dir/s.ply"
-expect 0 "usage: tamponade mesh-generate" --help
+expect 0 "usage: tamponade mesh generate" --help
 expect 2 "--axial-length 28 needs a unit" --type myopic --axial-length 28 --out "$dir/x.stl"
 expect 2 "myopic axial length 40.00 mm is out of range" --type myopic --axial-length 40mm --out "$dir/x.stl"
 expect 2 "folds its edge" --type staphyloma --staphyloma-depth 5mm --staphyloma-width 6mm --out "$dir/x.stl"
@@ -30,5 +30,5 @@ expect 2 "--out FILE is required" --type myopic
 expect 2 "must end in .stl, .obj or .ply" --type myopic --out "$dir/x.vtk"
 expect 2 "resolution 2 is out of range" --type myopic --resolution 2 --out "$dir/x.stl"
 expect 1 "cannot open for writing" --type myopic --resolution 16 --out /nonexistent-dir/x.stl
-[ $status -eq 0 ] && echo "mesh-generate checks ok"
+[ $status -eq 0 ] && echo "mesh generate checks ok"
 exit $status
