@@ -15,12 +15,14 @@ int runVersion(Args) {
   std::printf("tamponade %s\n", TAMPONADE_VERSION);
   return 0;
 }
-int runMesh(Args args);  // tools/cmd_mesh.cpp
+int runMesh(Args args);
+int runDemo(Args args);  // tools/cmd_demo.cpp  // tools/cmd_mesh.cpp
 }  // namespace tools
 
 namespace {
 
 constexpr std::array kCommands = {
+    tools::Command{"demo", "run the built-in dam-break scene, write HDF5 + XDMF frames", tools::runDemo},
     tools::Command{"version", "print the version", tools::runVersion},
     tools::Command{"mesh", "check, repair, sample and generate eye meshes", tools::runMesh},
     tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},

@@ -3,4 +3,4 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash tools/build.sh
-./build/tools/tamponade demo dam-break --out runs/dam-break
+./build/tools/tamponade demo --out runs/dam-break --force
