@@ -74,6 +74,22 @@ void World::updateNeighbors() {
     updatesSinceSort_ = 0;
   }
   search_->update(particles.x);
+  computeKernelGradients();
+}
+
+void World::computeKernelGradients() {
+  const NeighborList& nf = search_->dynamicDynamic();
+  const NeighborList& nw = search_->dynamicStatic();
+  fluidGradW_.resize(nf.indices.size());
+  wallGradW_.resize(nw.indices.size());
+  const Index n = static_cast<Index>(particles.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
+      fluidGradW_[k] = kernel.gradW(particles.x[i] - particles.x[nf.indices[k]]);
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+      wallGradW_[k] = kernel.gradW(particles.x[i] - walls.x[nw.indices[k]]);
+  }
 }
 
 }  // namespace sim

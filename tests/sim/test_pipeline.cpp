@@ -1,0 +1,104 @@
+// The World and the effect pipeline: cached kernel gradients equal the kernel's, Z-order sorting
+// keeps every registered field with its particle, the pipeline holds only the stages a scene
+// calls for (and allocates only their fields), forcing works, unknown names are errors.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <map>
+
+#include "scene_fixtures.h"
+
+using namespace sim;
+
+namespace {
+
+testing::Tank smallTank() { return testing::hydrostaticTank(0.03, 0.03, 0.005); }
+
+}  // namespace
+
+TEST_CASE("cached kernel gradients equal the kernel's gradient of each pair", "[unit][world]") {
+  auto tank = smallTank();
+  World& w = *tank.world;
+  const auto& nf = w.fluidNeighbors();
+  const auto& nw = w.wallNeighbors();
+  REQUIRE(nf.totalPairs() > 0);
+  REQUIRE(nw.totalPairs() > 0);
+  for (Index i = 0; i < w.particles.size(); ++i) {
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
+      REQUIRE(w.fluidGradients()[k] == w.kernel.gradW(w.particles.x[i] - w.particles.x[nf.indices[k]]));
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+      REQUIRE(w.wallGradients()[k] == w.kernel.gradW(w.particles.x[i] - w.walls.x[nw.indices[k]]));
+  }
+}
+
+TEST_CASE("Z-order sorting keeps every field with its particle", "[unit][world]") {
+  auto tank = smallTank();
+  World& w = *tank.world;
+  auto& tagField = w.particles.fields.add<Real>({"test_tag", "1", true, false});
+  std::map<int, std::pair<Vec3, Real>> byId;
+  for (Index i = 0; i < w.particles.size(); ++i) {
+    tagField[i] = 1000.0 + w.particles.id[i];
+    byId[w.particles.id[i]] = {w.particles.x[i], tagField[i]};
+  }
+  // Scramble the order, then let the periodic sort restore locality.
+  std::vector<Index> reverse(w.particles.size());
+  for (Index k = 0; k < reverse.size(); ++k) reverse[k] = static_cast<Index>(reverse.size() - 1 - k);
+  w.particles.fields.permute(reverse);
+  for (int k = 0; k < w.parameters().zSortInterval; ++k) w.updateNeighbors();
+  for (Index i = 0; i < w.particles.size(); ++i) {
+    const auto& expected = byId.at(w.particles.id[i]);
+    REQUIRE(w.particles.x[i] == expected.first);
+    REQUIRE(tagField[i] == expected.second);
+  }
+}
+
+TEST_CASE("the pipeline holds only the stages the scene calls for", "[unit][pipeline]") {
+  auto tank = smallTank();
+  World& w = *tank.world;
+  const std::size_t fieldsBefore = w.particles.fields.fieldCount();
+
+  SECTION("water with gravity: gravity, viscosity and velocity smoothing, nothing else") {
+    Pipeline p = assemblePipeline(w, PipelineOptions{});
+    CHECK(p.hasStage("gravity"));
+    CHECK(p.hasStage("viscosity"));
+    CHECK(p.hasStage("velocity_smoothing"));
+    CHECK(p.solver().name() == "dfsph");
+    CHECK(p.effects().size() == 3);
+    p.attach(w);
+    // DFSPH's own fields only: factor, pressure, two warm-start stiffnesses.
+    CHECK(w.particles.fields.fieldCount() == fieldsBefore + 4);
+    CHECK(p.describe().find("gravity is non-zero") != std::string::npos);
+  }
+  SECTION("an inviscid fluid without gravity has no viscosity or gravity stage") {
+    w.gravity = Vec3::Zero();
+    MaterialTable inviscid;
+    Material m = testing::water();
+    m.dynamicViscosity = 0;
+    inviscid.add(m);
+    w.materials = inviscid;
+    PipelineOptions o;
+    o.velocitySmoothing = 0;
+    Pipeline p = assemblePipeline(w, o);
+    CHECK(p.effects().empty());
+    CHECK_FALSE(p.hasStage("viscosity"));
+  }
+  SECTION("a protocol can force an effect off or on, and the decision says so") {
+    PipelineOptions o;
+    o.forced["viscosity"] = Force::kOff;
+    Pipeline p = assemblePipeline(w, o);
+    CHECK_FALSE(p.hasStage("viscosity"));
+    const auto it = std::find_if(p.decisions().begin(), p.decisions().end(),
+                                 [](const StageDecision& d) { return d.name == "viscosity"; });
+    REQUIRE(it != p.decisions().end());
+    CHECK(it->forced);
+    CHECK(it->reason.find("forced off") != std::string::npos);
+  }
+  SECTION("unknown solver and effect names are errors that list the known ones") {
+    PipelineOptions o;
+    o.solver = "sph-magic";
+    CHECK_THROWS_WITH(assemblePipeline(w, o), Catch::Contains("known: dfsph, wcsph"));
+    PipelineOptions f;
+    f.forced["surface_tensionn"] = Force::kOn;
+    CHECK_THROWS_WITH(assemblePipeline(w, f), Catch::Contains("unknown effect"));
+  }
+}
