@@ -6,6 +6,7 @@
 // 1 run failure (e.g. an unstable run or an unwritable output folder).
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -140,9 +141,9 @@ BenchResult runOne(const std::string& solver, long targetParticles, double simTi
     divIterations += pipeline.solver().stats().divergenceIterations;
     if (world.time >= nextReport * simTime) {
       const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::fprintf(stderr, "  %3.0f %%  t = %.4f s  steps %ld  wall %.1f s\n", 100 * nextReport,
-                   world.time, world.stepCount, wall);
-      nextReport += 0.1;
+      std::fprintf(stderr, "  %3.0f %%  t = %.4f s  steps %ld  wall %.1f s\n",
+                   100 * std::min(1.0, world.time / simTime), world.time, world.stepCount, wall);
+      while (nextReport <= world.time / simTime) nextReport += 0.1;  // one line per 10 %
     }
   }
   r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
