@@ -147,9 +147,10 @@ TEST_CASE("dam break surge front matches Martin & Moyce 1952 (DFSPH)", "[validat
 
 namespace {
 
-// Positions after 60 steps of a coarse dam break (d = a/8: walls, free surface, Z-order sorts
-// every 16 steps), indexed by particle id so the comparison does not depend on the sort; the
-// second element is the initial positions (to check that the run did something).
+// Positions after 24 steps of a coarse dam break (d = a/8: walls, free surface, Z-order sorts
+// every 16 steps, so one re-sort in the run), indexed by particle id so the comparison does not
+// depend on the sort; the second element is the initial positions (to check that the run did
+// something).
 std::pair<std::vector<Vec3>, std::vector<Vec3>> coarseRun(const std::string& solver, int threads) {
   const int previous = omp_get_max_threads();
   omp_set_num_threads(threads);
@@ -160,7 +161,7 @@ std::pair<std::vector<Vec3>, std::vector<Vec3>> coarseRun(const std::string& sol
   const std::vector<Vec3> initial = scene.world->particles.x;  // ids are creation indices
   Pipeline pipeline = assemblePipeline(*scene.world, scene.options);
   pipeline.attach(*scene.world);
-  for (int s = 0; s < 60; ++s) pipeline.step(*scene.world);
+  for (int s = 0; s < 24; ++s) pipeline.step(*scene.world);
   omp_set_num_threads(previous);
   const auto& p = scene.world->particles;
   std::vector<Vec3> byId(p.size());
@@ -172,16 +173,18 @@ std::pair<std::vector<Vec3>, std::vector<Vec3>> coarseRun(const std::string& sol
 
 TEST_CASE("identical runs are bit-identical, also across thread counts", "[unit][determinism]") {
   for (const std::string solver : {"wcsph", "dfsph"}) {
-    const auto [first, initial] = coarseRun(solver, 2);
-    const auto second = coarseRun(solver, 2).first;
-    const auto single = coarseRun(solver, 1).first;
+    // One 2-thread run only: on an oversubscribed CI machine each 2-thread run costs seconds of
+    // OpenMP barrier waits, and repeatability plus 1-vs-2-thread equality already pins it down.
+    const auto [single, initial] = coarseRun(solver, 1);
+    const auto second = coarseRun(solver, 1).first;
+    const auto first = coarseRun(solver, 2).first;
     REQUIRE(first.size() == second.size());
     REQUIRE(first.size() == single.size());
     std::size_t sameRepeat = 0, sameThreads = 0, moved = 0;
     for (std::size_t i = 0; i < first.size(); ++i) {
-      sameRepeat += first[i] == second[i];  // exact comparison on purpose: bit-identical
+      sameRepeat += single[i] == second[i];  // exact comparison on purpose: bit-identical
       sameThreads += first[i] == single[i];
-      moved += first[i] != initial[i];
+      moved += single[i] != initial[i];
     }
     INFO(solver);
     CHECK(sameRepeat == first.size());
