@@ -17,6 +17,8 @@ int runVersion(Args) {
 }
 int runMesh(Args args);
 int runDemo(Args args);  // tools/cmd_demo.cpp  // tools/cmd_mesh.cpp
+int runMesh(Args args);  // tools/cmd_mesh.cpp
+int runBench(Args args);  // tools/cmd_bench.cpp
 }  // namespace tools
 
 namespace {
@@ -26,6 +28,7 @@ constexpr std::array kCommands = {
     tools::Command{"version", "print the version", tools::runVersion},
     tools::Command{"mesh", "check, repair, sample and generate eye meshes", tools::runMesh},
     tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
+    tools::Command{"bench", "benchmark the engine (bench engine: dam break, both solvers)", tools::runBench},
 };
 
 void printUsage(std::FILE* out) {

@@ -1,0 +1,234 @@
+// `tamponade bench engine`: the engine benchmark of issue 2. Runs the 3D dam break (column a x 2a
+// x a, sim/scenes/dam_break.h) at the requested particle counts for a fixed simulated time with
+// each solver and writes bench_engine.csv and bench_engine.md: particles, steps, mean dt, mean
+// solver iterations, wall time per step, particle-steps per second, time per pipeline stage.
+// Not a test: numbers depend on the machine and its load. Exit codes: 0 ok, 2 bad usage,
+// 1 run failure (e.g. an unstable run or an unwritable output folder).
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "sim/core/error.h"
+#include "sim/scenes/dam_break.h"
+#include "tools/commands.h"
+
+namespace tools {
+namespace {
+
+constexpr const char* kBenchUsage =
+    "usage: tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
+    "                              [--solvers dfsph,wcsph] [--out DIR]\n\n"
+    "Runs the 3D dam break (water column a x 2a x a, a = 0.1 m, in a 4a long tank) with about\n"
+    "the given numbers of particles for a fixed simulated time (default 0.05 s) with each solver,\n"
+    "and writes DIR/bench_engine.csv and DIR/bench_engine.md (default DIR: .). Prints progress.\n"
+    "Threads: OMP_NUM_THREADS. On a shared machine set OMP_WAIT_POLICY=passive.\n";
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct BenchOptions {
+  std::vector<long> particles{30000, 100000};
+  double time = 0.05;  // [s] simulated
+  std::vector<std::string> solvers{"dfsph", "wcsph"};
+  std::string out = ".";
+};
+
+std::vector<std::string> splitList(std::string_view text) {
+  std::vector<std::string> items;
+  std::stringstream in{std::string(text)};
+  std::string item;
+  while (std::getline(in, item, ','))
+    if (!item.empty()) items.push_back(item);
+  return items;
+}
+
+double parsePositive(const std::string& text, const char* option) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used != text.size() || !(value > 0) || !std::isfinite(value))
+    throw UsageError(std::string(option) + " '" + text + "' must be a positive number");
+  return value;
+}
+
+BenchOptions parseBenchOptions(Args args) {
+  BenchOptions o;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const std::string_view flag = args[k];
+    if (k + 1 >= args.size()) throw UsageError("option " + std::string(flag) + " needs a value");
+    const std::string value(args[++k]);
+    if (flag == "--particles") {
+      o.particles.clear();
+      for (const std::string& item : splitList(value)) {
+        const double n = parsePositive(item, "--particles");
+        if (n < 1000 || n > 5e7)
+          throw UsageError("--particles '" + item + "' must be between 1000 and 5e7");
+        o.particles.push_back(std::lround(n));
+      }
+      if (o.particles.empty()) throw UsageError("--particles needs at least one count");
+    } else if (flag == "--time") {
+      o.time = parsePositive(value, "--time");
+    } else if (flag == "--solvers") {
+      o.solvers = splitList(value);
+      if (o.solvers.empty()) throw UsageError("--solvers needs at least one solver name");
+      for (const std::string& s : o.solvers) {
+        bool known = false;
+        for (const auto& entry : sim::solverRegistry()) known = known || entry.name == s;
+        if (!known) throw UsageError("--solvers: unknown solver '" + s + "'");
+      }
+    } else if (flag == "--out") {
+      o.out = value;
+    } else {
+      throw UsageError("unknown option '" + std::string(flag) + "'");
+    }
+  }
+  return o;
+}
+
+struct BenchResult {
+  std::string solver;
+  long particles = 0;
+  long steps = 0;
+  long rejected = 0;
+  double simulatedTime = 0;      // [s]
+  double meanDt = 0;             // [s]
+  double meanIterations = 0;     // density-solve iterations per step
+  double meanDivIterations = 0;  // divergence-solve iterations per step
+  double wallSeconds = 0;        // [s] the time loop only (no scene set-up)
+  std::vector<sim::StageTimers::Entry> stages;
+};
+
+BenchResult runOne(const std::string& solver, long targetParticles, double simTime) {
+  sim::DamBreakSpec spec;
+  spec.columnWidth = 0.1;  // [m]
+  spec.heightRatio = 2.0;
+  spec.depth = spec.columnWidth;
+  spec.solver = solver;
+  // The column holds 2 (a/d)^3 particles.
+  const long cells = std::lround(std::cbrt(static_cast<double>(targetParticles) / 2.0));
+  spec.spacing = spec.columnWidth / static_cast<double>(cells);
+  sim::DamBreakScene scene = sim::buildDamBreak(spec);
+  sim::World& world = *scene.world;
+  sim::Pipeline pipeline = sim::assemblePipeline(world, scene.options);
+  pipeline.attach(world);
+
+  BenchResult r;
+  r.solver = solver;
+  r.particles = static_cast<long>(world.particles.size());
+  std::fprintf(stderr, "bench %s: %ld particles (d = %.3g mm), %.3g s simulated\n", solver.c_str(),
+               r.particles, spec.spacing * 1e3, simTime);
+  long iterations = 0, divIterations = 0;
+  double nextReport = 0.1;
+  const auto start = std::chrono::steady_clock::now();
+  while (world.time < simTime) {
+    pipeline.step(world);
+    iterations += pipeline.solver().stats().densityIterations;
+    divIterations += pipeline.solver().stats().divergenceIterations;
+    if (world.time >= nextReport * simTime) {
+      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      std::fprintf(stderr, "  %3.0f %%  t = %.4f s  steps %ld  wall %.1f s\n",
+                   100 * std::min(1.0, world.time / simTime), world.time, world.stepCount, wall);
+      while (nextReport <= world.time / simTime) nextReport += 0.1;  // one line per 10 %
+    }
+  }
+  r.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.steps = world.stepCount;
+  r.rejected = pipeline.rejectedSteps();
+  r.simulatedTime = world.time;
+  r.meanDt = world.time / static_cast<double>(r.steps);
+  r.meanIterations = static_cast<double>(iterations) / static_cast<double>(r.steps);
+  r.meanDivIterations = static_cast<double>(divIterations) / static_cast<double>(r.steps);
+  r.stages = pipeline.timers().entries();
+  return r;
+}
+
+void writeReports(const std::vector<BenchResult>& results, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  // Stage names differ per solver ("dfsph.solve", "wcsph.solve"): the CSV lists them in one
+  // column as name=seconds pairs so the table stays rectangular.
+  const std::string csvPath = dir + "/bench_engine.csv";
+  std::ofstream csv(csvPath);
+  if (!csv) throw std::runtime_error("cannot write " + csvPath);
+  csv << "solver,particles,steps,rejected_steps,simulated_time_s,mean_dt_s,mean_density_iterations,"
+         "mean_divergence_iterations,wall_s,wall_per_step_ms,particle_steps_per_s,threads,stage_seconds\n";
+  const int threads = omp_get_max_threads();
+  for (const BenchResult& r : results) {
+    csv << r.solver << ',' << r.particles << ',' << r.steps << ',' << r.rejected << ','
+        << r.simulatedTime << ',' << r.meanDt << ',' << r.meanIterations << ','
+        << r.meanDivIterations << ',' << r.wallSeconds << ','
+        << 1e3 * r.wallSeconds / static_cast<double>(r.steps) << ','
+        << static_cast<double>(r.particles) * static_cast<double>(r.steps) / r.wallSeconds << ','
+        << threads << ',';
+    for (std::size_t k = 0; k < r.stages.size(); ++k)
+      csv << (k ? ";" : "") << r.stages[k].name << '=' << r.stages[k].seconds;
+    csv << '\n';
+  }
+  const std::string mdPath = dir + "/bench_engine.md";
+  std::ofstream md(mdPath);
+  if (!md) throw std::runtime_error("cannot write " + mdPath);
+  char line[512];
+  md << "| solver | particles | steps (rejected) | mean dt [s] | iterations/step (density + divergence) "
+        "| wall/step [ms] | particle-steps/s |\n|---|---|---|---|---|---|---|\n";
+  for (const BenchResult& r : results) {
+    std::snprintf(line, sizeof line, "| %s | %ld | %ld (%ld) | %.3g | %.1f + %.1f | %.2f | %.3g |\n",
+                  r.solver.c_str(), r.particles, r.steps, r.rejected, r.meanDt, r.meanIterations,
+                  r.meanDivIterations, 1e3 * r.wallSeconds / static_cast<double>(r.steps),
+                  static_cast<double>(r.particles) * static_cast<double>(r.steps) / r.wallSeconds);
+    md << line;
+  }
+  md << "\nTime per stage, % of the time loop (" << threads << " OpenMP threads; no output is "
+        "written during the benchmark):\n\n";
+  for (const BenchResult& r : results) {
+    md << "- " << r.solver << ", " << r.particles << " particles:";
+    for (const auto& e : r.stages) {
+      std::snprintf(line, sizeof line, " %s %.1f %%", e.name.c_str(), 100 * e.seconds / r.wallSeconds);
+      md << line << (&e == &r.stages.back() ? "" : ",");
+    }
+    md << '\n';
+  }
+  std::printf("wrote %s and %s\n", csvPath.c_str(), mdPath.c_str());
+}
+
+}  // namespace
+
+int runBench(Args args) {
+  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
+    std::fputs(kBenchUsage, stdout);
+    return 0;
+  }
+  if (args.empty() || args[0] != "engine") {
+    std::fputs(kBenchUsage, stderr);
+    return 2;
+  }
+  BenchOptions options;
+  try {
+    options = parseBenchOptions(args.subspan(1));
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "tamponade bench: %s\n\n%s", e.what(), kBenchUsage);
+    return 2;
+  }
+  std::vector<BenchResult> results;
+  for (long n : options.particles)
+    for (const std::string& solver : options.solvers) results.push_back(runOne(solver, n, options.time));
+  writeReports(results, options.out);
+  std::ifstream md(options.out + "/bench_engine.md");
+  std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
+  return 0;
+}
+
+}  // namespace tools
