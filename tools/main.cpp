@@ -17,6 +17,7 @@ int runVersion(Args) {
   return 0;
 }
 int runMesh(Args args);  // tools/cmd_mesh.cpp
+int runPlan(Args args);  // tools/cmd_plan.cpp
 }  // namespace tools
 
 namespace {
@@ -26,6 +27,7 @@ constexpr std::array kCommands = {
     tools::Command{"mesh", "check, repair and sample eye meshes", tools::runMesh},
     tools::Command{"mesh-generate", "write a parametric vitreous cavity mesh", tools::runMeshGenerate},
     tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
+    tools::Command{"plan", "show the assembled scene, pipeline, memory and run-time estimate", tools::runPlan},
 };
 
 void printUsage(std::FILE* out) {
