@@ -18,6 +18,7 @@ int runVersion(Args) {
 }
 int runMesh(Args args);  // tools/cmd_mesh.cpp
 int runPlan(Args args);  // tools/cmd_plan.cpp
+int runRun(Args args);  // tools/cmd_run.cpp
 }  // namespace tools
 
 namespace {
@@ -28,6 +29,7 @@ constexpr std::array kCommands = {
     tools::Command{"mesh-generate", "write a parametric vitreous cavity mesh", tools::runMeshGenerate},
     tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
     tools::Command{"plan", "show the assembled scene, pipeline, memory and run-time estimate", tools::runPlan},
+    tools::Command{"run", "run a protocol: frames, coverage series and report", tools::runRun},
 };
 
 void printUsage(std::FILE* out) {

@@ -259,6 +259,14 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     }
     phase->particleMass = phase->density * phase->volume / static_cast<double>(phase->count);
   }
+  if (options.massRule == MassRule::kPhaseShares) {
+    // N d^3 / V: the share of the cavity the lattice stands for at rest density.
+    const double represented = static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume;
+    for (FluidPhase* phase : {&aqueous, &oil}) phase->particleMass *= represented;
+    s.notes.push_back("the fluid particles stand for " + std::to_string(static_cast<int>(100 * represented + 0.5)) +
+                      " % of the cavity volume (the rest is the wall layer); both phases keep their "
+                      "exact volume ratio");
+  }
   for (const auto& x : samples.below)
     s.world->particles.add(x, sim::Vec3::Zero(), aqueous.particleMass, aqueous.materialIndex);
   for (const auto& x : samples.above)

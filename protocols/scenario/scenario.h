@@ -11,8 +11,8 @@
 //  3. fluids: the fill plane for the fill fraction under the first posture's gravity (light oil
 //     floats: plane normal -g; heavy oil sinks: +g), lattice particles of both phases
 //     (meshing::sampleFillPhases) 1.2 d from the wall (engine-notes: at d the Akinci wall term
-//     overestimates density by 6 %), each phase's particle mass = rho * V_phase / N_phase so the
-//     phase carries its true mass although N d^3 falls short of V near the wall;
+//     overestimates density by 6 %); particle masses by MassRule (below): by default each phase
+//     keeps its exact share of the fluid volume at rest density;
 //  4. materials from the anatomy material library (protocol overrides applied), the World and
 //     PipelineOptions (solver by name, effects forced as the protocol says). While the default
 //     multiphase solver (issue 6) is missing from the build, a protocol that names no solver
@@ -36,9 +36,22 @@
 
 namespace protocols {
 
+// How the particle mass of each phase is chosen.
+enum class MassRule {
+  // m = rho * V_phase / N_phase * (N d^3 / V): every particle starts at rest density on the
+  // lattice (mean mass rho d^3) and the phases keep their exact volume ratio fill : (1 - fill).
+  // The fluid then stands for N d^3 < V (the 1.2 d wall layer is not fluid), as it does at rest.
+  kPhaseShares,
+  // m = rho * V_phase / N_phase: each phase carries its true mass, but the lattice starts
+  // compressed by V / (N d^3) (29 % at d = 0.8 mm in a 5 mL eye, 2x at d = 1.5 mm), a pressure
+  // shock that throws particles through the wall at coarse spacings. For comparison only.
+  kTrueMass,
+};
+
 struct ScenarioOptions {
   std::optional<AccuracyPreset> accuracy;  // overrides the protocol's preset (explicit values too)
   double wallGapFactor = 1.2;              // [1] fluid starts this many spacings from the wall
+  MassRule massRule = MassRule::kPhaseShares;
 };
 
 struct FluidPhase {
@@ -49,7 +62,7 @@ struct FluidPhase {
   double dynamicViscosity = 0.0;  // [Pa s]
   double volume = 0.0;        // [m^3] the phase's share of the cavity volume
   std::size_t count = 0;      // particles
-  double particleMass = 0.0;  // [kg] density * volume / count
+  double particleMass = 0.0;  // [kg] MassRule
 };
 
 struct ScheduledPosture {

@@ -84,8 +84,18 @@ TEST_CASE("tiny protocol assembles: walls with regions, phases with their true m
   const PhaseTotals oilTotals = totalsOf(s, oil.materialIndex), aqTotals = totalsOf(s, aq.materialIndex);
   CHECK(oilTotals.count == oil.count);
   CHECK(aqTotals.count == aq.count);
-  CHECK(oilTotals.mass == Approx(oil.density * oil.volume).epsilon(1e-12));
-  CHECK(aqTotals.mass == Approx(aq.density * aq.volume).epsilon(1e-12));
+  // Default mass rule: every particle at rest density on the lattice on average (total rest
+  // volume N d^3) and the phases in their exact volume ratio (round-off of the sums).
+  const double oilRestVolume = oilTotals.mass / oil.density, aqRestVolume = aqTotals.mass / aq.density;
+  CHECK(oilRestVolume + aqRestVolume ==
+        Approx(static_cast<double>(oil.count + aq.count) * d * d * d).epsilon(1e-12));
+  CHECK(oilRestVolume / aqRestVolume == Approx(oil.volume / aq.volume).epsilon(1e-12));
+  {
+    // kTrueMass: each phase carries rho * V_phase.
+    const Scenario t = assembleScenario(p, {std::nullopt, 1.2, MassRule::kTrueMass});
+    CHECK(totalsOf(t, t.phases[1].materialIndex).mass == Approx(oil.density * oil.volume).epsilon(1e-12));
+    CHECK(totalsOf(t, t.phases[0].materialIndex).mass == Approx(aq.density * aq.volume).epsilon(1e-12));
+  }
   // First posture supine: gravity -z; light oil floats, so every oil particle is at least as
   // anterior (z) as every aqueous one (the lattice is shared, so equality at one plane at most).
   const double g = p.schedule.gravity.value;  // [m/s^2] the protocol's (default) magnitude
@@ -122,7 +132,7 @@ TEST_CASE("tiny protocol assembles: walls with regions, phases with their true m
 
 TEST_CASE("heavy oil sinks; tissues are noted as left out", "[unit][scenario]") {
   const Protocol p = parseProtocol((kProtocols / "heavy_oil_inferior_break.toml").string());
-  const Scenario s = assembleScenario(p, {AccuracyPreset::kDraft, 1.2});
+  const Scenario s = assembleScenario(p, {AccuracyPreset::kDraft, 1.2, MassRule::kPhaseShares});
   const FluidPhase& oil = s.phases[1];
   CHECK(oil.density > s.phases[0].density);
   // Supine first: gravity -z, the heavy oil lies posterior (smaller z) to the aqueous.
