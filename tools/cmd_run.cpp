@@ -96,6 +96,8 @@ int runRun(Args args) {
     double nextReport = 0.0;  // [1] fraction of the run at which the next plain line is printed
     protocols::RunOptions run;
     run.outputFolder = folder;
+    if (options.accuracy)
+      run.accuracyOverride = std::string(protocols::kAccuracyPresetNames[static_cast<std::size_t>(*options.accuracy)]);
     run.progress = [&](const protocols::RunProgress& p) {
       const double done = p.endTime > 0 ? std::min(1.0, p.time / p.endTime) : 1.0;
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -19,6 +19,7 @@ int runVersion(Args) {
 int runMesh(Args args);  // tools/cmd_mesh.cpp
 int runPlan(Args args);  // tools/cmd_plan.cpp
 int runRun(Args args);  // tools/cmd_run.cpp
+int runReport(Args args);  // tools/cmd_report.cpp
 }  // namespace tools
 
 namespace {
@@ -30,6 +31,7 @@ constexpr std::array kCommands = {
     tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
     tools::Command{"plan", "show the assembled scene, pipeline, memory and run-time estimate", tools::runPlan},
     tools::Command{"run", "run a protocol: frames, coverage series and report", tools::runRun},
+    tools::Command{"report", "rebuild a run's report from its files", tools::runReport},
 };
 
 void printUsage(std::FILE* out) {

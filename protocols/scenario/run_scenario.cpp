@@ -4,10 +4,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "protocols/coverage/schedule_coverage.h"
 #include "protocols/io/frame_writer.h"
 #include "protocols/report/write_report.h"
-#include "protocols/scenario/scenario_report_input.h"
+#include "protocols/scenario/rebuild_report.h"
 
 namespace protocols {
 namespace {
@@ -42,30 +41,26 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   metadata.protocolText = readText(protocol.file);
   metadata.strings["protocol_file"] = protocol.file.string();
   metadata.strings["accuracy"] = s.accuracy.preset;
+  metadata.strings["accuracy_override"] = options.accuracyOverride;
   metadata.strings["solver"] = s.pipelineOptions.solver;
   metadata.numbers["particle_spacing [m]"] = s.accuracy.particleSpacing;
   FrameWriter writer(options.outputFolder / "frames.h5", metadata);
   writer.writeStatic("wall", world.walls.fields);
 
-  // Coverage kernel: support gap + sqrt(3) d (wall_oil_fraction.h), the gap the scenario used.
-  const double d = s.accuracy.particleSpacing;
-  const sim::Kernel coverageKernel(sim::KernelKind::kCubicSpline, coverageSupportRadius(d, 1.2 * d));
   const std::vector<std::string> columns = seriesColumns(s.retina);
   std::vector<FrameCoverage> frames;
   WallOilFractions lastFractions;
   std::vector<sim::Vec3> fluidPositions;
-  std::vector<double> fluidVolumes;
+  std::vector<std::int32_t> fluidMaterials;
+  std::vector<std::string> stageNames;
+  for (const auto& e : pipeline.timers().entries()) stageNames.push_back(e.name);
 
   auto record = [&]() {
     if (!frames.empty() && !(world.time > frames.back().time)) return;
     writer.writeFrame(world.time, world.stepCount, {{"fluid", &world.particles.fields}});
-    const std::size_t n = world.particles.size();
     fluidPositions.assign(world.particles.x.begin(), world.particles.x.end());
-    fluidVolumes.resize(n);
-    for (std::size_t i = 0; i < n; ++i) fluidVolumes[i] = world.restVolumeOf(static_cast<sim::Index>(i));
-    const std::vector<std::uint8_t> flags = s.tamponadeFlags();
-    lastFractions = computeWallOilFractions(world.walls.x, {&fluidPositions, &flags, &fluidVolumes},
-                                            coverageKernel);
+    fluidMaterials.assign(world.particles.material.begin(), world.particles.material.end());
+    lastFractions = measureWallFractions(s, fluidPositions, fluidMaterials);
     frames.push_back(measureFrameCoverage(s.retina, lastFractions, world.time));
     std::vector<double> row;
     for (const auto& r : frames.back().regions) row.push_back(r.fraction);
@@ -74,6 +69,14 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
       row.push_back(b.covered ? 1.0 : 0.0);
     }
     writer.appendSeries("coverage", world.time, row, columns);
+    // Stage times so far (`tamponade report DIR` reads the last row).
+    std::vector<double> seconds, calls;
+    for (const auto& e : pipeline.timers().entries()) {
+      seconds.push_back(e.seconds);
+      calls.push_back(static_cast<double>(e.calls));
+    }
+    writer.appendSeries("stage_seconds", world.time, seconds, stageNames);
+    writer.appendSeries("stage_calls", world.time, calls, stageNames);
   };
 
   const double interval = protocol.outputs.frameInterval.value;  // [s]
@@ -97,22 +100,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   writer.close();
 
   // Report.
-  ReportInput in = makeReportInput(protocol, s);
-  in.frames = frames;
-  in.summary = summarizeSchedule(frames);
-  in.mapTime = frames.back().time;
-  in.wallPositions.assign(world.walls.x.begin(), world.walls.x.end());
-  in.wallOilFraction = lastFractions.oilFraction;
-  in.wallWetting = lastFractions.wetting;
-  in.wallRegions = s.retina.regions;
-  for (const auto& e : pipeline.timers().entries()) {
-    ReportStage st{e.name, true, "", e.seconds, e.calls};
-    for (const auto& dcs : pipeline.decisions())
-      if (dcs.name == e.name) st.reason = dcs.reason;
-    in.stages.push_back(st);
-  }
-  for (const auto& dcs : pipeline.decisions())
-    if (!dcs.active) in.stages.push_back({dcs.name, false, dcs.reason, 0.0, 0});
+  RunResults results{frames, lastFractions, pipeline.timers().entries(), pipeline.decisions()};
+  const ReportInput in = makeRunReportInput(protocol, s, results);
   if (protocol.outputs.report.value) writeReport(in, options.outputFolder);
 
   RunSummary summary;

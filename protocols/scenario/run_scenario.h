@@ -29,6 +29,8 @@ struct RunProgress {
 struct RunOptions {
   std::filesystem::path outputFolder;        // must exist; frames.h5 must not
   std::function<void(const RunProgress&)> progress;  // called after every step (may be empty)
+  std::string accuracyOverride;  // the preset name given on the command line, recorded for
+                                 // `tamponade report DIR` ("" = the protocol's own)
 };
 
 struct RunSummary {

@@ -86,6 +86,19 @@ TEST_CASE("tamponade run: a short protocol writes frames, series and a well-form
   REQUIRE(again.exitCode == 0);
   CHECK(readText(dir / "b" / "coverage.csv") == csv);
 
+  // `tamponade report DIR` recomputes the coverage from the frames: the same CSV, bit for bit
+  // (float64 frames hold the exact state), and the same numbers in the HTML.
+  fs::remove(dir / "a" / "coverage.csv");
+  fs::remove(dir / "a" / "report.html");
+  const CommandResult rebuilt = runTamponade("report a", dir);
+  INFO(rebuilt.output);
+  CHECK(rebuilt.exitCode == 0);
+  CHECK(readText(dir / "a" / "coverage.csv") == csv);
+  const std::string html2 = readText(dir / "a" / "report.html");
+  CHECK(protocols_test::checkXml(html2).empty());
+  CHECK(html2.find("oil covered on average <strong>" + mean + "</strong>") != std::string::npos);
+  CHECK(runTamponade("report nowhere", dir).exitCode == 2);
+
   // A folder that holds a run is refused, untouched.
   const auto before = fs::last_write_time(dir / "a" / "frames.h5");
   const CommandResult used = runTamponade("run short.toml --out a", dir);
