@@ -3,7 +3,10 @@
 // The protocol is validated and the scene assembled before the folder is created.
 #include <unistd.h>
 
+#include <atomic>
 #include <chrono>
+#include <csignal>
+#include <cstdlib>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -14,6 +17,7 @@
 
 #include "protocols/format/parse_protocol.h"
 #include "protocols/report/report_format.h"
+#include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/run_scenario.h"
 #include "tools/commands.h"
 
@@ -21,11 +25,21 @@ namespace tools {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: tamponade run PROTOCOL.toml [--out DIR] [--accuracy draft|standard|fine] [--threads N]\n\n"
+    "usage: tamponade run PROTOCOL.toml [--out DIR] [--accuracy draft|standard|fine] [--threads N]\n"
+    "       tamponade run --resume DIR [--threads N]\n\n"
     "Runs the protocol: frames.h5 + frames.xmf (ParaView), the coverage time series, and\n"
     "report.html, coverage.csv, summary.json in the output folder (default: the protocol's\n"
-    "outputs.folder). Bad protocols: file:line:column, exit code 2, nothing created.\n"
-    "Not yet: checkpoints and --resume.\n";
+    "outputs.folder). Checkpoints go to DIR/checkpoint.h5 every 1024 steps and on Ctrl-C or\n"
+    "SIGTERM (after at most 15 more steps); --resume DIR continues such a run, with the same\n"
+    "result as an uninterrupted run at the same thread count.\n"
+    "Bad protocols: file:line:column, exit code 2, nothing created. A stopped run exits 1.\n"
+    "(--stop-after-steps N stops as if interrupted at step N: for tests.)\n";
+
+// Set by SIGINT/SIGTERM; the run checkpoints and stops at its next checkpointable step.
+// std::atomic<bool> is lock-free here, so storing to it is async-signal-safe.
+std::atomic<bool> gStop{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+extern "C" void onSignal(int) { gStop.store(true); }
 
 int usage() {
   std::fputs(kUsage, stderr);
@@ -39,13 +53,18 @@ int runRun(Args args) {
     std::fputs(kUsage, stdout);
     return 0;
   }
-  std::string file, out;
+  std::string file, out, resume;
   protocols::ScenarioOptions options;
   int threads = 0;
+  long stopAfter = -1;
   for (std::size_t k = 0; k < args.size(); ++k) {
     const bool hasValue = k + 1 < args.size();
     if (args[k] == "--out" && hasValue) {
       out = std::string(args[++k]);
+    } else if (args[k] == "--resume" && hasValue) {
+      resume = std::string(args[++k]);
+    } else if (args[k] == "--stop-after-steps" && hasValue) {
+      stopAfter = std::atol(std::string(args[++k]).c_str());
     } else if (args[k] == "--threads" && hasValue) {
       try {
         threads = std::stoi(std::string(args[++k]));
@@ -75,15 +94,23 @@ int runRun(Args args) {
       return usage();
     }
   }
-  if (file.empty()) return usage();
+  if (file.empty() == resume.empty()) return usage();  // exactly one of PROTOCOL, --resume DIR
+  if (!resume.empty() && (options.accuracy || !out.empty())) return usage();
 #ifdef _OPENMP
   if (threads > 0) omp_set_num_threads(threads);
 #endif
   try {
-    const protocols::Protocol protocol = protocols::parseProtocol(file);
+    if (!resume.empty() && !std::filesystem::exists(std::filesystem::path(resume) / "checkpoint.h5")) {
+      std::fprintf(stderr, "tamponade run: %s has no checkpoint.h5 to resume from\n", resume.c_str());
+      return 2;
+    }
+    const protocols::Protocol protocol =
+        resume.empty() ? protocols::parseProtocol(file) : protocols::loadRunProtocol(resume, options);
     protocols::Scenario scenario = protocols::assembleScenario(protocol, options);
-    const std::filesystem::path folder = std::filesystem::path(out.empty() ? protocol.outputs.folder.value : out);
-    if (std::filesystem::exists(folder / "frames.h5")) {
+    const std::filesystem::path folder(!resume.empty() ? resume
+                                       : out.empty()   ? protocol.outputs.folder.value
+                                                       : out);
+    if (resume.empty() && std::filesystem::exists(folder / "frames.h5")) {
       std::fprintf(stderr, "tamponade run: %s already holds a run (frames.h5); choose another --out "
                    "or remove it\n", folder.string().c_str());
       return 2;
@@ -96,6 +123,11 @@ int runRun(Args args) {
     double nextReport = 0.0;  // [1] fraction of the run at which the next plain line is printed
     protocols::RunOptions run;
     run.outputFolder = folder;
+    run.resume = !resume.empty();
+    run.stopAfterSteps = stopAfter;
+    run.stopRequested = &gStop;
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
     if (options.accuracy)
       run.accuracyOverride = std::string(protocols::kAccuracyPresetNames[static_cast<std::size_t>(*options.accuracy)]);
     run.progress = [&](const protocols::RunProgress& p) {
@@ -115,6 +147,12 @@ int runRun(Args args) {
     };
     const protocols::RunSummary summary = protocols::runScenario(protocol, scenario, run);
     if (terminal) std::fputc('\n', stderr);
+    if (summary.stopped) {
+      std::printf("run stopped at t = %.6g s (step %ld) with a checkpoint; continue with\n"
+                  "  tamponade run --resume %s\n",
+                  summary.simulatedTime, summary.steps, folder.string().c_str());
+      return 1;
+    }
     std::printf("run finished: %ld steps, %zu frames, %.4g s simulated in %.1f s; mean retinal "
                 "coverage %s\noutput: %s\n",
                 summary.steps, summary.frames, summary.simulatedTime, summary.wallSeconds,

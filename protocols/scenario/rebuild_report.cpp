@@ -46,12 +46,8 @@ WallOilFractions measureWallFractions(const Scenario& s, const std::vector<sim::
   return computeWallOilFractions(s.world->walls.x, {&x, &flags, &volumes}, kernel);
 }
 
-void rebuildReport(const std::filesystem::path& folder) {
-  const std::filesystem::path h5 = folder / "frames.h5";
-  const FrameReader reader(h5);
-  const RunInfo info = reader.runInfo();
-
-  // The protocol: the original file if unchanged, else the copy kept in frames.h5.
+Protocol loadRunProtocol(const std::filesystem::path& folder, ScenarioOptions& options) {
+  const RunInfo info = FrameReader(folder / "frames.h5").runInfo();
   std::filesystem::path protocolPath;
   const auto original = info.strings.find("protocol_file");
   if (original != info.strings.end() && std::filesystem::exists(original->second)) {
@@ -64,12 +60,19 @@ void rebuildReport(const std::filesystem::path& folder) {
     protocolPath = folder / "protocol.toml";
     std::ofstream(protocolPath, std::ios::binary) << info.protocolText;
   }
-  const Protocol protocol = parseProtocol(protocolPath.string());
-  ScenarioOptions options;
   const auto override = info.strings.find("accuracy_override");
   if (override != info.strings.end() && !override->second.empty())
     for (std::size_t p = 0; p < kAccuracyPresetNames.size(); ++p)
       if (kAccuracyPresetNames[p] == override->second) options.accuracy = static_cast<AccuracyPreset>(p);
+  return parseProtocol(protocolPath.string());
+}
+
+void rebuildReport(const std::filesystem::path& folder) {
+  const std::filesystem::path h5 = folder / "frames.h5";
+  ScenarioOptions options;
+  const Protocol protocol = loadRunProtocol(folder, options);
+  const FrameReader reader(h5);
+  const RunInfo info = reader.runInfo();
   const Scenario s = assembleScenario(protocol, options);
   const FieldData walls = reader.readStaticField("wall", sim::field::kPosition);
   if (walls.rows != s.world->walls.size())

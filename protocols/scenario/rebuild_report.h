@@ -34,6 +34,11 @@ WallOilFractions measureWallFractions(const Scenario& scenario,
                                       const std::vector<sim::Vec3>& fluidPositions,
                                       const std::vector<std::int32_t>& fluidMaterials);
 
+// The protocol and scenario options a run in `folder` was made with (from its frames.h5): the
+// original protocol file when its text is unchanged, else the stored copy written to
+// folder/protocol.toml; the accuracy preset given on the command line, if any.
+Protocol loadRunProtocol(const std::filesystem::path& folder, ScenarioOptions& options);
+
 // Rewrites report.html, coverage.csv and summary.json in `folder` from its frames.h5.
 // Throws IoError when the files are missing or do not match the re-assembled scenario.
 void rebuildReport(const std::filesystem::path& folder);

@@ -13,6 +13,7 @@
 #include "meshing/mesh_error.h"
 #include "meshing/mesh_measures.h"
 #include "meshing/sample_surface.h"
+#include "meshing/sample_volume.h"
 #include "protocols/format/protocol_error.h"
 #include "sim/core/error.h"
 
@@ -240,11 +241,27 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   meshing::VolumeSamplingOptions vo;
   vo.spacing = d;
   vo.wallGap = options.wallGapFactor * d;
-  const meshing::PhaseSamples samples = meshing::sampleFillPhases(s.cavity, plane, vo);
   oil.volume = plane.volumeAbove;
   aqueous.volume = plane.volumeBelow;
-  oil.count = samples.above.size();
-  aqueous.count = samples.below.size();
+  std::vector<sim::Vec3> oilPoints, aqueousPoints;
+  if (options.massRule == MassRule::kRestDensity) {
+    // By count: the round(fill N) lattice points furthest along the fill direction are oil.
+    std::vector<sim::Vec3> lattice = meshing::sampleVolume(s.cavity, vo);
+    std::vector<std::size_t> order(lattice.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t lhs, std::size_t rhs) {
+      return oilSide.dot(lattice[lhs]) > oilSide.dot(lattice[rhs]);
+    });
+    const auto nOil = static_cast<std::size_t>(std::llround(p.tamponade.fill.value * static_cast<double>(lattice.size())));
+    for (std::size_t k = 0; k < order.size(); ++k)
+      (k < nOil ? oilPoints : aqueousPoints).push_back(lattice[order[k]]);
+  } else {
+    meshing::PhaseSamples samples = meshing::sampleFillPhases(s.cavity, plane, vo);
+    oilPoints = std::move(samples.above);
+    aqueousPoints = std::move(samples.below);
+  }
+  oil.count = oilPoints.size();
+  aqueous.count = aqueousPoints.size();
   if (oil.count == 0)
     fail(p.tamponade.fill.where,
          "the fill " + std::to_string(p.tamponade.fill.value) + " leaves the tamponade without "
@@ -257,19 +274,19 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
                           " uL is thinner than the particle layer and is left out");
       continue;
     }
-    phase->particleMass = phase->density * phase->volume / static_cast<double>(phase->count);
+    phase->particleMass = options.massRule == MassRule::kRestDensity
+                              ? phase->density * d * d * d
+                              : phase->density * phase->volume / static_cast<double>(phase->count);
   }
-  if (options.massRule == MassRule::kPhaseShares) {
-    // N d^3 / V: the share of the cavity the lattice stands for at rest density.
+  if (options.massRule == MassRule::kRestDensity) {
     const double represented = static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume;
-    for (FluidPhase* phase : {&aqueous, &oil}) phase->particleMass *= represented;
     s.notes.push_back("the fluid particles stand for " + std::to_string(static_cast<int>(100 * represented + 0.5)) +
-                      " % of the cavity volume (the rest is the wall layer); both phases keep their "
-                      "exact volume ratio");
+                      " % of the cavity volume at rest density (the rest is the wall layer); the "
+                      "tamponade's share of them is the fill fraction");
   }
-  for (const auto& x : samples.below)
+  for (const auto& x : aqueousPoints)
     s.world->particles.add(x, sim::Vec3::Zero(), aqueous.particleMass, aqueous.materialIndex);
-  for (const auto& x : samples.above)
+  for (const auto& x : oilPoints)
     s.world->particles.add(x, sim::Vec3::Zero(), oil.particleMass, oil.materialIndex);
   if (aqueous.count == 0 || oil.count == 0)
     s.notes.push_back("one fluid only: no oil/aqueous interface");

@@ -8,11 +8,10 @@
 //  2. walls: meshing::sampleSurface at the particle spacing d; outward normals; Akinci volume 0
 //     (World::initialize computes it); regions per wall particle (anatomy::assignRegions) in
 //     RetinaMap, keyed by wall index, and also in the wall `tag` (the RegionSet bits);
-//  3. fluids: the fill plane for the fill fraction under the first posture's gravity (light oil
-//     floats: plane normal -g; heavy oil sinks: +g), lattice particles of both phases
-//     (meshing::sampleFillPhases) 1.2 d from the wall (engine-notes: at d the Akinci wall term
-//     overestimates density by 6 %); particle masses by MassRule (below): by default each phase
-//     keeps its exact share of the fluid volume at rest density;
+//  3. fluids: lattice particles 1.2 d from the wall (engine-notes: at d the Akinci wall term
+//     overestimates density by 6 %), split into the two phases along the fill direction of the
+//     first posture's gravity (light oil floats: -g; heavy oil sinks: +g) so the tamponade's
+//     share is the fill fraction, particles at rest density (MassRule below);
 //  4. materials from the anatomy material library (protocol overrides applied), the World and
 //     PipelineOptions (solver by name, effects forced as the protocol says). While the default
 //     multiphase solver (issue 6) is missing from the build, a protocol that names no solver
@@ -36,22 +35,25 @@
 
 namespace protocols {
 
-// How the particle mass of each phase is chosen.
+// How the two phases are put on the lattice and how heavy their particles are.
 enum class MassRule {
-  // m = rho * V_phase / N_phase * (N d^3 / V): every particle starts at rest density on the
-  // lattice (mean mass rho d^3) and the phases keep their exact volume ratio fill : (1 - fill).
-  // The fluid then stands for N d^3 < V (the 1.2 d wall layer is not fluid), as it does at rest.
-  kPhaseShares,
-  // m = rho * V_phase / N_phase: each phase carries its true mass, but the lattice starts
-  // compressed by V / (N d^3) (29 % at d = 0.8 mm in a 5 mL eye, 2x at d = 1.5 mm), a pressure
-  // shock that throws particles through the wall at coarse spacings. For comparison only.
+  // Every particle m = rho d^3 (rest density on the lattice, no initial pressure shock), and the
+  // interface is placed by count: lattice points ordered along the fill direction, the first
+  // round(fill N) are tamponade. The phases' shares of the fluid are then exact to one particle;
+  // the interface is flat to within one lattice layer. The fluid stands for N d^3 < V (the
+  // 1.2 d wall layer is not fluid), as it does at rest.
+  kRestDensity,
+  // The geometric fill plane (findFillPlane) and m = rho V_phase / N_phase: each phase carries
+  // its true mass, but the lattice starts compressed by V_phase / (N_phase d^3), worst for a
+  // thin phase along a large wall (aqueous at 90 % fill: x1.3 at d = 1.2 mm, which throws
+  // particles through the wall). For comparison only.
   kTrueMass,
 };
 
 struct ScenarioOptions {
   std::optional<AccuracyPreset> accuracy;  // overrides the protocol's preset (explicit values too)
   double wallGapFactor = 1.2;              // [1] fluid starts this many spacings from the wall
-  MassRule massRule = MassRule::kPhaseShares;
+  MassRule massRule = MassRule::kRestDensity;
 };
 
 struct FluidPhase {
@@ -60,7 +62,7 @@ struct FluidPhase {
   bool isTamponade = false;
   double density = 0.0;       // [kg/m^3]
   double dynamicViscosity = 0.0;  // [Pa s]
-  double volume = 0.0;        // [m^3] the phase's share of the cavity volume
+  double volume = 0.0;        // [m^3] the phase's share of the cavity volume (geometric)
   std::size_t count = 0;      // particles
   double particleMass = 0.0;  // [kg] MassRule
 };
