@@ -232,7 +232,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     fail(p.tamponade.agent.where, error.what(), "check the tamponade's properties");
   }
 
-  buildWalls(p, s, d);
+  buildWalls(p, s, options.wallSpacingFactor * d);
 
   // Fluids: fill plane under the first posture's gravity; a lighter tamponade floats.
   const sim::Vec3 down = s.schedule.front().gravity.normalized();

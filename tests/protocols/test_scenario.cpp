@@ -92,7 +92,9 @@ TEST_CASE("tiny protocol assembles: walls with regions, phases with their true m
   CHECK(std::abs(share - 0.9) <= 0.5 / static_cast<double>(oil.count + aq.count) + 1e-15);
   {
     // kTrueMass: each phase carries rho * V_phase.
-    const Scenario t = assembleScenario(p, {std::nullopt, 1.2, MassRule::kTrueMass});
+    ScenarioOptions trueMass;
+    trueMass.massRule = MassRule::kTrueMass;
+    const Scenario t = assembleScenario(p, trueMass);
     CHECK(totalsOf(t, t.phases[1].materialIndex).mass == Approx(oil.density * oil.volume).epsilon(1e-12));
     CHECK(totalsOf(t, t.phases[0].materialIndex).mass == Approx(aq.density * aq.volume).epsilon(1e-12));
   }
@@ -132,7 +134,9 @@ TEST_CASE("tiny protocol assembles: walls with regions, phases with their true m
 
 TEST_CASE("heavy oil sinks; tissues are noted as left out", "[unit][scenario]") {
   const Protocol p = parseProtocol((kProtocols / "heavy_oil_inferior_break.toml").string());
-  const Scenario s = assembleScenario(p, {AccuracyPreset::kDraft, 1.2, MassRule::kRestDensity});
+  ScenarioOptions draft;
+  draft.accuracy = AccuracyPreset::kDraft;
+  const Scenario s = assembleScenario(p, draft);
   const FluidPhase& oil = s.phases[1];
   CHECK(oil.density > s.phases[0].density);
   // Supine first: gravity -z, the heavy oil lies posterior (smaller z) to the aqueous.
