@@ -91,6 +91,8 @@ int runPlan(Args args) {
                   protocols::formatNumber(ph.particleMass, 4).c_str());
     std::printf("  %-20s %9zu  (rigid wall, Akinci volumes)\n", "wall", plan.wallParticles);
     std::printf("  retinal breaks: %zu\n", scenario.breaks.size());
+    std::printf("  initial mean density: %s x rest density (the lattice is expanded to fill the "
+                "cavity in the first ms)\n", protocols::formatNumber(scenario.fillCompression, 3).c_str());
     for (const std::string& note : scenario.notes) std::printf("  note: %s\n", note.c_str());
     std::printf("\n%s\n", plan.pipeline.c_str());
     std::printf("memory: %s (particle fields %s, wall fields %s, neighbour lists %s)\n\n",

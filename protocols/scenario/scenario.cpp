@@ -244,7 +244,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   oil.volume = plane.volumeAbove;
   aqueous.volume = plane.volumeBelow;
   std::vector<sim::Vec3> oilPoints, aqueousPoints;
-  if (options.massRule == MassRule::kRestDensity) {
+  if (options.massRule != MassRule::kTrueMass) {
     // By count: the round(fill N) lattice points furthest along the fill direction are oil.
     std::vector<sim::Vec3> lattice = meshing::sampleVolume(s.cavity, vo);
     std::vector<std::size_t> order(lattice.size());
@@ -274,15 +274,20 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
                           " uL is thinner than the particle layer and is left out");
       continue;
     }
-    phase->particleMass = options.massRule == MassRule::kRestDensity
-                              ? phase->density * d * d * d
-                              : phase->density * phase->volume / static_cast<double>(phase->count);
+    phase->particleMass = options.massRule == MassRule::kTrueMass
+                              ? phase->density * phase->volume / static_cast<double>(phase->count)
+                              : phase->density * d * d * d;
+  }
+  if (options.massRule == MassRule::kFillCavity) {
+    const double factor = (s.cavityVolume - 0.5 * d * s.cavityArea) /
+                          (static_cast<double>(oil.count + aqueous.count) * d * d * d);
+    for (FluidPhase* phase : {&aqueous, &oil}) phase->particleMass *= factor;
+    s.fillCompression = factor;
   }
   if (options.massRule == MassRule::kRestDensity) {
     const double represented = static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume;
     s.notes.push_back("the fluid particles stand for " + std::to_string(static_cast<int>(100 * represented + 0.5)) +
-                      " % of the cavity volume at rest density (the rest is the wall layer); the "
-                      "tamponade's share of them is the fill fraction");
+                      " % of the cavity volume at rest density (the rest is the wall layer)");
   }
   for (const auto& x : aqueousPoints)
     s.world->particles.add(x, sim::Vec3::Zero(), aqueous.particleMass, aqueous.materialIndex);

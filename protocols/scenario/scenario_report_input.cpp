@@ -130,7 +130,9 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
        "CFL 0.4 and the stages' limits choose the step inside these bounds"},
       {"particles", std::to_string(s.phases[0].count) + " aqueous, " +
                         std::to_string(s.phases[1].count) + " tamponade, " +
-                        std::to_string(s.world->walls.size()) + " wall", ""},
+                        std::to_string(s.world->walls.size()) + " wall",
+       "fluid started at " + formatNumber(s.fillCompression, 3) +
+           " x rest density so that it fills the cavity (protocols/scenario/scenario.h MassRule)"},
   };
   return in;
 }

@@ -84,10 +84,16 @@ TEST_CASE("tiny protocol assembles: walls with regions, phases with their true m
   const PhaseTotals oilTotals = totalsOf(s, oil.materialIndex), aqTotals = totalsOf(s, aq.materialIndex);
   CHECK(oilTotals.count == oil.count);
   CHECK(aqTotals.count == aq.count);
-  // Default mass rule: every particle m = rho d^3, and the tamponade's share of the particles
-  // is the fill fraction to one particle (placed by count).
-  for (std::size_t i = 0; i < w.particles.size(); ++i)
-    CHECK(w.particles.mass[i] == Approx(w.restDensityOf(static_cast<sim::Index>(i)) * d * d * d).epsilon(1e-14));
+  // Default mass rule (kFillCavity): every particle m = rho d^3 f, one factor f for all, such that
+  // the fluid's rest volume is V - A d/2 (round-off of the sums).
+  double restVolume = 0.0;  // [m^3]
+  for (std::size_t i = 0; i < w.particles.size(); ++i) {
+    const double rho0 = w.restDensityOf(static_cast<sim::Index>(i));
+    CHECK(w.particles.mass[i] == Approx(rho0 * d * d * d * s.fillCompression).epsilon(1e-14));
+    restVolume += w.particles.mass[i] / rho0;
+  }
+  CHECK(restVolume == Approx(s.cavityVolume - 0.5 * d * s.cavityArea).epsilon(1e-12));
+  CHECK(s.fillCompression > 1.0);
   const double share = static_cast<double>(oil.count) / static_cast<double>(oil.count + aq.count);
   CHECK(std::abs(share - 0.9) <= 0.5 / static_cast<double>(oil.count + aq.count) + 1e-15);
   {
