@@ -19,6 +19,9 @@ int runMesh(Args args);
 int runDemo(Args args);  // tools/cmd_demo.cpp  // tools/cmd_mesh.cpp
 int runMesh(Args args);  // tools/cmd_mesh.cpp
 int runBench(Args args);  // tools/cmd_bench.cpp
+int runPlan(Args args);  // tools/cmd_plan.cpp
+int runRun(Args args);  // tools/cmd_run.cpp
+int runReport(Args args);  // tools/cmd_report.cpp
 }  // namespace tools
 
 namespace {
@@ -29,6 +32,9 @@ constexpr std::array kCommands = {
     tools::Command{"mesh", "check, repair, sample and generate eye meshes", tools::runMesh},
     tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
     tools::Command{"bench", "benchmark the engine (bench engine: dam break, both solvers)", tools::runBench},
+    tools::Command{"plan", "show the assembled scene, pipeline, memory and run-time estimate", tools::runPlan},
+    tools::Command{"run", "run a protocol: frames, coverage series and report", tools::runRun},
+    tools::Command{"report", "rebuild a run's report from its files", tools::runReport},
 };
 
 void printUsage(std::FILE* out) {

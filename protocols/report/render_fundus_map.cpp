@@ -1,0 +1,153 @@
+#include "protocols/report/render_fundus_map.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "protocols/report/report_format.h"
+
+namespace protocols {
+namespace {
+
+constexpr double kSize = 520.0;    // [px] drawing square
+constexpr double kMargin = 40.0;   // [px] around it, for labels
+constexpr double kDegree = 180.0 / std::numbers::pi;
+
+std::string colourOf(WallWetting w) {
+  switch (w) {
+    case WallWetting::kOil: return "#e0a526";      // amber: oil
+    case WallWetting::kAqueous: return "#3f7fbf";  // blue: aqueous
+    case WallWetting::kDry: return "#b0b0b0";      // grey: no fluid
+  }
+  return "#000000";
+}
+
+}  // namespace
+
+std::array<double, 2> projectFundus(const sim::Vec3& p) {
+  const double theta = std::atan2(std::hypot(p.x(), p.y()), -p.z()) * kDegree;  // [deg]
+  const double azimuth = std::atan2(p.y(), p.x());                              // [rad]
+  return {theta * std::cos(azimuth), theta * std::sin(azimuth)};
+}
+
+std::string renderFundusMap(const ReportInput& input) {
+  // Scale: the most anterior retinal point (largest angle) touches the drawing's edge.
+  double maxAngle = 90.0;  // [deg]
+  for (std::size_t w = 0; w < input.wallPositions.size(); ++w)
+    if (w < input.wallRegions.size() && input.wallRegions[w] != 0) {
+      const auto q = projectFundus(input.wallPositions[w]);
+      maxAngle = std::max(maxAngle, std::hypot(q[0], q[1]));
+    }
+  maxAngle = 10.0 * std::ceil(maxAngle / 10.0);
+  const double scale = 0.5 * kSize / maxAngle;  // [px/deg]
+  const double centre = kMargin + 0.5 * kSize;  // [px]
+  auto px = [&](const sim::Vec3& p) {
+    const auto q = projectFundus(p);
+    return std::array<double, 2>{centre + scale * q[0], centre - scale * q[1]};
+  };
+  auto num = [](double v) { return formatNumber(v, 5); };
+
+  std::ostringstream s;
+  const double total = kSize + 2 * kMargin;
+  s << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(total + 150) << "\" height=\""
+    << num(total) << "\" viewBox=\"0 0 " << num(total + 150) << " " << num(total)
+    << "\" role=\"img\" aria-label=\"fundus map of oil coverage\">\n";
+  s << "<rect x=\"0\" y=\"0\" width=\"" << num(total + 150) << "\" height=\"" << num(total)
+    << "\" fill=\"#ffffff\"/>\n";
+  // Angle rings every 30 degrees from the posterior pole.
+  for (double a = 30.0; a <= maxAngle + 1e-9; a += 30.0)
+    s << "<circle cx=\"" << num(centre) << "\" cy=\"" << num(centre) << "\" r=\""
+      << num(a * scale) << "\" fill=\"none\" stroke=\"#dddddd\" stroke-width=\"1\"/>\n";
+  // Wall particles.
+  const double dot = std::max(1.5, std::min(4.0, 0.5 * kSize / std::sqrt(std::max<double>(
+                                                     1.0, static_cast<double>(input.wallPositions.size())))));
+  s << "<g id=\"wall\">\n";
+  for (std::size_t w = 0; w < input.wallPositions.size(); ++w) {
+    if (w >= input.wallRegions.size() || input.wallRegions[w] == 0) continue;
+    const auto q = px(input.wallPositions[w]);
+    const WallWetting wet = w < input.wallWetting.size() ? input.wallWetting[w] : WallWetting::kDry;
+    s << "<circle cx=\"" << num(q[0]) << "\" cy=\"" << num(q[1]) << "\" r=\"" << num(dot)
+      << "\" fill=\"" << colourOf(wet) << "\"/>\n";
+  }
+  s << "</g>\n";
+  // Quadrant boundaries: the diagonals (clock hours 1:30, 4:30, 7:30, 10:30).
+  for (double deg : {45.0, 135.0}) {
+    const double c = std::cos(deg / kDegree) * maxAngle * scale;
+    const double sn = std::sin(deg / kDegree) * maxAngle * scale;
+    s << "<line x1=\"" << num(centre - c) << "\" y1=\"" << num(centre + sn) << "\" x2=\""
+      << num(centre + c) << "\" y2=\"" << num(centre - sn)
+      << "\" stroke=\"#555555\" stroke-width=\"1\" stroke-dasharray=\"4 4\"/>\n";
+  }
+  // Outlines (ora serrata, equator, posterior pole, macula, ...).
+  auto polyline = [&](const std::vector<sim::Vec3>& points, bool closed, const char* style) {
+    if (points.size() < 2) return;
+    s << "<" << (closed ? "polygon" : "polyline") << " points=\"";
+    for (const auto& p : points) {
+      const auto q = px(p);
+      s << num(q[0]) << "," << num(q[1]) << " ";
+    }
+    s << "\" fill=\"none\" " << style << "/>\n";
+  };
+  for (const auto& o : input.outlines) {
+    s << "<g class=\"outline\"><title>" << escapeXml(o.name) << "</title>\n";
+    polyline(o.points, o.closed, "stroke=\"#222222\" stroke-width=\"1.5\"");
+    if (!o.points.empty()) {
+      const auto q = px(o.points.front());
+      s << "<text x=\"" << num(q[0] + 3) << "\" y=\"" << num(q[1] - 3)
+        << "\" font-size=\"11\" fill=\"#222222\">" << escapeXml(o.name) << "</text>\n";
+    }
+    s << "</g>\n";
+  }
+  // Breaks.
+  for (const auto& b : input.breaks) {
+    s << "<g class=\"break\"><title>" << escapeXml(b.name + ": " + b.where) << "</title>\n";
+    polyline(b.outline, true, "stroke=\"#c00000\" stroke-width=\"2.5\"");
+    if (!b.outline.empty()) {
+      sim::Vec3 mean = sim::Vec3::Zero();
+      for (const auto& p : b.outline) mean += p;
+      const auto q = px(mean / static_cast<double>(b.outline.size()));
+      s << "<text x=\"" << num(q[0] + 8) << "\" y=\"" << num(q[1] + 4)
+        << "\" font-size=\"12\" font-weight=\"bold\" fill=\"#c00000\">" << escapeXml(b.name)
+        << "</text>\n";
+    }
+    s << "</g>\n";
+  }
+  // Orientation labels.
+  const bool nasalRight = input.eyeSide == "OD";  // OD: nasal = patient's left = +x = right
+  s << "<text x=\"" << num(centre) << "\" y=\"" << num(kMargin - 12)
+    << "\" font-size=\"13\" text-anchor=\"middle\">superior</text>\n";
+  s << "<text x=\"" << num(centre) << "\" y=\"" << num(total - 12)
+    << "\" font-size=\"13\" text-anchor=\"middle\">inferior</text>\n";
+  s << "<text x=\"" << num(total - 4) << "\" y=\"" << num(centre)
+    << "\" font-size=\"13\" text-anchor=\"end\">" << (nasalRight ? "nasal" : "temporal")
+    << "</text>\n";
+  s << "<text x=\"4\" y=\"" << num(centre) << "\" font-size=\"13\">"
+    << (nasalRight ? "temporal" : "nasal") << "</text>\n";
+  // Legend.
+  const double lx = total + 10;
+  double ly = kMargin;
+  const std::pair<WallWetting, const char*> legend[] = {{WallWetting::kOil, "oil"},
+                                                        {WallWetting::kAqueous, "aqueous"},
+                                                        {WallWetting::kDry, "dry (no fluid)"}};
+  for (const auto& [wet, label] : legend) {
+    s << "<circle cx=\"" << num(lx + 6) << "\" cy=\"" << num(ly) << "\" r=\"5\" fill=\""
+      << colourOf(wet) << "\"/><text x=\"" << num(lx + 16) << "\" y=\"" << num(ly + 4)
+      << "\" font-size=\"12\">" << label << "</text>\n";
+    ly += 20;
+  }
+  s << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 12)
+    << "\" y2=\"" << num(ly) << "\" stroke=\"#c00000\" stroke-width=\"2.5\"/><text x=\""
+    << num(lx + 16) << "\" y=\"" << num(ly + 4) << "\" font-size=\"12\">break</text>\n";
+  ly += 20;
+  s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 4)
+    << "\" font-size=\"11\">rings: 30 deg</text>\n";
+  s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 20)
+    << "\" font-size=\"11\">from the pole</text>\n";
+  s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 40) << "\" font-size=\"11\">t = "
+    << formatNumber(input.mapTime, 4) << " s</text>\n";
+  s << "</svg>\n";
+  return s.str();
+}
+
+}  // namespace protocols

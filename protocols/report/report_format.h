@@ -1,0 +1,19 @@
+// Number and text formatting shared by the report's HTML, CSV and JSON, so a test can look for
+// exactly the string the report prints.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+namespace protocols {
+
+// "83.3 %" (one decimal); the report prints every coverage fraction this way.
+std::string formatPercent(double fraction);
+// "%.*g"-style with `digits` significant digits, e.g. formatNumber(0.000812, 3) = "0.000812".
+std::string formatNumber(double value, int digits = 4);
+// Escapes & < > " ' for HTML/XML text and attribute values.
+std::string escapeXml(std::string_view text);
+// Escapes a string for a JSON string literal (without the quotes).
+std::string escapeJson(std::string_view text);
+
+}  // namespace protocols

@@ -1,0 +1,65 @@
+// Everything a coverage report shows, as plain data: no engine or anatomy objects, so the report
+// can be rebuilt from a run's files (`tamponade report DIR`) as well as at the end of a run.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "protocols/coverage/frame_coverage.h"
+#include "protocols/coverage/schedule_coverage.h"
+
+namespace protocols {
+
+struct ReportPosture {
+  std::string label;   // e.g. "face-down"
+  double start = 0.0;  // [s]
+  double end = 0.0;    // [s]
+};
+
+struct ReportStage {
+  std::string name;
+  bool active = false;
+  std::string reason;    // why it is (not) in the pipeline
+  double seconds = 0.0;  // [s] wall-clock time spent in it (0 when not run)
+  long calls = 0;
+};
+
+struct ReportSetting {
+  std::string name;   // e.g. "particle spacing"
+  std::string value;  // with its unit, e.g. "0.8 mm"
+  std::string note;   // estimated error where known, or where the value comes from
+};
+
+// A line drawn on the fundus map (ora serrata, equator, macula, ...), as points on the wall.
+struct ReportOutline {
+  std::string name;
+  std::vector<sim::Vec3> points;  // [m] eye frame, in drawing order
+  bool closed = true;
+};
+
+struct ReportBreak {
+  std::string name;
+  std::string where;               // clinical position in words, e.g. "12 o'clock, 8 mm from the limbus"
+  std::vector<sim::Vec3> outline;  // [m] eye frame, closed ring on the wall
+};
+
+struct ReportInput {
+  std::string title;
+  std::string eyeSide = "OD";          // "OD" or "OS": which side of the map is nasal
+  std::vector<std::string> scenario;   // the scenario in words, one paragraph each
+  std::vector<ReportPosture> postures; // the schedule as run
+  std::vector<FrameCoverage> frames;   // in increasing time
+  ScheduleCoverage summary;            // summarizeSchedule(frames)
+  std::vector<ReportBreak> breaks;     // same order as the frames' breaks
+  // The fundus map shows the wall state of one frame (normally the last).
+  double mapTime = 0.0;                      // [s]
+  std::vector<sim::Vec3> wallPositions;      // [m] eye frame, #W
+  std::vector<double> wallOilFraction;       // [1] #W
+  std::vector<WallWetting> wallWetting;      // #W
+  std::vector<anatomy::RegionSet> wallRegions;  // #W; particles outside the retina are not drawn
+  std::vector<ReportOutline> outlines;
+  std::vector<ReportStage> stages;
+  std::vector<ReportSetting> accuracy;
+};
+
+}  // namespace protocols

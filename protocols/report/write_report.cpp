@@ -1,0 +1,195 @@
+#include "protocols/report/write_report.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+#include "protocols/io/io_error.h"
+#include "protocols/report/render_coverage_chart.h"
+#include "protocols/report/render_fundus_map.h"
+#include "protocols/report/report_format.h"
+
+namespace protocols {
+namespace {
+
+constexpr const char* kStyle =
+    "body{font-family:sans-serif;max-width:60em;margin:2em auto;color:#222;line-height:1.4}"
+    "table{border-collapse:collapse;margin:1em 0}"
+    "th,td{border:1px solid #bbb;padding:0.25em 0.6em;text-align:left}"
+    "td.n{text-align:right}th{background:#eee}"
+    ".yes{color:#00804a;font-weight:bold}.no{color:#c00000;font-weight:bold}"
+    "h1{font-size:1.6em}h2{font-size:1.25em;margin-top:1.6em}";
+
+// Minimum of a series over the frames.
+template <class F>
+double minimumOver(const std::vector<FrameCoverage>& frames, F value) {
+  double m = 1.0;
+  for (const auto& f : frames) m = std::min(m, value(f));
+  return frames.empty() ? 0.0 : m;
+}
+
+void writeFile(const std::filesystem::path& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  if (!out)
+    throw IoError(path.string(), "", "cannot open the report file for writing",
+                  "check that the output folder exists and is writable");
+  out << text;
+  out.close();
+  if (!out)
+    throw IoError(path.string(), "", "writing the report file failed",
+                  "check the free disk space");
+}
+
+}  // namespace
+
+std::string renderReportHtml(const ReportInput& in) {
+  std::ostringstream s;
+  s << "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n"
+    << "<meta charset=\"utf-8\"/>\n<title>" << escapeXml(in.title) << "</title>\n<style>"
+    << kStyle << "</style>\n</head>\n<body>\n";
+  s << "<h1>" << escapeXml(in.title) << "</h1>\n";
+
+  s << "<h2>Scenario</h2>\n";
+  for (const auto& p : in.scenario) s << "<p>" << escapeXml(p) << "</p>\n";
+  if (!in.frames.empty()) {
+    s << "<p>Over the whole schedule (" << formatNumber(in.summary.duration, 4)
+      << " s simulated) oil covered on average <strong>"
+      << formatPercent(in.summary.regions[0]) << "</strong> of the retina; at the end "
+      << formatPercent(in.frames.back().retina().fraction) << ".";
+    for (std::size_t b = 0; b < in.breaks.size() && b < in.summary.breakTimeCovered.size(); ++b)
+      s << " Break " << escapeXml(in.breaks[b].name) << " was covered "
+        << formatPercent(in.summary.breakTimeCovered[b]) << " of the time.";
+    s << "</p>\n";
+  }
+
+  s << "<h2>Oil coverage over time</h2>\n" << renderCoverageChart(in);
+  s << "<p>Shaded bands are the postures of the schedule. A wall point counts as oil-covered when "
+       "the SPH-weighted oil fraction of the fluid next to it is at least "
+    << formatPercent(kOilCoveredThreshold) << "; a break counts as covered when at least "
+    << formatPercent(kBreakCoveredFraction) << " of its area is oil-covered.</p>\n";
+
+  s << "<h2>Coverage by region</h2>\n<table>\n<tr><th>region</th><th>area [mm&#178;]</th>"
+       "<th>mean over time</th><th>minimum</th><th>at the end</th><th>dry at the end</th></tr>\n";
+  for (std::size_t r = 0; r < kReportedRegions.size(); ++r) {
+    const AreaCoverage last = in.frames.empty() ? AreaCoverage{} : in.frames.back().regions[r];
+    s << "<tr><td>" << kReportedRegions[r].name << "</td><td class=\"n\">"
+      << formatNumber(last.area * 1e6, 4) << "</td><td class=\"n\">"
+      << formatPercent(in.summary.regions[r]) << "</td><td class=\"n\">"
+      << formatPercent(minimumOver(in.frames, [r](const FrameCoverage& f) { return f.regions[r].fraction; }))
+      << "</td><td class=\"n\">" << formatPercent(last.fraction) << "</td><td class=\"n\">"
+      << formatPercent(last.area > 0 ? last.dryArea / last.area : 0.0) << "</td></tr>\n";
+  }
+  s << "</table>\n";
+
+  s << "<h2>Retinal breaks</h2>\n";
+  if (in.breaks.empty()) {
+    s << "<p>The protocol has no retinal breaks.</p>\n";
+  } else {
+    s << "<table>\n<tr><th>break</th><th>position</th><th>mean area covered</th>"
+         "<th>time covered</th><th>covered at the end</th></tr>\n";
+    for (std::size_t b = 0; b < in.breaks.size(); ++b) {
+      const bool coveredAtEnd = !in.frames.empty() && b < in.frames.back().breaks.size() &&
+                                in.frames.back().breaks[b].covered;
+      s << "<tr><td>" << escapeXml(in.breaks[b].name) << "</td><td>"
+        << escapeXml(in.breaks[b].where) << "</td><td class=\"n\">"
+        << formatPercent(b < in.summary.breakFraction.size() ? in.summary.breakFraction[b] : 0.0)
+        << "</td><td class=\"n\">"
+        << formatPercent(b < in.summary.breakTimeCovered.size() ? in.summary.breakTimeCovered[b] : 0.0)
+        << "</td><td class=\"" << (coveredAtEnd ? "yes\">yes" : "no\">no") << "</td></tr>\n";
+    }
+    s << "</table>\n";
+  }
+
+  s << "<h2>Fundus map of oil coverage</h2>\n" << renderFundusMap(in);
+  s << "<p>The retina unrolled around the posterior pole (azimuthal equidistant projection: the "
+       "distance from the centre is the angle from the posterior pole, seen from the front, "
+       "superior up). Dots are wall particles at t = "
+    << formatNumber(in.mapTime, 4) << " s; dashed lines separate the quadrants.</p>\n";
+
+  s << "<h2>Pipeline</h2>\n<table>\n<tr><th>stage</th><th>in use</th><th>why</th>"
+       "<th>time [s]</th><th>calls</th></tr>\n";
+  for (const auto& st : in.stages)
+    s << "<tr><td>" << escapeXml(st.name) << "</td><td>" << (st.active ? "yes" : "no")
+      << "</td><td>" << escapeXml(st.reason) << "</td><td class=\"n\">"
+      << formatNumber(st.seconds, 4) << "</td><td class=\"n\">" << st.calls << "</td></tr>\n";
+  s << "</table>\n";
+
+  s << "<h2>Accuracy settings</h2>\n<table>\n<tr><th>setting</th><th>value</th>"
+       "<th>estimated error / source</th></tr>\n";
+  for (const auto& a : in.accuracy)
+    s << "<tr><td>" << escapeXml(a.name) << "</td><td>" << escapeXml(a.value) << "</td><td>"
+      << escapeXml(a.note) << "</td></tr>\n";
+  s << "</table>\n</body>\n</html>\n";
+  return s.str();
+}
+
+std::string renderCoverageCsv(const ReportInput& in) {
+  std::ostringstream s;
+  s << "time_s";
+  for (const auto& r : kReportedRegions) {
+    std::string name(r.name);
+    std::replace(name.begin(), name.end(), ' ', '_');
+    name.erase(std::remove_if(name.begin(), name.end(),
+                              [](char c) { return c == '(' || c == ')' || c == ','; }),
+               name.end());
+    s << "," << name;
+  }
+  for (const auto& b : in.breaks) {
+    std::string name = b.name;
+    std::replace(name.begin(), name.end(), ',', ';');
+    s << "," << name << "_fraction," << name << "_covered";
+  }
+  s << "\n";
+  for (const auto& f : in.frames) {
+    s << formatNumber(f.time, 9);
+    for (const auto& r : f.regions) s << "," << formatNumber(r.fraction, 6);
+    for (const auto& b : f.breaks)
+      s << "," << formatNumber(b.area.fraction, 6) << "," << (b.covered ? 1 : 0);
+    s << "\n";
+  }
+  return s.str();
+}
+
+std::string renderSummaryJson(const ReportInput& in) {
+  std::ostringstream s;
+  s << "{\n  \"title\": \"" << escapeJson(in.title) << "\",\n";
+  s << "  \"duration_s\": " << formatNumber(in.summary.duration, 9) << ",\n";
+  s << "  \"frames\": " << in.frames.size() << ",\n";
+  s << "  \"regions\": [\n";
+  for (std::size_t r = 0; r < kReportedRegions.size(); ++r) {
+    const AreaCoverage last = in.frames.empty() ? AreaCoverage{} : in.frames.back().regions[r];
+    s << "    {\"name\": \"" << kReportedRegions[r].name << "\", \"area_m2\": "
+      << formatNumber(last.area, 6) << ", \"mean_fraction\": "
+      << formatNumber(in.summary.regions[r], 6) << ", \"final_fraction\": "
+      << formatNumber(last.fraction, 6) << "}" << (r + 1 < kReportedRegions.size() ? "," : "")
+      << "\n";
+  }
+  s << "  ],\n  \"breaks\": [\n";
+  for (std::size_t b = 0; b < in.breaks.size(); ++b) {
+    const bool coveredAtEnd = !in.frames.empty() && b < in.frames.back().breaks.size() &&
+                              in.frames.back().breaks[b].covered;
+    s << "    {\"name\": \"" << escapeJson(in.breaks[b].name) << "\", \"where\": \""
+      << escapeJson(in.breaks[b].where) << "\", \"mean_fraction\": "
+      << formatNumber(b < in.summary.breakFraction.size() ? in.summary.breakFraction[b] : 0.0, 6)
+      << ", \"time_covered\": "
+      << formatNumber(b < in.summary.breakTimeCovered.size() ? in.summary.breakTimeCovered[b] : 0.0, 6)
+      << ", \"covered_at_end\": " << (coveredAtEnd ? "true" : "false") << "}"
+      << (b + 1 < in.breaks.size() ? "," : "") << "\n";
+  }
+  s << "  ],\n  \"stages\": [\n";
+  for (std::size_t k = 0; k < in.stages.size(); ++k)
+    s << "    {\"name\": \"" << escapeJson(in.stages[k].name) << "\", \"active\": "
+      << (in.stages[k].active ? "true" : "false") << ", \"seconds\": "
+      << formatNumber(in.stages[k].seconds, 6) << "}" << (k + 1 < in.stages.size() ? "," : "")
+      << "\n";
+  s << "  ]\n}\n";
+  return s.str();
+}
+
+void writeReport(const ReportInput& input, const std::filesystem::path& folder) {
+  writeFile(folder / "report.html", renderReportHtml(input));
+  writeFile(folder / "coverage.csv", renderCoverageCsv(input));
+  writeFile(folder / "summary.json", renderSummaryJson(input));
+}
+
+}  // namespace protocols

@@ -1,0 +1,77 @@
+#include "protocols/scenario/plan_scenario.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+namespace protocols {
+
+ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
+  sim::World& world = *s.world;
+  sim::Pipeline pipeline = sim::assemblePipeline(world, s.pipelineOptions);
+  pipeline.attach(world);
+
+  ScenarioPlan plan;
+  plan.pipeline = pipeline.describe();
+  plan.decisions = pipeline.decisions();
+  plan.dynamicParticles = world.particles.size();
+  plan.wallParticles = world.walls.size();
+  plan.particleFieldBytes = world.particles.fields.bytes();
+  plan.wallFieldBytes = world.walls.fields.bytes();
+  const auto listBytes = [](const sim::NeighborList& l) {
+    return (l.offsets.capacity() + l.indices.capacity()) * sizeof(sim::Index);
+  };
+  plan.neighborListBytes = listBytes(world.fluidNeighbors()) + listBytes(world.wallNeighbors());
+  plan.simulatedDuration = s.totalDuration();
+#ifdef _OPENMP
+  plan.threads = omp_get_max_threads();
+#endif
+
+  // Calibration: one warm-up step (first-touch allocations), then the timed steps.
+  const sim::TimeStepInfo first = pipeline.chooseTimeStep(world);
+  plan.firstTimeStep = first.dt;
+  plan.timeStepLimitedBy = first.limitedBy;
+  pipeline.step(world);
+  const long rejectedBefore = pipeline.rejectedSteps();
+  // Each step timed on its own; the cost is the fastest one. The machine is shared (and OpenMP
+  // threads spin-wait when cores are oversubscribed), so the slower steps measure the other
+  // processes; the fastest is the closest to this scene's own cost.
+  double fastest = 1e300;  // [s]
+  for (int k = 0; k < options.calibrationSteps; ++k) {
+    const auto start = std::chrono::steady_clock::now();
+    pipeline.step(world);
+    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    plan.calibrationSeconds += seconds;
+    fastest = std::min(fastest, seconds);
+  }
+  plan.calibrationSteps = options.calibrationSteps;
+  plan.rejectedSteps = pipeline.rejectedSteps() - rejectedBefore;
+  plan.secondsPerParticleStep =
+      (options.calibrationSteps > 0 ? fastest : 0.0) /
+      static_cast<double>(std::max<std::size_t>(1, plan.dynamicParticles));
+
+  const double d = s.accuracy.particleSpacing;  // [m]
+  for (std::size_t k = 0; k < kAccuracyPresets.size(); ++k) {
+    const AccuracyPresetValues& v = kAccuracyPresets[k];
+    PresetEstimate& e = plan.presets[k];
+    e.preset = std::string(v.name);
+    e.particleSpacing = v.particleSpacing;
+    const double ratio = d / v.particleSpacing;  // [1]
+    e.particles = static_cast<double>(plan.dynamicParticles) * ratio * ratio * ratio;
+    double dt = first.dt;
+    if (first.limitedBy == "max") dt = v.maxTimeStep;
+    else if (first.limitedBy == "min") dt = v.minTimeStep;
+    else if (first.limitedBy == "viscosity") dt = first.dt / (ratio * ratio);
+    else dt = first.dt / ratio;  // cfl, solver's acoustic limit
+    e.timeStep = std::clamp(dt, v.minTimeStep, v.maxTimeStep);
+    e.steps = std::ceil(plan.simulatedDuration / e.timeStep);
+    e.seconds = e.steps * e.particles * plan.secondsPerParticleStep;
+  }
+  return plan;
+}
+
+}  // namespace protocols

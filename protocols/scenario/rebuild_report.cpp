@@ -1,0 +1,108 @@
+#include "protocols/scenario/rebuild_report.h"
+
+#include <fstream>
+#include <sstream>
+
+#include "protocols/format/parse_protocol.h"
+#include "protocols/io/frame_reader.h"
+#include "protocols/io/io_error.h"
+#include "protocols/report/write_report.h"
+#include "protocols/scenario/scenario_report_input.h"
+#include "sim/world/stage_registry.h"
+
+namespace protocols {
+
+ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& s, const RunResults& r) {
+  ReportInput in = makeReportInput(protocol, s);
+  in.frames = r.frames;
+  in.summary = summarizeSchedule(r.frames);
+  in.mapTime = r.frames.back().time;
+  in.wallPositions.assign(s.world->walls.x.begin(), s.world->walls.x.end());
+  in.wallOilFraction = r.lastFractions.oilFraction;
+  in.wallWetting = r.lastFractions.wetting;
+  in.wallRegions = s.retina.regions;
+  for (const auto& e : r.timers) {
+    ReportStage st{e.name, true, "", e.seconds, e.calls};
+    for (const auto& d : r.decisions)
+      if (d.name == e.name) st.reason = d.reason;
+    in.stages.push_back(st);
+  }
+  for (const auto& d : r.decisions)
+    if (!d.active) in.stages.push_back({d.name, false, d.reason, 0.0, 0});
+  return in;
+}
+
+WallOilFractions measureWallFractions(const Scenario& s, const std::vector<sim::Vec3>& x,
+                                      const std::vector<std::int32_t>& material) {
+  const double d = s.accuracy.particleSpacing;
+  const sim::Kernel kernel(sim::KernelKind::kCubicSpline, coverageSupportRadius(d, 1.2 * d));
+  std::vector<std::uint8_t> flags(x.size());
+  std::vector<double> volumes(x.size());  // [m^3] rest volume m / rho0 of each particle's phase
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const FluidPhase& phase = material[i] == s.phases[1].materialIndex ? s.phases[1] : s.phases[0];
+    flags[i] = phase.isTamponade ? 1 : 0;
+    volumes[i] = phase.particleMass / phase.density;
+  }
+  return computeWallOilFractions(s.world->walls.x, {&x, &flags, &volumes}, kernel);
+}
+
+Protocol loadRunProtocol(const std::filesystem::path& folder, ScenarioOptions& options) {
+  const RunInfo info = FrameReader(folder / "frames.h5").runInfo();
+  std::filesystem::path protocolPath;
+  const auto original = info.strings.find("protocol_file");
+  if (original != info.strings.end() && std::filesystem::exists(original->second)) {
+    std::ifstream in(original->second, std::ios::binary);
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (text.str() == info.protocolText) protocolPath = original->second;
+  }
+  if (protocolPath.empty()) {
+    protocolPath = folder / "protocol.toml";
+    std::ofstream(protocolPath, std::ios::binary) << info.protocolText;
+  }
+  const auto override = info.strings.find("accuracy_override");
+  if (override != info.strings.end() && !override->second.empty())
+    for (std::size_t p = 0; p < kAccuracyPresetNames.size(); ++p)
+      if (kAccuracyPresetNames[p] == override->second) options.accuracy = static_cast<AccuracyPreset>(p);
+  return parseProtocol(protocolPath.string());
+}
+
+void rebuildReport(const std::filesystem::path& folder) {
+  const std::filesystem::path h5 = folder / "frames.h5";
+  ScenarioOptions options;
+  const Protocol protocol = loadRunProtocol(folder, options);
+  const FrameReader reader(h5);
+  const RunInfo info = reader.runInfo();
+  const Scenario s = assembleScenario(protocol, options);
+  const FieldData walls = reader.readStaticField("wall", sim::field::kPosition);
+  if (walls.rows != s.world->walls.size())
+    throw IoError(h5.string(), "/static/wall/position",
+                  "the run has " + std::to_string(walls.rows) + " wall particles, the re-assembled "
+                  "scenario " + std::to_string(s.world->walls.size()),
+                  "rebuild the report with the toolkit version that ran it (" + info.toolkitVersion + ")");
+
+  RunResults r;
+  std::vector<sim::Vec3> x;
+  for (const FrameInfo& f : reader.frames()) {
+    const FieldData position = reader.readField(f.index, "fluid", sim::field::kPosition);
+    const FieldData material = reader.readField(f.index, "fluid", sim::field::kMaterial);
+    x.resize(position.rows);
+    for (std::size_t i = 0; i < position.rows; ++i)
+      x[i] = sim::Vec3(position.real(i, 0), position.real(i, 1), position.real(i, 2));
+    r.lastFractions = measureWallFractions(s, x, material.integers);
+    r.frames.push_back(measureFrameCoverage(s.retina, r.lastFractions, f.time));
+  }
+  if (r.frames.empty())
+    throw IoError(h5.string(), "/frames", "the run has no complete frame", "run it again");
+  const SeriesData stages = reader.readSeries("stage_seconds");
+  for (std::size_t c = 1; c < stages.columns.size(); ++c)
+    r.timers.push_back({stages.columns[c], stages.values[(stages.rows - 1) * stages.columns.size() + c], 0});
+  const SeriesData calls = reader.readSeries("stage_calls");
+  for (std::size_t c = 1; c < calls.columns.size() && c - 1 < r.timers.size(); ++c)
+    r.timers[c - 1].calls = static_cast<long>(calls.values[(calls.rows - 1) * calls.columns.size() + c]);
+  r.decisions = sim::assemblePipeline(*s.world, s.pipelineOptions).decisions();
+  const ReportInput in = makeRunReportInput(protocol, s, r);
+  writeReport(in, folder);
+}
+
+}  // namespace protocols

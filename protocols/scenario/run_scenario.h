@@ -1,0 +1,60 @@
+// One Run of a scenario (STYLE.md names): steps the world through the posture schedule (turning
+// gravity in the eye frame), writes frames and the coverage time series to <out>/frames.h5
+// (FrameWriter), and the report (report.html, coverage.csv, summary.json) at the end.
+//
+// Frames are taken at every multiple of the protocol's frame interval (the first step crossing
+// it), at the start and at the end; a posture ends at the first step that reaches its end time
+// (the pipeline chooses dt; the overshoot is at most one step). "until steady" postures run
+// their full maximum duration (steady-state detection is not implemented).
+// Checkpoints (<out>/checkpoint.h5, protocols/io) are written every `checkpointInterval` steps
+// and when a stop is requested; both happen only at multiples of the World's Z-sort interval
+// (16 steps), the only steps at which a resumed World is in the same state as the continuous one
+// (run_scenario.cpp). A resumed run is bit-identical to an uninterrupted one at the same thread
+// count (tests/protocols/test_scenario_run.cpp).
+// Not yet: the protocol's `outputs.fields` selection (every registry field marked `written` is
+// written); steady-state detection.
+#pragma once
+
+#include <atomic>
+#include <filesystem>
+#include <functional>
+#include <string>
+
+#include "protocols/format/protocol.h"
+#include "protocols/scenario/scenario.h"
+
+namespace protocols {
+
+struct RunProgress {
+  double time = 0.0;     // [s] simulated
+  double endTime = 0.0;  // [s]
+  long steps = 0;
+  std::string posture;
+};
+
+struct RunOptions {
+  std::filesystem::path outputFolder;        // must exist; frames.h5 must not
+  std::function<void(const RunProgress&)> progress;  // called after every step (may be empty)
+  bool resume = false;  // continue from <out>/checkpoint.h5 (the scenario must be re-assembled
+                        // from the same protocol and accuracy)
+  const std::atomic<bool>* stopRequested = nullptr;  // set by a signal handler: checkpoint, stop
+  long stopAfterSteps = -1;       // > 0: behave as if stopped at this step (tests)
+  long checkpointInterval = 1024; // [steps] a multiple of the Z-sort interval (16)
+  std::string accuracyOverride;  // the preset name given on the command line, recorded for
+                                 // `tamponade report DIR` ("" = the protocol's own)
+};
+
+struct RunSummary {
+  bool stopped = false;        // a stop was requested: checkpoint written, no report
+  std::size_t frames = 0;
+  long steps = 0;
+  double simulatedTime = 0.0;  // [s]
+  double wallSeconds = 0.0;    // [s]
+  double retinaCoverage = 0.0; // [1] time-weighted mean
+};
+
+// Runs `scenario` (built from `protocol`). Throws IoError for output problems, SimError when the
+// simulation fails (e.g. a particle escapes the cavity).
+RunSummary runScenario(const Protocol& protocol, Scenario& scenario, const RunOptions& options);
+
+}  // namespace protocols

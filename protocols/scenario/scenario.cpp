@@ -1,0 +1,349 @@
+#include "protocols/scenario/scenario.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "anatomy/anatomy_error.h"
+#include "anatomy/material_library.h"
+#include "anatomy/posture.h"
+#include "anatomy/retinal_regions.h"
+#include "anatomy/vitreous_cavity.h"
+#include "meshing/find_fill_plane.h"
+#include "meshing/load_mesh.h"
+#include "meshing/mesh_error.h"
+#include "meshing/mesh_measures.h"
+#include "meshing/sample_surface.h"
+#include "meshing/sample_volume.h"
+#include "protocols/format/protocol_error.h"
+#include "sim/core/error.h"
+
+namespace protocols {
+namespace {
+
+[[noreturn]] void fail(const SourceLocation& where, const std::string& what, const std::string& fix) {
+  throw ProtocolError({Diagnostic{where, what, fix}});
+}
+
+// The cavity and, for parametric kinds, the eye.
+void buildCavity(const Protocol& p, Scenario& s) {
+  const EyeSpec& e = p.eye;
+  try {
+    if (e.kind.value == EyeKind::kMesh) {
+      const MeshSource& m = *e.mesh;
+      const meshing::LengthUnit unit = meshing::parseLengthUnit(m.units.value);
+      meshing::LoadedMesh loaded = meshing::loadMesh(m.path.value.string(), unit);
+      s.cavity = std::move(loaded.mesh);
+      s.notes.push_back(
+          "imported cavity mesh: it carries no clinical landmarks, so the whole wall counts as "
+          "retina (no quadrants, macula or periphery) and breaks cannot be placed");
+      if (!e.breaks.empty())
+        fail(e.breaks.front().where, "retinal break '" + e.breaks.front().name.value +
+                                         "' on an imported mesh cavity",
+             "breaks are placed by clinical coordinates, which need a parametric eye (kind = "
+             "\"emmetropic\", \"myopic\" or \"staphyloma\"); remove the breaks or use one");
+    } else {
+      auto make = [&]() {
+        if (e.kind.value == EyeKind::kEmmetropic) {
+          anatomy::EmmetropicCavityParameters q;
+          if (e.axialLength) q.axialLength = e.axialLength->value;
+          return anatomy::makeEmmetropicCavity(q);
+        }
+        if (e.kind.value == EyeKind::kMyopic) {
+          anatomy::MyopicCavityParameters q;
+          if (e.axialLength) q.axialLength = e.axialLength->value;
+          return anatomy::makeMyopicCavity(q);
+        }
+        anatomy::StaphylomaCavityParameters q;
+        if (e.axialLength) q.axialLength = e.axialLength->value;
+        if (e.staphylomaDepth) q.staphylomaDepth = e.staphylomaDepth->value;
+        if (e.staphylomaWidth) q.staphylomaWidth = e.staphylomaWidth->value;
+        return anatomy::makeStaphylomaCavity(q);
+      };
+      anatomy::VitreousCavity cavity = make();
+      s.cavity = std::move(cavity.mesh);
+      s.eye.emplace(e.side.value == EyeSide::kOd ? anatomy::Laterality::kRight
+                                                 : anatomy::Laterality::kLeft,
+                    cavity.shape);
+    }
+  } catch (const anatomy::AnatomyError& error) {
+    fail(e.axialLength ? e.axialLength->where : e.kind.where, error.what(),
+         "change the eye's parameters to the range named above");
+  } catch (const meshing::MeshError& error) {
+    fail(e.mesh->path.where, error.what(), "repair the mesh or give its units");
+  }
+  const meshing::MeshMeasures measures = meshing::measureMesh(s.cavity);
+  s.cavityVolume = measures.signedVolume;
+  s.cavityArea = measures.area;
+  if (e.sclera || e.orbitalFat)
+    s.notes.push_back("tissues (sclera, orbital fat) are not simulated yet (issue 7): the wall is "
+                      "rigid");
+}
+
+// Wall particles, regions, breaks.
+void buildWalls(const Protocol& p, Scenario& s, double spacing) {
+  const meshing::SurfaceSamples walls = meshing::sampleSurface(s.cavity, spacing);
+  s.retina.areas = walls.areas;
+  if (s.eye) {
+    s.retina.regions = anatomy::assignRegions(*s.eye, walls.points, walls.normals);
+  } else {
+    s.retina.regions.assign(walls.size(), anatomy::kRetina);
+  }
+  for (std::size_t w = 0; w < walls.size(); ++w)
+    s.world->walls.add(walls.points[w], walls.normals[w], static_cast<int>(s.retina.regions[w]));
+  for (const RetinalBreak& b : p.eye.breaks) {
+    anatomy::RetinalBreakSpec spec;
+    spec.name = b.name.value;
+    spec.position.clockHour = b.clockHour.value;
+    spec.position.distance = b.distance.value;
+    spec.position.from = b.reference == DistanceReference::kLimbus
+                             ? anatomy::DistanceReference::kLimbus
+                             : anatomy::DistanceReference::kOraSerrata;
+    spec.diameter = b.diameter.value;
+    try {
+      s.breaks.emplace_back(*s.eye, spec);
+    } catch (const anatomy::AnatomyError& error) {
+      fail(b.where, error.what(), "move the break onto the retina (posterior to the ora serrata)");
+    }
+    const anatomy::RetinalBreak& placed = s.breaks.back();
+    std::vector<std::size_t> inside;
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      if (placed.isInBreak(walls.points[w])) inside.push_back(w);
+    if (inside.empty()) {
+      // A break smaller than the wall spacing: the wall particle nearest to its centre stands
+      // for it (its area is then larger than the break's; noted).
+      std::size_t nearest = 0;
+      double best = 1e300;
+      for (std::size_t w = 0; w < walls.size(); ++w) {
+        const double r = (walls.points[w] - placed.centre().position).squaredNorm();
+        if (r < best) best = r, nearest = w;
+      }
+      inside.push_back(nearest);
+      s.notes.push_back("break '" + spec.name + "' is smaller than the particle spacing: the "
+                        "nearest wall particle stands for it");
+    }
+    s.retina.breakNames.push_back(spec.name);
+    s.retina.breakWalls.push_back(std::move(inside));
+  }
+}
+
+FluidPhase phaseFromLibrary(const std::string& name, bool isTamponade) {
+  const anatomy::MaterialRecord& r = anatomy::MaterialLibrary::builtin().find(name);
+  FluidPhase f;
+  f.material = name;
+  f.isTamponade = isTamponade;
+  f.density = r.density->value;
+  f.dynamicViscosity = r.dynamicViscosity->value;
+  return f;
+}
+
+FluidPhase tamponadePhase(const TamponadeSpec& t) {
+  FluidPhase f;
+  if (!t.isCustom()) {
+    f = phaseFromLibrary(t.agent.value, true);
+  } else {
+    f.material = "custom";
+    f.isTamponade = true;
+  }
+  if (t.density) f.density = t.density->value;
+  if (t.viscosity) {
+    const Viscosity& v = t.viscosity->value;
+    f.dynamicViscosity = v.kind == ViscosityKind::kDynamic ? v.value : v.value * f.density;
+  }
+  return f;
+}
+
+sim::Vec3 gravityOf(const Posture& posture, double magnitude) {
+  if (posture.name.value == PostureName::kCustom) {
+    const auto& g = posture.gravityDirection.value;
+    return magnitude * sim::Vec3(g[0], g[1], g[2]).normalized();
+  }
+  return magnitude * anatomy::gravityDirection(anatomy::parsePosture(toString(posture.name.value)));
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> Scenario::tamponadeFlags() const {
+  std::vector<std::uint8_t> flags(world->particles.size());
+  const int tamponade = phases[1].materialIndex;
+  for (std::size_t i = 0; i < flags.size(); ++i)
+    flags[i] = world->particles.material[i] == tamponade ? 1 : 0;
+  return flags;
+}
+
+double Scenario::totalDuration() const {
+  double t = 0.0;
+  for (const auto& p : schedule) t += p.duration;
+  return t;
+}
+
+Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
+  Scenario s;
+  s.title = p.title ? p.title->value : p.file.filename().string();
+
+  // Accuracy: the protocol's values, or a preset chosen on the command line.
+  const AccuracySpec& a = p.accuracy;
+  if (options.accuracy) {
+    const AccuracyPresetValues& v = kAccuracyPresets[static_cast<std::size_t>(*options.accuracy)];
+    s.accuracy = {std::string(v.name), v.particleSpacing, v.solverTolerance, v.minTimeStep,
+                  v.maxTimeStep};
+  } else {
+    s.accuracy = {std::string(toString(a.preset.value)), a.particleSpacing.value,
+                  a.solverTolerance.value, a.minTimeStep.value, a.maxTimeStep.value};
+  }
+  const double d = s.accuracy.particleSpacing;  // [m]
+
+  // Schedule.
+  for (const Posture& posture : p.schedule.postures)
+    s.schedule.push_back({posture.label.value, gravityOf(posture, p.schedule.gravity.value),
+                          posture.duration.value, posture.untilSteady});
+  if (s.schedule.empty())
+    fail(p.file.empty() ? SourceLocation{} : SourceLocation{p.file.string(), 0, 0},
+         "the schedule has no postures", "add at least one [[schedule.postures]]");
+
+  buildCavity(p, s);
+
+  // Phases: [0] aqueous, [1] tamponade.
+  s.phases.push_back(phaseFromLibrary("aqueous", false));
+  s.phases.push_back(tamponadePhase(p.tamponade));
+  FluidPhase& aqueous = s.phases[0];
+  FluidPhase& oil = s.phases[1];
+
+  // World.
+  sim::WorldParameters wp;
+  wp.particleSpacing = d;
+  wp.gravity = s.schedule.front().gravity;
+  wp.minTimeStep = s.accuracy.minTimeStep;
+  wp.maxTimeStep = s.accuracy.maxTimeStep;
+  Eigen::AlignedBox3d bounds;
+  for (const auto& v : s.cavity.vertices) bounds.extend(v);
+  const double pad = 4.0 * wp.supportRadiusFactor * d;  // [m] walls sit on the surface
+  wp.domain = sim::Box(bounds.min() - sim::Vec3::Constant(pad), bounds.max() + sim::Vec3::Constant(pad));
+  s.world = std::make_unique<sim::World>(wp);
+  s.world->gravity = wp.gravity;
+  try {
+    for (FluidPhase* phase : {&aqueous, &oil}) {
+      sim::Material m;
+      m.name = phase->material;
+      m.restDensity = phase->density;
+      m.dynamicViscosity = phase->dynamicViscosity;
+      phase->materialIndex = s.world->materials.add(m);
+    }
+  } catch (const sim::SimError& error) {
+    fail(p.tamponade.agent.where, error.what(), "check the tamponade's properties");
+  }
+
+  buildWalls(p, s, options.wallSpacingFactor * d);
+
+  // Fluids: fill plane under the first posture's gravity; a lighter tamponade floats.
+  const sim::Vec3 down = s.schedule.front().gravity.normalized();
+  const sim::Vec3 oilSide = oil.density < aqueous.density ? sim::Vec3(-down) : down;
+  const meshing::FillPlane plane = meshing::findFillPlane(s.cavity, p.tamponade.fill.value, oilSide);
+  meshing::VolumeSamplingOptions vo;
+  vo.spacing = d;
+  vo.wallGap = options.wallGapFactor * d;
+  oil.volume = plane.volumeAbove;
+  aqueous.volume = plane.volumeBelow;
+  std::vector<sim::Vec3> oilPoints, aqueousPoints;
+  if (options.massRule != MassRule::kTrueMass) {
+    // By count: the round(fill N) lattice points furthest along the fill direction are oil.
+    std::vector<sim::Vec3> lattice = meshing::sampleVolume(s.cavity, vo);
+    std::vector<std::size_t> order(lattice.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t lhs, std::size_t rhs) {
+      return oilSide.dot(lattice[lhs]) > oilSide.dot(lattice[rhs]);
+    });
+    const auto nOil = static_cast<std::size_t>(std::llround(p.tamponade.fill.value * static_cast<double>(lattice.size())));
+    for (std::size_t k = 0; k < order.size(); ++k)
+      (k < nOil ? oilPoints : aqueousPoints).push_back(lattice[order[k]]);
+  } else {
+    meshing::PhaseSamples samples = meshing::sampleFillPhases(s.cavity, plane, vo);
+    oilPoints = std::move(samples.above);
+    aqueousPoints = std::move(samples.below);
+  }
+  oil.count = oilPoints.size();
+  aqueous.count = aqueousPoints.size();
+  if (oil.count == 0)
+    fail(p.tamponade.fill.where,
+         "the fill " + std::to_string(p.tamponade.fill.value) + " leaves the tamponade without "
+         "particles at spacing " + std::to_string(d * 1e3) + " mm",
+         "raise the fill or use a finer accuracy preset");
+  for (FluidPhase* phase : {&aqueous, &oil}) {
+    if (phase->count == 0) {
+      if (phase->volume > 0.5 * d * d * d)
+        s.notes.push_back(phase->material + ": " + std::to_string(phase->volume * 1e9) +
+                          " uL is thinner than the particle layer and is left out");
+      continue;
+    }
+    phase->particleMass = options.massRule == MassRule::kTrueMass
+                              ? phase->density * phase->volume / static_cast<double>(phase->count)
+                              : phase->density * d * d * d;
+  }
+  if (options.massRule == MassRule::kFillCavity) {
+    const double factor = (s.cavityVolume - 0.5 * d * s.cavityArea) /
+                          (static_cast<double>(oil.count + aqueous.count) * d * d * d);
+    for (FluidPhase* phase : {&aqueous, &oil}) phase->particleMass *= factor;
+    s.fillCompression = factor;
+  }
+  if (options.massRule == MassRule::kRestDensity) {
+    const double represented = static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume;
+    s.notes.push_back("the fluid particles stand for " + std::to_string(static_cast<int>(100 * represented + 0.5)) +
+                      " % of the cavity volume at rest density (the rest is the wall layer)");
+  }
+  for (const auto& x : aqueousPoints)
+    s.world->particles.add(x, sim::Vec3::Zero(), aqueous.particleMass, aqueous.materialIndex);
+  for (const auto& x : oilPoints)
+    s.world->particles.add(x, sim::Vec3::Zero(), oil.particleMass, oil.materialIndex);
+  if (aqueous.count == 0 || oil.count == 0)
+    s.notes.push_back("one fluid only: no oil/aqueous interface");
+
+  // Pipeline options: solver by name, effects forced by the protocol.
+  s.pipelineOptions.solver = std::string(toString(p.solver.value));
+  bool known = false;
+  for (const auto& entry : sim::solverRegistry()) known = known || entry.name == s.pipelineOptions.solver;
+  if (!known && !p.solver.where.isInFile()) {
+    // The default solver (the multiphase one, issue 6) has not landed in this build. The protocol
+    // did not ask for it by name, so use the engine's calm single-phase solver and say so: WCSPH
+    // holds a tank at rest (hydrostatic pressure within 2 %), DFSPH does not yet
+    // (engine notes, 2026-11-22). Never silent: the note shows in `plan` and the report.
+    s.notes.push_back("the default solver '" + s.pipelineOptions.solver +
+                      "' is not in this build yet; using 'wcsph' (set `solver` to choose)");
+    s.pipelineOptions.solver = "wcsph";
+    known = true;
+  }
+  if (!known) {
+    std::string names;
+    for (const auto& entry : sim::solverRegistry()) names += (names.empty() ? "" : ", ") + entry.name;
+    fail(p.solver.where, "solver '" + s.pipelineOptions.solver + "' is not in this build",
+         "use one of: " + names);
+  }
+  s.pipelineOptions.dfsph.densityTolerance = s.accuracy.solverTolerance;
+  s.pipelineOptions.dfsph.divergenceTolerance = s.accuracy.solverTolerance;
+  // WCSPH: c = 10 x the free-fall speed over the cavity, sqrt(2 g L), bounds density errors near
+  // 1 % (Becker & Teschner 2007, sec. 4); flows in the eye are far slower than free fall.
+  const double extent = (bounds.max() - bounds.min()).maxCoeff();  // [m]
+  s.pipelineOptions.wcsph.speedOfSound = 10.0 * std::sqrt(2.0 * p.schedule.gravity.value * extent);
+  for (std::size_t k = 0; k < kEffectNames.size(); ++k) {
+    const Located<EffectSetting>& setting = p.effects.settings[k];
+    if (setting.value == EffectSetting::kAuto) continue;
+    const std::string name(kEffectNames[k]);
+    bool registered = false;
+    for (const auto& entry : sim::effectRegistry()) registered = registered || entry.name == name;
+    if (!registered) {
+      if (setting.value == EffectSetting::kOn)
+        fail(setting.where, "effect '" + name + "' is forced on but this build does not have it yet",
+             "remove the line or set it to \"auto\"");
+      s.notes.push_back("effect '" + name + "' forced off: this build does not have it anyway");
+      continue;
+    }
+    s.pipelineOptions.forced[name] = setting.value == EffectSetting::kOn ? sim::Force::kOn : sim::Force::kOff;
+  }
+
+  try {
+    s.world->initialize();
+  } catch (const sim::SimError& error) {
+    fail(p.accuracy.particleSpacing.where, error.what(), "check the accuracy settings");
+  }
+  return s;
+}
+
+}  // namespace protocols

@@ -1,0 +1,123 @@
+// A Scenario is a Protocol made concrete (STYLE.md names): the cavity, its wall particles with
+// their retinal regions and breaks, the two fluid phases as particles, the sim::World and the
+// PipelineOptions that a run steps, and the posture schedule as gravity vectors.
+//
+// Assembly (assembleScenario):
+//  1. cavity: a parametric eye from anatomy (emmetropic / myopic / staphyloma) or an imported
+//     mesh (meshing::loadMesh, units from the protocol);
+//  2. walls: meshing::sampleSurface at the particle spacing d; outward normals; Akinci volume 0
+//     (World::initialize computes it); regions per wall particle (anatomy::assignRegions) in
+//     RetinaMap, keyed by wall index, and also in the wall `tag` (the RegionSet bits);
+//  3. fluids: lattice particles 1.2 d from the wall (engine-notes: at d the Akinci wall term
+//     overestimates density by 6 %), split into the two phases along the fill direction of the
+//     first posture's gravity (light oil floats: -g; heavy oil sinks: +g) so the tamponade's
+//     share is the fill fraction, particles at rest density (MassRule below);
+//  4. materials from the anatomy material library (protocol overrides applied), the World and
+//     PipelineOptions (solver by name, effects forced as the protocol says). While the default
+//     multiphase solver (issue 6) is missing from the build, a protocol that names no solver
+//     runs with "wcsph", with a note; one that names a missing solver is an error.
+// Tissues (sclera, orbital fat) are not assembled: elastic walls are issue 7. A protocol that
+// asks for them gets a note in Scenario::notes, and the wall stays rigid.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "anatomy/eye.h"
+#include "anatomy/retinal_break.h"
+#include "meshing/triangle_mesh.h"
+#include "protocols/coverage/frame_coverage.h"
+#include "protocols/format/protocol.h"
+#include "sim/world/stage_registry.h"
+#include "sim/world/world.h"
+
+namespace protocols {
+
+// How the two phases are put on the lattice and how heavy their particles are. In every rule
+// but kTrueMass the interface is placed by count: lattice points ordered along the fill
+// direction, the first round(fill N) are tamponade, so the phases' shares of the fluid are exact
+// to one particle and the interface is flat to within one lattice layer.
+enum class MassRule {
+  // m = rho d^3 (V - A d/2) / (N d^3): the fluid at rest density fills the cavity up to d/2 from
+  // the wall (where the wall particles' Akinci volumes take over). The lattice sits 1.2 d from the
+  // wall, plus up to sqrt(3)/2 d of staircase on a curved wall, so it starts ~30 % compressed at
+  // d = 1.2 mm (less at finer d, the deficit scales with A d / V); the fluid expands to the wall
+  // in the first ms (up to 2.6 m/s, tiny.toml) and is calm after 0.1 s (1 cm/s, density within
+  // [0.98, 1.04] rho0, i.e. no free surface).
+  kFillCavity,
+  // m = rho d^3: no initial compression, but the fluid stands for only N d^3 (63 % of the cavity
+  // at d = 1.2 mm): under gravity it settles and leaves the upper wall dry (tiny.toml upright:
+  // 77 % of the superior quadrant dry after 0.5 s). For comparison.
+  kRestDensity,
+  // The geometric fill plane (findFillPlane) and m = rho V_phase / N_phase: each phase carries
+  // its true mass, but a thin phase along a large wall (aqueous at 90 % fill) starts compressed
+  // x1.3-2.3 at d = 1.2 mm, which throws particles through the wall. For comparison.
+  kTrueMass,
+};
+
+struct ScenarioOptions {
+  std::optional<AccuracyPreset> accuracy;  // overrides the protocol's preset (explicit values too)
+  double wallGapFactor = 1.2;              // [1] fluid starts this many spacings from the wall
+  // [1] wall particle spacing / d. One layer of Poisson-disk wall particles at d leaves holes up
+  // to ~1.8 d wide (RSA, sample_surface.h) that fluid particles leak through under gravity (seen
+  // at d = 1.2 mm after 0.04 s); at 0.5 d the holes are ~0.9 d, smaller than a particle.
+  double wallSpacingFactor = 0.5;
+  MassRule massRule = MassRule::kFillCavity;
+};
+
+struct FluidPhase {
+  std::string material;       // material library name ("aqueous", "silicone_oil_1000", ...)
+  int materialIndex = -1;     // in world.materials
+  bool isTamponade = false;
+  double density = 0.0;       // [kg/m^3]
+  double dynamicViscosity = 0.0;  // [Pa s]
+  double volume = 0.0;        // [m^3] the phase's share of the cavity volume (geometric)
+  std::size_t count = 0;      // particles
+  double particleMass = 0.0;  // [kg] MassRule
+};
+
+struct ScheduledPosture {
+  std::string label;
+  sim::Vec3 gravity = sim::Vec3::Zero();  // [m/s^2] eye frame
+  double duration = 0.0;                  // [s] (the upper bound when untilSteady)
+  bool untilSteady = false;
+};
+
+struct AccuracySettings {
+  std::string preset;
+  double particleSpacing = 0.0;  // [m]
+  double solverTolerance = 0.0;  // [1]
+  double minTimeStep = 0.0;      // [s]
+  double maxTimeStep = 0.0;      // [s]
+};
+
+struct Scenario {
+  std::string title;
+  std::optional<anatomy::Eye> eye;    // parametric cavities only (an imported mesh has no landmarks)
+  meshing::TriangleMesh cavity;       // [m] closed, outward, eye frame
+  double cavityVolume = 0.0;          // [m^3]
+  double cavityArea = 0.0;            // [m^2]
+  std::vector<anatomy::RetinalBreak> breaks;
+  RetinaMap retina;                   // per wall particle (wall index order of world->walls)
+  std::vector<FluidPhase> phases;     // [0] aqueous, [1] tamponade (a phase may have 0 particles)
+  std::vector<ScheduledPosture> schedule;
+  AccuracySettings accuracy;
+  std::unique_ptr<sim::World> world;  // initialized
+  sim::PipelineOptions pipelineOptions;
+  std::vector<std::string> notes;     // what was simplified or left out, in words
+  double fillCompression = 1.0;       // [1] initial mean density / rest density (MassRule)
+
+  // Tamponade flags of the world's dynamic particles in their current order, for the coverage
+  // metric (1 = tamponade material).
+  std::vector<std::uint8_t> tamponadeFlags() const;
+  double totalDuration() const;  // [s] sum of the schedule's durations
+};
+
+// Throws ProtocolError (file:line:column of the value responsible) when the protocol cannot be
+// made concrete: an anatomy parameter out of its range, a break off the retina, a solver or a
+// forced effect this build does not have, a fill that leaves a phase without particles.
+Scenario assembleScenario(const Protocol& protocol, const ScenarioOptions& options = {});
+
+}  // namespace protocols

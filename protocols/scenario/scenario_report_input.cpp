@@ -1,0 +1,140 @@
+#include "protocols/scenario/scenario_report_input.h"
+
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+#include "protocols/report/report_format.h"
+
+namespace protocols {
+namespace {
+
+constexpr int kOutlinePoints = 96;  // points per closed outline on the map
+
+// Ring of wall points at chord distance `radius` [m] from the wall point at theta = 0 (the
+// fovea lies on the axis, eye.h), by bisection on theta per meridian (chord grows with theta).
+std::vector<sim::Vec3> ringAroundPole(const anatomy::Eye& eye, double radius) {
+  const anatomy::CavityShape& shape = eye.cavity();
+  std::vector<sim::Vec3> out;
+  for (int k = 0; k < kOutlinePoints; ++k) {
+    const double m = 2.0 * std::numbers::pi * k / kOutlinePoints;
+    const sim::Vec3 centre = shape.wallPoint({0.0, m});
+    double lo = 0.0, hi = shape.rimTheta();
+    for (int it = 0; it < 50; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      ((shape.wallPoint({mid, m}) - centre).norm() < radius ? lo : hi) = mid;
+    }
+    out.push_back(shape.wallPoint({lo, m}));
+  }
+  return out;
+}
+
+std::string millimetres(double metres) { return formatNumber(metres * 1e3, 3) + " mm"; }
+
+}  // namespace
+
+ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
+  ReportInput in;
+  in.title = s.title;
+  in.eyeSide = std::string(toString(p.eye.side.value));
+
+  // The scenario in words.
+  {
+    std::ostringstream eye;
+    eye << "Eye: " << (p.eye.side.value == EyeSide::kOd ? "right (OD)" : "left (OS)") << ", "
+        << toString(p.eye.kind.value) << " vitreous cavity of "
+        << formatNumber(s.cavityVolume * 1e6, 3) << " mL";
+    if (p.eye.axialLength) eye << ", axial length " << millimetres(p.eye.axialLength->value);
+    if (p.eye.staphylomaDepth)
+      eye << ", staphyloma " << millimetres(p.eye.staphylomaDepth->value) << " deep";
+    eye << ". " << p.eye.breaks.size() << (p.eye.breaks.size() == 1 ? " break." : " breaks.");
+    in.scenario.push_back(eye.str());
+    std::ostringstream fill;
+    const FluidPhase& oil = s.phases[1];
+    fill << "Tamponade: " << oil.material << " (" << formatNumber(oil.density, 4)
+         << " kg/m\u00b3, " << formatNumber(oil.dynamicViscosity, 3) << " Pa s), "
+         << formatPercent(p.tamponade.fill.value) << " fill; the rest is aqueous ("
+         << formatNumber(s.phases[0].density, 4) << " kg/m\u00b3). The "
+         << (oil.density < s.phases[0].density ? "oil floats (lighter than aqueous)."
+                                               : "tamponade sinks (heavier than aqueous).");
+    in.scenario.push_back(fill.str());
+    std::ostringstream schedule;
+    schedule << "Posture schedule:";
+    for (std::size_t k = 0; k < s.schedule.size(); ++k)
+      schedule << (k == 0 ? " " : ", then ") << s.schedule[k].label << " for "
+               << (s.schedule[k].untilSteady ? "until steady, at most " : "")
+               << formatNumber(s.schedule[k].duration, 4) << " s";
+    schedule << ".";
+    in.scenario.push_back(schedule.str());
+    if (p.description) in.scenario.push_back(p.description->value);
+    for (const auto& note : s.notes) in.scenario.push_back("Note: " + note + ".");
+  }
+
+  double t = 0.0;
+  for (const auto& posture : s.schedule) {
+    in.postures.push_back({posture.label, t, t + posture.duration});
+    t += posture.duration;
+  }
+
+  // Breaks: a ring of the break's radius around its centre in the tangent plane, projected to
+  // the wall.
+  for (std::size_t b = 0; b < s.breaks.size(); ++b) {
+    const anatomy::RetinalBreak& br = s.breaks[b];
+    ReportBreak rb;
+    rb.name = br.name();
+    std::ostringstream where;
+    const anatomy::ClinicalPosition& pos = br.spec().position;
+    where << formatNumber(pos.clockHour, 3) << " o'clock, " << millimetres(pos.distance)
+          << " posterior to the "
+          << (pos.from == anatomy::DistanceReference::kLimbus ? "limbus" : "ora serrata")
+          << ", " << millimetres(br.spec().diameter) << " across";
+    rb.where = where.str();
+    const sim::Vec3 c = br.centre().position, n = br.centre().normal;
+    const sim::Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+    const double r = 0.5 * br.spec().diameter;
+    const anatomy::CavityShape& shape = s.eye->cavity();
+    for (int k = 0; k < 32; ++k) {
+      const double a = 2.0 * std::numbers::pi * k / 32;
+      const sim::Vec3 q = c + r * (std::cos(a) * t1 + std::sin(a) * t2);
+      rb.outline.push_back(shape.wallPoint(shape.closestWallCoordinate(q)));
+    }
+    in.breaks.push_back(std::move(rb));
+  }
+
+  // Landmarks.
+  if (s.eye) {
+    const anatomy::Eye& eye = *s.eye;
+    const anatomy::CavityShape& shape = eye.cavity();
+    ReportOutline ora{"ora serrata", {}, true}, equator{"equator", {}, true};
+    for (int k = 0; k < kOutlinePoints; ++k) {
+      const double m = 2.0 * std::numbers::pi * k / kOutlinePoints;
+      ora.points.push_back(shape.wallPoint(eye.wallCoordinateAt(m, eye.landmarks().oraFromLimbus)));
+      equator.points.push_back(shape.wallPoint({0.5 * std::numbers::pi, m}));
+    }
+    in.outlines.push_back(std::move(ora));
+    in.outlines.push_back(std::move(equator));
+    in.outlines.push_back({"posterior pole", ringAroundPole(eye, eye.landmarks().posteriorPoleRadius), true});
+    in.outlines.push_back({"macula", ringAroundPole(eye, 0.5 * eye.landmarks().maculaDiameter), true});
+  }
+
+  const AccuracySettings& a = s.accuracy;
+  in.accuracy = {
+      {"preset", a.preset, "draft / standard / fine (docs/protocols.md)"},
+      {"particle spacing", millimetres(a.particleSpacing),
+       "coverage boundaries are resolved to about one spacing; the flat-interface test bounds "
+       "the whole-retina coverage error by |z0| d / R^2 + 1 % (tests/protocols/test_coverage.cpp)"},
+      {"kernel support radius", millimetres(2.0 * a.particleSpacing), "h = 2 d, cubic spline"},
+      {"solver tolerance", formatNumber(a.solverTolerance, 3),
+       "mean relative density error at which the pressure solve stops"},
+      {"time step bounds", formatNumber(a.minTimeStep, 3) + " s to " + formatNumber(a.maxTimeStep, 3) + " s",
+       "CFL 0.4 and the stages' limits choose the step inside these bounds"},
+      {"particles", std::to_string(s.phases[0].count) + " aqueous, " +
+                        std::to_string(s.phases[1].count) + " tamponade, " +
+                        std::to_string(s.world->walls.size()) + " wall",
+       "fluid started at " + formatNumber(s.fillCompression, 3) +
+           " x rest density so that it fills the cavity (protocols/scenario/scenario.h MassRule)"},
+  };
+  return in;
+}
+
+}  // namespace protocols

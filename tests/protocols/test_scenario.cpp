@@ -1,0 +1,255 @@
+// Scenario assembly: a protocol becomes walls with regions and breaks, two fluid phases that
+// carry their true masses on the right side of the fill plane, a World and PipelineOptions; and
+// `tamponade plan` on a good and a bad protocol.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "protocols/format/parse_protocol.h"
+#include "protocols/format/protocol_error.h"
+#include "protocols/scenario/plan_scenario.h"
+#include "protocols/scenario/scenario.h"
+
+namespace fs = std::filesystem;
+using namespace protocols;
+
+namespace {
+
+const fs::path kProtocols = fs::path(TAMPONADE_SOURCE_DIR) / "data" / "protocols";
+
+// Phase masses and volumes.
+struct PhaseTotals {
+  double mass = 0.0;  // [kg]
+  std::size_t count = 0;
+};
+PhaseTotals totalsOf(const Scenario& s, int material) {
+  PhaseTotals t;
+  for (std::size_t i = 0; i < s.world->particles.size(); ++i)
+    if (s.world->particles.material[i] == material) t.mass += s.world->particles.mass[i], ++t.count;
+  return t;
+}
+
+struct CommandResult {
+  int exitCode;
+  std::string output;
+};
+CommandResult runTamponade(const std::string& arguments, const fs::path& workingDirectory) {
+  const std::string command =
+      "cd '" + workingDirectory.string() + "' && '" TAMPONADE_EXECUTABLE "' " + arguments + " 2>&1";
+  CommandResult result{-1, {}};
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::array<char, 4096> buffer{};
+  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+}  // namespace
+
+TEST_CASE("tiny protocol assembles: walls with regions, phases with their true masses", "[unit][scenario]") {
+  const Protocol p = parseProtocol((kProtocols / "tiny.toml").string());
+  const Scenario s = assembleScenario(p);
+  const double d = s.accuracy.particleSpacing;
+  REQUIRE(d == Approx(1.2e-3));  // the protocol's explicit spacing
+  REQUIRE(s.eye.has_value());
+  const sim::World& w = *s.world;
+  REQUIRE(w.initialized());
+  // Walls: one per RetinaMap entry, tag = region bits, the cap (region 0) and retina both present.
+  REQUIRE(w.walls.size() == s.retina.areas.size());
+  std::size_t retinal = 0;
+  double area = 0.0;
+  for (std::size_t k = 0; k < w.walls.size(); ++k) {
+    CHECK(w.walls.tag[k] == static_cast<int>(s.retina.regions[k]));
+    retinal += s.retina.regions[k] != 0;
+    area += s.retina.areas[k];
+  }
+  CHECK(retinal > 0);
+  CHECK(retinal < w.walls.size());
+  // Wall areas are sampleSurface's Voronoi areas: they sum to the mesh area (round-off).
+  CHECK(area == Approx(s.cavityArea).epsilon(1e-9));
+  // Phases: 90 % of the cavity volume is oil (findFillPlane solves that to 1e-12 of the extent),
+  // and each phase's particles carry rho * V_phase in total (round-off of the sum).
+  const FluidPhase& aq = s.phases[0];
+  const FluidPhase& oil = s.phases[1];
+  CHECK(oil.material == "silicone_oil_1000");
+  CHECK(oil.volume / (oil.volume + aq.volume) == Approx(0.9).epsilon(1e-9));
+  CHECK(oil.volume + aq.volume == Approx(s.cavityVolume).epsilon(1e-9));
+  const PhaseTotals oilTotals = totalsOf(s, oil.materialIndex), aqTotals = totalsOf(s, aq.materialIndex);
+  CHECK(oilTotals.count == oil.count);
+  CHECK(aqTotals.count == aq.count);
+  // Default mass rule (kFillCavity): every particle m = rho d^3 f, one factor f for all, such that
+  // the fluid's rest volume is V - A d/2 (round-off of the sums).
+  double restVolume = 0.0;  // [m^3]
+  for (std::size_t i = 0; i < w.particles.size(); ++i) {
+    const double rho0 = w.restDensityOf(static_cast<sim::Index>(i));
+    CHECK(w.particles.mass[i] == Approx(rho0 * d * d * d * s.fillCompression).epsilon(1e-14));
+    restVolume += w.particles.mass[i] / rho0;
+  }
+  CHECK(restVolume == Approx(s.cavityVolume - 0.5 * d * s.cavityArea).epsilon(1e-12));
+  CHECK(s.fillCompression > 1.0);
+  const double share = static_cast<double>(oil.count) / static_cast<double>(oil.count + aq.count);
+  CHECK(std::abs(share - 0.9) <= 0.5 / static_cast<double>(oil.count + aq.count) + 1e-15);
+  {
+    // kTrueMass: each phase carries rho * V_phase.
+    ScenarioOptions trueMass;
+    trueMass.massRule = MassRule::kTrueMass;
+    const Scenario t = assembleScenario(p, trueMass);
+    CHECK(totalsOf(t, t.phases[1].materialIndex).mass == Approx(oil.density * oil.volume).epsilon(1e-12));
+    CHECK(totalsOf(t, t.phases[0].materialIndex).mass == Approx(aq.density * aq.volume).epsilon(1e-12));
+  }
+  // First posture supine: gravity -z; light oil floats, so every oil particle is at least as
+  // anterior (z) as every aqueous one.
+  const double g = p.schedule.gravity.value;  // [m/s^2] the protocol's (default) magnitude
+  CHECK(g == Approx(9.81).epsilon(0.001));
+  CHECK(w.gravity.isApprox(sim::Vec3(0, 0, -g), 1e-12));
+  double minOilZ = 1e9, maxAqZ = -1e9;
+  for (std::size_t i = 0; i < w.particles.size(); ++i)
+    (w.particles.material[i] == oil.materialIndex ? minOilZ : maxAqZ) =
+        w.particles.material[i] == oil.materialIndex ? std::min(minOilZ, w.particles.x[i].z())
+                                                     : std::max(maxAqZ, w.particles.x[i].z());
+  CHECK(minOilZ >= maxAqZ);  // equal inside the one lattice layer the count splits
+  // Wall gap: no fluid particle closer than 1.2 d to the wall surface, hence to a wall particle
+  // (wall particles lie on the surface); 1e-9 m covers the AABB distance round-off.
+  double closest = 1e9;
+  for (std::size_t i = 0; i < w.particles.size(); ++i)
+    for (std::size_t k = 0; k < w.walls.size(); ++k)
+      closest = std::min(closest, (w.particles.x[i] - w.walls.x[k]).norm());
+  CHECK(closest >= 1.2 * d - 1e-9);
+  // The break: wall particles within its radius of its centre, all retinal and superior.
+  REQUIRE(s.retina.breakWalls.size() == 1);
+  CHECK(s.retina.breakNames[0] == "superior tear");
+  CHECK_FALSE(s.retina.breakWalls[0].empty());
+  for (std::size_t k : s.retina.breakWalls[0]) {
+    CHECK((w.walls.x[k] - s.breaks[0].centre().position).norm() <= 1e-3 + 1e-12);
+    CHECK((s.retina.regions[k] & anatomy::kSuperior) != 0);
+  }
+  // Schedule in the eye frame.
+  REQUIRE(s.schedule.size() == 2);
+  CHECK(s.schedule[1].gravity.isApprox(sim::Vec3(0, -g, 0), 1e-12));
+  CHECK(s.totalDuration() == Approx(1.0));
+  // Tissues are not part of this protocol; no note about them.
+  for (const auto& note : s.notes) CHECK(note.find("tissues") == std::string::npos);
+}
+
+TEST_CASE("heavy oil sinks; tissues are noted as left out", "[unit][scenario]") {
+  const Protocol p = parseProtocol((kProtocols / "heavy_oil_inferior_break.toml").string());
+  ScenarioOptions draft;
+  draft.accuracy = AccuracyPreset::kDraft;
+  const Scenario s = assembleScenario(p, draft);
+  const FluidPhase& oil = s.phases[1];
+  CHECK(oil.density > s.phases[0].density);
+  // Supine first: gravity -z, the heavy oil lies posterior (smaller z) to the aqueous.
+  double maxOilZ = -1e9, minAqZ = 1e9;
+  for (std::size_t i = 0; i < s.world->particles.size(); ++i) {
+    const double z = s.world->particles.x[i].z();
+    if (s.world->particles.material[i] == oil.materialIndex) maxOilZ = std::max(maxOilZ, z);
+    else minAqZ = std::min(minAqZ, z);
+  }
+  CHECK(maxOilZ <= minAqZ);
+  bool noted = false;
+  for (const auto& note : s.notes) noted = noted || note.find("tissues") != std::string::npos;
+  CHECK(noted);
+}
+
+TEST_CASE("forced effects reach the pipeline; one-fluid scenes", "[unit][scenario]") {
+  const fs::path dir = fs::temp_directory_path() / "tamponade_scenario_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string base = "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OS\"\n"
+                           "[tamponade]\nagent = \"silicone_oil_1000\"\n";
+  const std::string rest = "[schedule]\n[[schedule.postures]]\nname = \"upright\"\nduration = \"1 s\"\n"
+                           "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n";
+  std::ofstream(dir / "off.toml") << base << "fill = \"80 %\"\n" << rest << "[effects]\nviscosity = false\n";
+  std::ofstream(dir / "full.toml") << base << "fill = 1.0\n" << rest;
+  std::ofstream(dir / "missing.toml") << base << "fill = \"80 %\"\n" << rest
+                                      << "[effects]\ninterfacial_tension = true\n";
+  {
+    Scenario s = assembleScenario(parseProtocol((dir / "off.toml").string()));
+    CHECK(s.pipelineOptions.forced.at("viscosity") == sim::Force::kOff);
+    const sim::Pipeline pipeline = sim::assemblePipeline(*s.world, s.pipelineOptions);
+    CHECK_FALSE(pipeline.hasStage("viscosity"));
+    Scenario t = assembleScenario(parseProtocol((dir / "full.toml").string()));
+    CHECK(t.pipelineOptions.forced.empty());
+    CHECK(sim::assemblePipeline(*t.world, t.pipelineOptions).hasStage("viscosity"));
+    // A full fill: no aqueous particles, a note saying so.
+    CHECK(t.phases[0].count == 0);
+    CHECK(t.phases[1].count == t.world->particles.size());
+    bool noted = false;
+    for (const auto& note : t.notes) noted = noted || note.find("one fluid only") != std::string::npos;
+    CHECK(noted);
+  }
+  // Forcing on an effect this build lacks: a ProtocolError at the line that forces it.
+  try {
+    assembleScenario(parseProtocol((dir / "missing.toml").string()));
+    FAIL("expected a ProtocolError");
+  } catch (const ProtocolError& e) {
+    REQUIRE(e.diagnostics().size() == 1);
+    CHECK(e.diagnostics()[0].where.line == 16);  // `interfacial_tension = true`
+    CHECK_THAT(e.diagnostics()[0].toString(),
+               Catch::Contains("effect 'interfacial_tension' is forced on but this build does not have it"));
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("tamponade plan: tiny protocol prints counts, stages, memory and estimates", "[unit][scenario][cli]") {
+  const fs::path dir = fs::temp_directory_path() / "tamponade_plan_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const CommandResult r = runTamponade("plan '" + (kProtocols / "tiny.toml").string() + "'", dir);
+  INFO(r.output);
+  CHECK(r.exitCode == 0);
+  for (const char* text : {"particles per material:", "aqueous", "silicone_oil_1000", "wall",
+                           "pipeline (in execution order):", "stage decisions:", "memory:",
+                           "cost model: calibrated by 5 steps", "estimated run time", "draft",
+                           "standard", "fine"})
+    CHECK(r.output.find(text) != std::string::npos);
+  // The library's own numbers match what is printed.
+  Scenario s = assembleScenario(parseProtocol((kProtocols / "tiny.toml").string()));
+  CHECK(r.output.find(std::to_string(s.phases[1].count)) != std::string::npos);
+  CHECK(r.output.find(std::to_string(s.world->walls.size())) != std::string::npos);
+  CHECK(fs::is_empty(dir));  // plan writes nothing
+  fs::remove_all(dir);
+}
+
+TEST_CASE("tamponade plan: a bad protocol exits 2 with file:line:col and creates nothing", "[unit][scenario][cli]") {
+  const fs::path dir = fs::temp_directory_path() / "tamponade_plan_bad_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "bad.toml") << "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
+                                     "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = 1.5\n"
+                                     "[schedule]\n[[schedule.postures]]\nname = \"supine\"\n"
+                                     "duration = \"1 s\"\n[outputs]\nfolder = \"out\"\n";
+  const CommandResult r = runTamponade("plan bad.toml", dir);
+  INFO(r.output);
+  CHECK(r.exitCode == 2);
+  CHECK(r.output.find("bad.toml:7:8: tamponade.fill = 1.5 is outside the allowed range (0, 1]") != std::string::npos);
+  CHECK(r.output.find("nothing was run") != std::string::npos);
+  CHECK(!fs::exists(dir / "out"));
+  CHECK(runTamponade("plan", dir).exitCode == 2);  // usage
+  fs::remove_all(dir);
+}
+
+TEST_CASE("plan cost model scales particles and steps by the spacing", "[unit][scenario]") {
+  Scenario s = assembleScenario(parseProtocol((kProtocols / "tiny.toml").string()));
+  const ScenarioPlan plan = planScenario(s, {2});
+  CHECK(plan.dynamicParticles == s.phases[0].count + s.phases[1].count);
+  CHECK(plan.secondsPerParticleStep > 0.0);
+  CHECK(plan.neighborListBytes > plan.dynamicParticles * sizeof(sim::Index));
+  // Particle counts scale as (d / d_preset)^3 from the scenario's own spacing.
+  const double d = s.accuracy.particleSpacing;
+  for (const PresetEstimate& e : plan.presets) {
+    CHECK(e.particles == Approx(plan.dynamicParticles * std::pow(d / e.particleSpacing, 3)).epsilon(1e-12));
+    CHECK(e.seconds == Approx(e.steps * e.particles * plan.secondsPerParticleStep).epsilon(1e-12));
+    CHECK(e.steps == std::ceil(plan.simulatedDuration / e.timeStep));
+  }
+  // Finer presets cost more.
+  CHECK(plan.presets[0].seconds < plan.presets[1].seconds);
+  CHECK(plan.presets[1].seconds < plan.presets[2].seconds);
+}

@@ -1,0 +1,141 @@
+// `tamponade run` end to end on a few milliseconds of a coarse eye: outputs exist and agree,
+// the report is well-formed, two runs at the same thread count give identical coverage, and a
+// used folder or a bad protocol exits 2 without touching anything.
+#include <catch2/catch.hpp>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "protocols/io/frame_reader.h"
+#include "sim/core/particle_set.h"
+#include "xml_checker.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CommandResult {
+  int exitCode;
+  std::string output;
+};
+CommandResult runTamponade(const std::string& arguments, const fs::path& workingDirectory) {
+  // Passive OpenMP waiting: the CI machine is shared, and spinning threads that wait for a
+  // descheduled one made steps 100x slower there (protocols/scenario/README.md).
+  const std::string command = "cd '" + workingDirectory.string() + "' && OMP_WAIT_POLICY=passive '" +
+                              TAMPONADE_EXECUTABLE "' " + arguments + " 2>&1";
+  CommandResult result{-1, {}};
+  FILE* pipe = popen(command.c_str(), "r");
+  REQUIRE(pipe != nullptr);
+  std::array<char, 4096> buffer{};
+  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+  const int status = pclose(pipe);
+  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return result;
+}
+
+std::string readText(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+// 8 ms simulated (two postures of 4 ms) at d = 1.5 mm: ~1000 particles, ~110 steps, ~1 s.
+constexpr const char* kShortProtocol =
+    "format_version = 1\ntitle = \"Short run\"\n"
+    "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
+    "[[eye.breaks]]\nname = \"superior tear\"\nclock_hour = 12\nposterior_to_limbus = \"14 mm\"\n"
+    "diameter = \"2 mm\"\n"
+    "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"90 %\"\n"
+    "[schedule]\n[[schedule.postures]]\nname = \"supine\"\nduration = \"4 ms\"\n"
+    "[[schedule.postures]]\nname = \"upright\"\nduration = \"4 ms\"\n"
+    "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n"
+    "[outputs]\nframe_interval = \"2 ms\"\n";
+
+}  // namespace
+
+TEST_CASE("tamponade run: a short protocol writes frames, series and a well-formed report",
+          "[unit][scenario][cli]") {
+  const fs::path dir = fs::temp_directory_path() / "tamponade_run_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "short.toml") << kShortProtocol;
+  const CommandResult r = runTamponade("run short.toml --out a --threads 1", dir);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK(r.output.find("run finished:") != std::string::npos);
+  for (const char* f : {"frames.h5", "frames.xmf", "report.html", "coverage.csv", "summary.json"})
+    CHECK(fs::exists(dir / "a" / f));
+  const std::string html = readText(dir / "a" / "report.html");
+  CHECK(protocols_test::checkXml(html).empty());
+  CHECK(html.find("superior tear") != std::string::npos);
+  // Frames at 0, every 2 ms (the first step past each multiple) and the end: 5 rows.
+  const std::string csv = readText(dir / "a" / "coverage.csv");
+  CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 5);
+  // The printed mean coverage is the report's.
+  const std::size_t at = r.output.find("mean retinal coverage ");
+  REQUIRE(at != std::string::npos);
+  const std::string mean = r.output.substr(at + 22, r.output.find('\n', at) - at - 22);
+  CHECK(html.find("oil covered on average <strong>" + mean + "</strong>") != std::string::npos);
+
+  // Same thread count, same result, bit for bit (deterministic sums, static schedules).
+  const CommandResult again = runTamponade("run short.toml --out b --threads 1", dir);
+  REQUIRE(again.exitCode == 0);
+  CHECK(readText(dir / "b" / "coverage.csv") == csv);
+
+  // `tamponade report DIR` recomputes the coverage from the frames: the same CSV, bit for bit
+  // (float64 frames hold the exact state), and the same numbers in the HTML.
+  fs::remove(dir / "a" / "coverage.csv");
+  fs::remove(dir / "a" / "report.html");
+  const CommandResult rebuilt = runTamponade("report a", dir);
+  INFO(rebuilt.output);
+  CHECK(rebuilt.exitCode == 0);
+  CHECK(readText(dir / "a" / "coverage.csv") == csv);
+  const std::string html2 = readText(dir / "a" / "report.html");
+  CHECK(protocols_test::checkXml(html2).empty());
+  CHECK(html2.find("oil covered on average <strong>" + mean + "</strong>") != std::string::npos);
+  CHECK(runTamponade("report nowhere", dir).exitCode == 2);
+
+  // Stopped at step 48 (as by Ctrl-C: checkpoint, exit 1, no report), then resumed: the same
+  // coverage and the same final particle state as the uninterrupted run, bit for bit.
+  const CommandResult stopped = runTamponade("run short.toml --out s --threads 1 --stop-after-steps 48", dir);
+  INFO(stopped.output);
+  CHECK(stopped.exitCode == 1);
+  CHECK(stopped.output.find("tamponade run --resume s") != std::string::npos);
+  CHECK(fs::exists(dir / "s" / "checkpoint.h5"));
+  CHECK_FALSE(fs::exists(dir / "s" / "report.html"));
+  const CommandResult resumed = runTamponade("run --resume s --threads 1", dir);
+  INFO(resumed.output);
+  CHECK(resumed.exitCode == 0);
+  CHECK(readText(dir / "s" / "coverage.csv") == csv);
+  {
+    const protocols::FrameReader continuous(dir / "a" / "frames.h5"), restarted(dir / "s" / "frames.h5");
+    REQUIRE(continuous.frames().size() == restarted.frames().size());
+    const std::size_t last = continuous.frames().size() - 1;
+    CHECK(continuous.frames()[last].step == restarted.frames()[last].step);
+    CHECK(continuous.frames()[last].time == restarted.frames()[last].time);
+    for (const char* field : {sim::field::kPosition, sim::field::kVelocity})
+      CHECK(continuous.readField(last, "fluid", field).reals == restarted.readField(last, "fluid", field).reals);
+  }
+  CHECK(runTamponade("run --resume a", dir).exitCode == 2);  // no checkpoint there
+
+  // A folder that holds a run is refused, untouched.
+  const auto before = fs::last_write_time(dir / "a" / "frames.h5");
+  const CommandResult used = runTamponade("run short.toml --out a", dir);
+  CHECK(used.exitCode == 2);
+  CHECK(used.output.find("already holds a run") != std::string::npos);
+  CHECK(fs::last_write_time(dir / "a" / "frames.h5") == before);
+
+  // A bad protocol: exit 2, file:line:col, no folder.
+  std::ofstream(dir / "bad.toml") << "format_version = 1\n[eye]\nkind = \"emetropic\"\n";
+  const CommandResult bad = runTamponade("run bad.toml --out c", dir);
+  CHECK(bad.exitCode == 2);
+  CHECK(bad.output.find("bad.toml:3:") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "c"));
+  fs::remove_all(dir);
+}

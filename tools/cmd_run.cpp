@@ -1,0 +1,169 @@
+// `tamponade run PROTOCOL [--out DIR] [--accuracy draft|standard|fine] [--threads N]`: assembles
+// and runs a protocol, writing frames, the coverage series and the report into the output folder.
+// The protocol is validated and the scene assembled before the folder is created.
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <cstdio>
+#include <filesystem>
+#include <string>
+
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "protocols/format/parse_protocol.h"
+#include "protocols/report/report_format.h"
+#include "protocols/scenario/rebuild_report.h"
+#include "protocols/scenario/run_scenario.h"
+#include "tools/commands.h"
+
+namespace tools {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: tamponade run PROTOCOL.toml [--out DIR] [--accuracy draft|standard|fine] [--threads N]\n"
+    "       tamponade run --resume DIR [--threads N]\n\n"
+    "Runs the protocol: frames.h5 + frames.xmf (ParaView), the coverage time series, and\n"
+    "report.html, coverage.csv, summary.json in the output folder (default: the protocol's\n"
+    "outputs.folder). Checkpoints go to DIR/checkpoint.h5 every 1024 steps and on Ctrl-C or\n"
+    "SIGTERM (after at most 15 more steps); --resume DIR continues such a run, with the same\n"
+    "result as an uninterrupted run at the same thread count.\n"
+    "Bad protocols: file:line:column, exit code 2, nothing created. A stopped run exits 1.\n"
+    "(--stop-after-steps N stops as if interrupted at step N: for tests.)\n";
+
+// Set by SIGINT/SIGTERM; the run checkpoints and stops at its next checkpointable step.
+// std::atomic<bool> is lock-free here, so storing to it is async-signal-safe.
+std::atomic<bool> gStop{false};
+static_assert(std::atomic<bool>::is_always_lock_free);
+extern "C" void onSignal(int) { gStop.store(true); }
+
+int usage() {
+  std::fputs(kUsage, stderr);
+  return 2;
+}
+
+}  // namespace
+
+int runRun(Args args) {
+  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
+    std::fputs(kUsage, stdout);
+    return 0;
+  }
+  std::string file, out, resume;
+  protocols::ScenarioOptions options;
+  int threads = 0;
+  long stopAfter = -1;
+  for (std::size_t k = 0; k < args.size(); ++k) {
+    const bool hasValue = k + 1 < args.size();
+    if (args[k] == "--out" && hasValue) {
+      out = std::string(args[++k]);
+    } else if (args[k] == "--resume" && hasValue) {
+      resume = std::string(args[++k]);
+    } else if (args[k] == "--stop-after-steps" && hasValue) {
+      stopAfter = std::atol(std::string(args[++k]).c_str());
+    } else if (args[k] == "--threads" && hasValue) {
+      try {
+        threads = std::stoi(std::string(args[++k]));
+      } catch (const std::exception&) {
+        threads = 0;
+      }
+      if (threads < 1) {
+        std::fprintf(stderr, "tamponade run: --threads needs a positive integer\n");
+        return 2;
+      }
+    } else if (args[k] == "--accuracy" && hasValue) {
+      bool found = false;
+      for (std::size_t p = 0; p < protocols::kAccuracyPresetNames.size(); ++p)
+        if (protocols::kAccuracyPresetNames[p] == args[k + 1]) {
+          options.accuracy = static_cast<protocols::AccuracyPreset>(p);
+          found = true;
+        }
+      if (!found) {
+        std::fprintf(stderr, "tamponade run: unknown accuracy '%s' (use draft, standard or fine)\n",
+                     std::string(args[k + 1]).c_str());
+        return 2;
+      }
+      ++k;
+    } else if (!args[k].starts_with("-") && file.empty()) {
+      file = std::string(args[k]);
+    } else {
+      return usage();
+    }
+  }
+  if (file.empty() == resume.empty()) return usage();  // exactly one of PROTOCOL, --resume DIR
+  if (!resume.empty() && (options.accuracy || !out.empty())) return usage();
+#ifdef _OPENMP
+  if (threads > 0) omp_set_num_threads(threads);
+#endif
+  try {
+    if (!resume.empty() && !std::filesystem::exists(std::filesystem::path(resume) / "checkpoint.h5")) {
+      std::fprintf(stderr, "tamponade run: %s has no checkpoint.h5 to resume from\n", resume.c_str());
+      return 2;
+    }
+    const protocols::Protocol protocol =
+        resume.empty() ? protocols::parseProtocol(file) : protocols::loadRunProtocol(resume, options);
+    protocols::Scenario scenario = protocols::assembleScenario(protocol, options);
+    const std::filesystem::path folder(!resume.empty() ? resume
+                                       : out.empty()   ? protocol.outputs.folder.value
+                                                       : out);
+    if (resume.empty() && std::filesystem::exists(folder / "frames.h5")) {
+      std::fprintf(stderr, "tamponade run: %s already holds a run (frames.h5); choose another --out "
+                   "or remove it\n", folder.string().c_str());
+      return 2;
+    }
+    std::filesystem::create_directories(folder);
+    for (const auto& note : scenario.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+
+    const bool terminal = isatty(fileno(stderr)) != 0;
+    const auto start = std::chrono::steady_clock::now();
+    double nextReport = 0.0;  // [1] fraction of the run at which the next plain line is printed
+    protocols::RunOptions run;
+    run.outputFolder = folder;
+    run.resume = !resume.empty();
+    run.stopAfterSteps = stopAfter;
+    run.stopRequested = &gStop;
+    std::signal(SIGINT, onSignal);
+    std::signal(SIGTERM, onSignal);
+    if (options.accuracy)
+      run.accuracyOverride = std::string(protocols::kAccuracyPresetNames[static_cast<std::size_t>(*options.accuracy)]);
+    run.progress = [&](const protocols::RunProgress& p) {
+      const double done = p.endTime > 0 ? std::min(1.0, p.time / p.endTime) : 1.0;
+      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
+      if (terminal) {
+        const int width = 30, filled = static_cast<int>(done * width);
+        std::fprintf(stderr, "\r[%.*s%*s] %5.1f %%  t = %.4g s  %s  step %ld  ETA %.0f s ", filled,
+                     "##############################", width - filled, "", 100 * done, p.time,
+                     p.posture.c_str(), p.steps, eta);
+      } else if (done >= nextReport) {
+        std::fprintf(stderr, "%5.1f %%  t = %.4g s  %s  step %ld  elapsed %.0f s  ETA %.0f s\n",
+                     100 * done, p.time, p.posture.c_str(), p.steps, elapsed, eta);
+        nextReport += 0.1;
+      }
+    };
+    const protocols::RunSummary summary = protocols::runScenario(protocol, scenario, run);
+    if (terminal) std::fputc('\n', stderr);
+    if (summary.stopped) {
+      std::printf("run stopped at t = %.6g s (step %ld) with a checkpoint; continue with\n"
+                  "  tamponade run --resume %s\n",
+                  summary.simulatedTime, summary.steps, folder.string().c_str());
+      return 1;
+    }
+    std::printf("run finished: %ld steps, %zu frames, %.4g s simulated in %.1f s; mean retinal "
+                "coverage %s\noutput: %s\n",
+                summary.steps, summary.frames, summary.simulatedTime, summary.wallSeconds,
+                protocols::formatPercent(summary.retinaCoverage).c_str(), folder.string().c_str());
+    return 0;
+  } catch (const protocols::ProtocolError& e) {
+    for (const protocols::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.toString().c_str());
+    std::fprintf(stderr, "%zu problem%s found; nothing was run.\n", e.diagnostics().size(),
+                 e.diagnostics().size() == 1 ? "" : "s");
+    return 2;
+  }
+}
+
+}  // namespace tools
