@@ -22,6 +22,10 @@ const std::vector<SolverEntry>& solverRegistry() {
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<IndsphWang2023>(o.indsph);
        }},
+      {"iisph", "implicit incompressible SPH, relaxed Jacobi (Ihmsen et al. 2013)",
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<IisphIhmsen2013>(o.iisph);
+       }},
       {"number_density", "explicit number-density SPH, Tait EOS (Solenthaler & Pajarola 2008)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<NumberDensitySolenthaler2008>(o.wcsph);
