@@ -19,8 +19,8 @@ void DfsphBender2017::attach(World& world) {
   factor_ = &f.addOrGet<Real>({"dfsph_factor", "m^5/kg", false, false});
   pressure_ = &f.addOrGet<Real>({"pressure", "Pa", false, true});
   // Warm-start values change the next step's result, so a bit-identical resume needs them.
-  kappaDensity_ = &f.addOrGet<Real>({"dfsph_kappa_density", "kg/m^3", true, false});
-  kappaDivergence_ = &f.addOrGet<Real>({"dfsph_kappa_divergence", "kg/m^3", true, false});
+  kappaDensity_ = &f.addOrGet<Real>({"dfsph_kappa_density", "m^2/s^2", true, false});
+  kappaDivergence_ = &f.addOrGet<Real>({"dfsph_kappa_divergence", "m^2/s^2", true, false});
 }
 
 void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt) {
@@ -113,6 +113,10 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   const Kernel& kernel = world.kernel;
   const Index n = static_cast<Index>(p.size());
   computeDensities(world, p.density);
+  // The pipeline may redo correctVelocities with a shorter dt (step rejection); every attempt must
+  // warm-start from the last ACCEPTED step, not from the rejected attempt's accumulation.
+  densityWarmStart_ = *kappaDensity_;
+  divergenceDt_ = context.dt;
   predicted_.resize(n);
   kappa_.resize(n);
 
@@ -146,12 +150,14 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   // Warm start only where the fluid is still compressing: re-applying last step's pressure to a
   // particle that is now expanding would push it apart further and inject energy (the same
   // condition SPlisHSPlasH applies).
+  // kappaDivergence_ holds last step's accumulated stiffness (a pressure per density, m^2/s^2),
+  // not stiffness * dt: the pressure is what persists from step to step when dt changes.
   auto& warm = *kappaDivergence_;
   computeDensityRate(world);
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    kappa_[i] = predicted_[i] > 0 ? params_.warmStartFactor * warm[i] / dt : 0.0;
-    warm[i] = kappa_[i] * dt;
+    kappa_[i] = predicted_[i] > 0 ? params_.warmStartFactor * warm[i] : 0.0;
+    warm[i] = kappa_[i];
   }
   if (params_.warmStartFactor > 0) applyPressureVelocity(world, kappa_, dt);
   Real error = computeDensityRate(world) * dt;
@@ -161,7 +167,7 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       kappa_[i] = params_.relaxation * predicted_[i] * (*factor_)[i] / dt;
-      warm[i] += kappa_[i] * dt;
+      warm[i] += kappa_[i];
     }
     applyPressureVelocity(world, kappa_, dt);
     error = computeDensityRate(world) * dt;
@@ -177,15 +183,17 @@ void DfsphBender2017::correctVelocities(World& world, const StepContext& context
   const Real invDt2 = 1.0 / (dt * dt);
   auto& warm = *kappaDensity_;
 
-  // Warm start with a fraction of last step's accumulated stiffness (Bender 2017, section 4.2),
-  // only for particles that the prediction finds compressed (see the divergence solve).
+  // Warm start with a fraction of last step's accumulated stiffness (Bender 2017, section 4.2).
+  // The stored value is the stiffness itself (p/rho), so a change of dt does not rescale the
+  // pressure (storing kappa * dt^2 made a rejected step, redone with dt/2, start from 4x the
+  // pressure, which was rejected again: the jitter of the KNOWN PROBLEM).
   predictDensity(world, dt);
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    kappa_[i] = predicted_[i] > world.restDensityOf(i)
-                    ? params_.warmStartFactor * warm[i] * invDt2
+    kappa_[i] = (!params_.warmStartOnlyCompressed || predicted_[i] > world.restDensityOf(i))
+                    ? params_.warmStartFactor * densityWarmStart_[i]
                     : 0.0;
-    warm[i] = kappa_[i] / invDt2;
+    warm[i] = kappa_[i];
   }
   if (params_.warmStartFactor > 0) applyPressureVelocity(world, kappa_, dt);
 
@@ -202,7 +210,7 @@ void DfsphBender2017::correctVelocities(World& world, const StepContext& context
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       kappa_[i] = params_.relaxation * (predicted_[i] - world.restDensityOf(i)) * invDt2 * (*factor_)[i];
-      warm[i] += kappa_[i] / invDt2;
+      warm[i] += kappa_[i];
     }
     applyPressureVelocity(world, kappa_, dt);
     error = predictDensity(world, dt);
@@ -213,13 +221,13 @@ void DfsphBender2017::correctVelocities(World& world, const StepContext& context
   stats_.averageCompression = error;
   stats_.maxCompression = maxError;
   // Pressure p = kappa * rho (kappa is p/rho in Bender's notation), for output. Both solves apply
-  // pressure impulses over a step (the divergence solve at its start with the last step's length,
-  // stored as kappa * dt), so the pressure that balances the body forces is their sum.
-  const Real lastDt = world.lastTimeStep > 0 ? world.lastTimeStep : dt;
+  // pressure impulses over a step: the divergence solve at its start with the previous step's
+  // length, so its equivalent pressure over this step is kappa_v * dt_prev / dt.
+  const Real divergenceScale = divergenceDt_ > 0 ? divergenceDt_ / dt : 0.0;
   const auto& warmDivergence = *kappaDivergence_;
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i)
-    (*pressure_)[i] = (warm[i] * invDt2 + warmDivergence[i] / lastDt) * p.density[i];
+    (*pressure_)[i] = (warm[i] + warmDivergence[i] * divergenceScale) * p.density[i];
 }
 
 }  // namespace sim

@@ -25,6 +25,7 @@ struct DfsphParameters {
   int maxDivergenceIterations = 100;
   bool divergenceSolve = true;
   Real warmStartFactor = 0.5;       // [1] fraction of last step's pressure applied first
+  bool warmStartOnlyCompressed = true;  // warm-start only particles predicted compressed
   // [1] Jacobi relaxation of each pressure update. The local update with the full factor
   // (omega = 1, Bender's choice) barely damps the checkerboard mode of the pressure field: the
   // residual left when the average-error criterion stops the iteration is particle-scale
@@ -52,10 +53,12 @@ class DfsphBender2017 final : public PressureSolver {
   DfsphParameters params_;
   std::vector<Real>* factor_ = nullptr;       // alpha_i [kg s^2... see header] (not checkpointed)
   std::vector<Real>* pressure_ = nullptr;     // [Pa] last step's pressure, output
-  std::vector<Real>* kappaDensity_ = nullptr; // [kg/m^3] accumulated (rho*-rho0) alpha, warm start
-  std::vector<Real>* kappaDivergence_ = nullptr;  // [kg/m^3 s] accumulated for warm start
+  std::vector<Real>* kappaDensity_ = nullptr; // [m^2/s^2] accumulated stiffness p/rho, warm start
+  std::vector<Real>* kappaDivergence_ = nullptr;  // [m^2/s^2] accumulated for warm start
   std::vector<Real> predicted_;               // rho* or Drho/Dt per particle (scratch)
   std::vector<Real> kappa_;                   // this iteration's k_i (scratch)
+  std::vector<Real> densityWarmStart_;        // [m^2/s^2] last accepted step's kappa (scratch)
+  Real divergenceDt_ = 0;                     // [s] dt the divergence solve used this step
   DeterministicReducer reducer_;
 };
 

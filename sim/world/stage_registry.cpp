@@ -18,6 +18,18 @@ const std::vector<SolverEntry>& solverRegistry() {
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<WcsphBecker2007>(o.wcsph);
        }},
+      {"indsph", "incompressible number-density SPH for multiphase fluids (Wang et al. 2023)",
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<IndsphWang2023>(o.indsph);
+       }},
+      {"iisph", "implicit incompressible SPH, relaxed Jacobi (Ihmsen et al. 2013)",
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<IisphIhmsen2013>(o.iisph);
+       }},
+      {"number_density", "explicit number-density SPH, Tait EOS (Solenthaler & Pajarola 2008)",
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<NumberDensitySolenthaler2008>(o.wcsph);
+       }},
   };
   return entries;
 }
@@ -47,11 +59,12 @@ const std::vector<EffectEntry>& effectRegistry() {
        }},
       {"velocity_smoothing", "XSPH velocity smoothing (Monaghan 1989), numerical damping",
        [](const World&, const PipelineOptions& o) {
-         const bool on = o.velocitySmoothing > 0 && o.solver != "wcsph";
+         const bool explicitSolver = o.solver == "wcsph" || o.solver == "number_density";
+         const bool on = o.velocitySmoothing > 0 && !explicitSolver;
          return StageDecision{
              "velocity_smoothing", on, false,
              on ? "incompressible solver: damps particle-scale noise physical viscosity cannot"
-                : (o.solver == "wcsph" ? "WCSPH carries its own artificial viscosity"
+                : (explicitSolver ? "the explicit solver carries its own artificial viscosity"
                                        : "velocity smoothing set to 0")};
        },
        [](const World&, const PipelineOptions& o) {

@@ -13,6 +13,9 @@
 #include <vector>
 
 #include "sim/fluid/dfsph_bender2017.h"
+#include "sim/fluid/iisph_ihmsen2013.h"
+#include "sim/fluid/indsph_wang2023.h"
+#include "sim/fluid/number_density_solenthaler2008.h"
 #include "sim/fluid/wcsph_becker2007.h"
 #include "sim/world/pipeline.h"
 
@@ -24,7 +27,9 @@ enum class Force { kAuto, kOn, kOff };
 struct PipelineOptions {
   std::string solver = "dfsph";
   DfsphParameters dfsph;
-  WcsphParameters wcsph;
+  WcsphParameters wcsph;             // also the number_density solver's speed of sound
+  IndsphParameters indsph;
+  IisphParameters iisph;
   bool wallFriction = true;              // no-slip viscous walls
   Real velocitySmoothing = 0.05;         // [1] XSPH strength for incompressible solvers (0 = off)
   std::map<std::string, Force> forced;   // effect name -> forced on/off

@@ -1,0 +1,171 @@
+#include "sim/fluid/indsph_wang2023.h"
+
+#include <algorithm>
+
+namespace sim {
+
+void computeNumberDensities(const World& world, std::vector<Real>& delta) {
+  const auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const Real w0 = kernel.W0();
+  const Index n = static_cast<Index>(p.size());
+  delta.resize(n);
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Real sum = w0;
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) sum += kernel.W(p.x[i] - p.x[*j]);
+    Real wall = 0;
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      wall += walls.volume[*b] * kernel.W(p.x[i] - walls.x[*b]);
+    delta[i] = sum + wall / world.restVolumeOf(i);
+  }
+}
+
+IndsphWang2023::IndsphWang2023(const IndsphParameters& parameters) : params_(parameters) {
+  require(params_.tolerance > 0, "INDSPH tolerance eta must be > 0");
+  require(params_.maxIterations >= params_.minIterations && params_.minIterations >= 1,
+          "INDSPH needs 1 <= minIterations <= maxIterations");
+  require(params_.relaxation > 0 && params_.relaxation <= 1, "INDSPH relaxation must be in (0, 1]");
+}
+
+void IndsphWang2023::attach(World& world) {
+  auto& f = world.particles.fields;
+  numberDensity_ = &f.addOrGet<Real>({"number_density", "1/m^3", false, true});
+  pressure_ = &f.addOrGet<Real>({"pressure", "Pa", false, true});
+  kappa_ = &f.addOrGet<Real>({"indsph_kappa", "Pa m^3", true, false});
+}
+
+void IndsphWang2023::beginStep(World& world, const StepContext&) {
+  auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const Index n = static_cast<Index>(p.size());
+  computeNumberDensities(world, *numberDensity_);
+  // Effects (viscosity, XSPH) read p.density: give them the adapted density m delta (eq. 7),
+  // consistent with the volumes 1/delta of the number-density discretisation (eq. 8).
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) p.density[i] = p.mass[i] * (*numberDensity_)[i];
+  diagonal_.resize(n);
+  predicted_.resize(n);
+  increment_.resize(n);
+  warmStart_ = *kappa_;  // a rejected attempt must restart from the accepted step
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Vec3 g = Vec3::Zero();
+    Real neighbours = 0;
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
+      const Vec3 gradW = kernel.gradW(p.x[i] - p.x[*j]);
+      g += gradW;
+      neighbours += gradW.squaredNorm() / p.mass[*j];
+    }
+    Vec3 gw = Vec3::Zero();
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      gw += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+    g += gw / world.restVolumeOf(i);
+    diagonal_[i] = g.squaredNorm() / p.mass[i] + neighbours;
+  }
+}
+
+Real IndsphWang2023::predictNumberDensity(World& world, Real dt) {
+  const auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const auto& delta = *numberDensity_;
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Real rate = 0;
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
+      rate += (p.v[i] - p.v[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
+    Real wallRate = 0;
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      wallRate += walls.volume[*b] * p.v[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
+    const Real delta0 = 1.0 / world.restVolumeOf(i);
+    // Eq. 15 written with the continuity equation (14); only compression is corrected so that a
+    // free surface may expand (as in DFSPH).
+    predicted_[i] = std::max(delta[i] + dt * (rate + wallRate / world.restVolumeOf(i)), delta0);
+  }
+  return reducer_.sum(n, [&](std::size_t i) {
+           return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
+         }) / n;
+}
+
+void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt) {
+  auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const auto& delta = *numberDensity_;
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    const Real ki = kappa[i] / delta[i];
+    Vec3 force = Vec3::Zero();  // eq. 19 without the common factor -1
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
+      force += (ki + kappa[*j] / delta[*j]) * kernel.gradW(p.x[i] - p.x[*j]);
+    if (ki != 0.0) {
+      Vec3 g = Vec3::Zero();
+      for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+        g += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+      force += ki * g / world.restVolumeOf(i);
+    }
+    p.v[i] -= (dt / p.mass[i]) * force;  // eq. 20: the advection velocity is incremented
+  }
+}
+
+void IndsphWang2023::correctVelocities(World& world, const StepContext& context) {
+  const Index n = static_cast<Index>(world.particles.size());
+  const Real dt = context.dt;
+  auto& kappa = *kappa_;
+  const auto& delta = *numberDensity_;
+
+  predictNumberDensity(world, dt);
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    increment_[i] = predicted_[i] * world.restVolumeOf(i) > 1.0
+                        ? params_.warmStartFactor * warmStart_[i]
+                        : 0.0;
+    kappa[i] = increment_[i];
+  }
+  if (params_.warmStartFactor > 0) applyPressureVelocity(world, increment_, dt);
+
+  Real error = predictNumberDensity(world, dt);
+  int iteration = 0;
+  const Real invDt2 = 1.0 / (dt * dt);
+  while ((iteration < params_.minIterations || error > params_.tolerance) &&
+         iteration < params_.maxIterations) {
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      const Real delta0 = 1.0 / world.restVolumeOf(i);
+      // Eq. 18 with dt^2 (the paper's dt is a typesetting slip: the pressure acts for dt on a
+      // velocity that acts for dt on the number density, eq. 17).
+      increment_[i] = diagonal_[i] > 0 ? params_.relaxation * delta[i] * (predicted_[i] - delta0) *
+                                             invDt2 / diagonal_[i]
+                                       : 0.0;
+      kappa[i] += increment_[i];
+    }
+    applyPressureVelocity(world, increment_, dt);
+    error = predictNumberDensity(world, dt);
+    ++iteration;
+  }
+  stats_.densityIterations = iteration;
+  stats_.divergenceIterations = 0;
+  stats_.averageCompression = error;
+  stats_.maxCompression = DeterministicReducer::max(predicted_.size(), [&](std::size_t i) {
+    return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
+  });
+  // p_i = kappa_i delta_i: eq. 19 is the symmetric SPH pressure force -sum (p_i/delta_i^2 +
+  // p_j/delta_j^2) gradW_ij written with kappa = p/delta.
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) (*pressure_)[i] = kappa[i] * delta[i];
+}
+
+}  // namespace sim
