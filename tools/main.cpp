@@ -15,8 +15,7 @@ int runVersion(Args) {
   std::printf("tamponade %s\n", TAMPONADE_VERSION);
   return 0;
 }
-int runMesh(Args args);
-int runDemo(Args args);  // tools/cmd_demo.cpp  // tools/cmd_mesh.cpp
+int runDemo(Args args);  // tools/cmd_demo.cpp
 int runMesh(Args args);  // tools/cmd_mesh.cpp
 int runBench(Args args);  // tools/cmd_bench.cpp
 int runPlan(Args args);  // tools/cmd_plan.cpp
@@ -27,14 +26,14 @@ int runReport(Args args);  // tools/cmd_report.cpp
 namespace {
 
 constexpr std::array kCommands = {
-    tools::Command{"demo", "run the built-in dam-break scene, write HDF5 + XDMF frames", tools::runDemo},
-    tools::Command{"version", "print the version", tools::runVersion},
-    tools::Command{"mesh", "check, repair, sample and generate eye meshes", tools::runMesh},
-    tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
-    tools::Command{"bench", "benchmark the engine (bench engine: dam break, both solvers)", tools::runBench},
-    tools::Command{"plan", "show the assembled scene, pipeline, memory and run-time estimate", tools::runPlan},
     tools::Command{"run", "run a protocol: frames, coverage series and report", tools::runRun},
+    tools::Command{"plan", "show the assembled scene, pipeline, memory and run-time estimate", tools::runPlan},
     tools::Command{"report", "rebuild a run's report from its files", tools::runReport},
+    tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
+    tools::Command{"mesh", "check, repair, sample and generate eye meshes", tools::runMesh},
+    tools::Command{"demo", "run the built-in dam-break scene, write HDF5 + XDMF frames", tools::runDemo},
+    tools::Command{"bench", "benchmark the engine (bench engine: dam break, both solvers)", tools::runBench},
+    tools::Command{"version", "print the version", tools::runVersion},
 };
 
 void printUsage(std::FILE* out) {
@@ -44,7 +43,7 @@ void printUsage(std::FILE* out) {
                "commands:\n",
                TAMPONADE_VERSION);
   for (const auto& c : kCommands)
-    std::fprintf(out, "  %-10.*s %.*s\n", static_cast<int>(c.name.size()), c.name.data(),
+    std::fprintf(out, "  %-9.*s %.*s\n", static_cast<int>(c.name.size()), c.name.data(),
                  static_cast<int>(c.summary.size()), c.summary.data());
 }
 
