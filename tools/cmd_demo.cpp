@@ -20,18 +20,18 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: tamponade demo [--out DIR] [--solver dfsph|wcsph] [--time SECONDS] [--force]\n\n"
-    "Runs a dam break: a 0.2 m x 0.4 m x 0.1 m water column (spacing 1 cm, 8000 particles)\n"
+    "Runs a dam break: a 0.2 m x 0.4 m x 0.1 m water column (spacing 12.5 mm, 4096 particles)\n"
     "collapses in a 0.8 m long tank. Writes DIR/frames.h5 and DIR/frames.xmf (open the .xmf in\n"
     "ParaView) with a frame every 20 ms.\n\n"
     "  --out DIR       output folder (default runs/dam-break)\n"
     "  --solver NAME   pressure solver (default wcsph)\n"
-    "  --time SECONDS  simulated time (default 1.0)\n"
+    "  --time SECONDS  simulated time (default 0.5)\n"
     "  --force         replace an existing output folder's frames\n";
 
 struct DemoOptions {
   std::filesystem::path out = "runs/dam-break";
   std::string solver = "wcsph";
-  double time = 1.0;  // [s]
+  double time = 0.5;  // [s]
   bool force = false;
 };
 
@@ -82,7 +82,7 @@ int runDemo(Args args) {
     return 2;
   }
 
-  const double d = 0.01;  // [m]
+  const double d = 0.0125;  // [m]
   sim::TankSpec tank;
   tank.innerMax = sim::Vec3(0.8, 0.6, 0.1 + 2.4 * d);
   sim::WorldParameters params;
