@@ -28,45 +28,50 @@ void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real
   const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
   const auto& rho = p.density;
   const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Real ki = kappa[i] / rho[i];
     Vec3 dv = Vec3::Zero();
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
-      const Real kj = kappa[*j] / rho[*j];
-      dv += p.mass[*j] * (ki + kj) * kernel.gradW(p.x[i] - p.x[*j]);
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+      const Index j = nf.indices[k];
+      dv += p.mass[j] * (ki + kappa[j] / rho[j]) * gradF[k];
     }
     if (ki != 0.0) {
       Vec3 g = Vec3::Zero();
-      for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-        g += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) g += walls.volume[nw.indices[k]] * gradB[k];
       dv += world.restDensityOf(i) * ki * g;
     }
     p.v[i] -= dt * dv;
   }
 }
 
-Real DfsphBender2017::predictDensity(World& world, Real dt) {
-  auto& p = world.particles;
-  const auto& walls = world.walls;
+Real DfsphBender2017::densityRate(const World& world, Index i) const {
+  const auto& p = world.particles;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
+  Real rate = 0;
+  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
+    rate += p.mass[nf.indices[k]] * (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k]);
+  Real wallRate = 0;
+  for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+    wallRate += world.walls.volume[nw.indices[k]] * p.v[i].dot(gradB[k]);
+  return rate + world.restDensityOf(i) * wallRate;
+}
+
+Real DfsphBender2017::predictDensity(World& world, Real dt) {
+  const auto& p = world.particles;
   const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    Real rate = 0;
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-      rate += p.mass[*j] * (p.v[i] - p.v[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
-    Real wallRate = 0;
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      wallRate += walls.volume[*b] * p.v[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
     const Real rho0 = world.restDensityOf(i);
     // Only compression is corrected: a free surface may expand (Bender 2017, clamping).
-    predicted_[i] = std::max(p.density[i] + dt * (rate + rho0 * wallRate), rho0);
+    predicted_[i] = std::max(p.density[i] + dt * densityRate(world, i), rho0);
   }
   return reducer_.sum(n, [&](std::size_t i) {
            return predicted_[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0;
@@ -80,26 +85,12 @@ Real DfsphBender2017::maxCompression(const World& world) const {
 }
 
 Real DfsphBender2017::computeDensityRate(World& world) {
-  auto& p = world.particles;
-  const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
-  const Index n = static_cast<Index>(p.size());
+  const Index n = static_cast<Index>(world.particles.size());
 #pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    if (neighborCount(world, i) < params_.minNeighborsForDivergence) {
-      predicted_[i] = 0;
-      continue;
-    }
-    Real rate = 0;
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-      rate += p.mass[*j] * (p.v[i] - p.v[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
-    Real wallRate = 0;
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      wallRate += walls.volume[*b] * p.v[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
-    predicted_[i] = std::max(rate + world.restDensityOf(i) * wallRate, Real(0));
-  }
+  for (Index i = 0; i < n; ++i)
+    predicted_[i] = neighborCount(world, i) < params_.minNeighborsForDivergence
+                        ? 0.0
+                        : std::max(densityRate(world, i), Real(0));
   return reducer_.sum(n, [&](std::size_t i) {
            return predicted_[i] / world.restDensityOf(static_cast<Index>(i));
          }) / n;

@@ -48,6 +48,8 @@ class DfsphBender2017 final : public PressureSolver {
   // Predicted density rho* (densityOnly) or density rate Drho/Dt; returns the mean error measure.
   Real predictDensity(World& world, Real dt);
   Real computeDensityRate(World& world);
+  // Drho_i/Dt = sum_j m_j (v_i - v_j).gradW_ij + rho0_i sum_b V_b v_i.gradW_ib (cached gradients).
+  Real densityRate(const World& world, Index i) const;
   Real maxCompression(const World& world) const;  // of the current prediction
 
   DfsphParameters params_;
