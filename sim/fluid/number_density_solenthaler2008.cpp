@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "sim/fluid/tait_equation.h"
+
 #include "sim/fluid/indsph_wang2023.h"
 
 namespace sim {
@@ -34,9 +36,7 @@ void NumberDensitySolenthaler2008::beginStep(World& world, const StepContext&) {
   for (Index i = 0; i < n; ++i) {
     const Real rho0 = world.restDensityOf(i);
     p.density[i] = p.mass[i] * (*numberDensity_)[i];  // adapted density rho~ (eq. 7)
-    const Real ratio = p.density[i] / rho0;
-    const Real r2 = ratio * ratio, r3 = r2 * ratio;
-    (*pressure_)[i] = std::max(rho0 * c2 / 7.0 * (r3 * r3 * ratio - 1.0), Real(0));
+    (*pressure_)[i] = taitPressure(p.density[i], rho0, c2);
   }
 }
 

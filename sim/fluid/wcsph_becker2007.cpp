@@ -5,6 +5,7 @@
 
 #include "sim/core/reduction.h"
 #include "sim/fluid/density.h"
+#include "sim/fluid/tait_equation.h"
 
 namespace sim {
 
@@ -30,9 +31,7 @@ void WcsphBecker2007::beginStep(World& world, const StepContext&) {
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Real rho0 = world.restDensityOf(i);
-    const Real ratio = p.density[i] / rho0;
-    const Real r2 = ratio * ratio, r3 = r2 * ratio;
-    (*pressure_)[i] = std::max(rho0 * c2 / 7.0 * (r3 * r3 * ratio - 1.0), Real(0));
+    (*pressure_)[i] = taitPressure(p.density[i], rho0, c2);
   }
 }
 
