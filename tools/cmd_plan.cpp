@@ -50,13 +50,8 @@ int runPlan(Args args) {
   protocols::ScenarioOptions options;
   for (std::size_t k = 0; k < args.size(); ++k) {
     if (args[k] == "--accuracy" && k + 1 < args.size()) {
-      bool found = false;
-      for (std::size_t p = 0; p < protocols::kAccuracyPresetNames.size(); ++p)
-        if (protocols::kAccuracyPresetNames[p] == args[k + 1]) {
-          options.accuracy = static_cast<protocols::AccuracyPreset>(p);
-          found = true;
-        }
-      if (!found) {
+      options.accuracy = protocols::accuracyPresetFromName(args[k + 1]);
+      if (!options.accuracy) {
         std::fprintf(stderr, "tamponade plan: unknown accuracy '%s' (use draft, standard or fine)\n",
                      std::string(args[k + 1]).c_str());
         return 2;

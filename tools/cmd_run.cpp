@@ -76,13 +76,8 @@ int runRun(Args args) {
         return 2;
       }
     } else if (args[k] == "--accuracy" && hasValue) {
-      bool found = false;
-      for (std::size_t p = 0; p < protocols::kAccuracyPresetNames.size(); ++p)
-        if (protocols::kAccuracyPresetNames[p] == args[k + 1]) {
-          options.accuracy = static_cast<protocols::AccuracyPreset>(p);
-          found = true;
-        }
-      if (!found) {
+      options.accuracy = protocols::accuracyPresetFromName(args[k + 1]);
+      if (!options.accuracy) {
         std::fprintf(stderr, "tamponade run: unknown accuracy '%s' (use draft, standard or fine)\n",
                      std::string(args[k + 1]).c_str());
         return 2;

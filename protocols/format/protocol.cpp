@@ -34,4 +34,10 @@ std::string_view toString(EffectSetting v) {
 std::string_view toString(SolverName v) { return nameOf(v, kSolverNames); }
 std::string_view toString(AccuracyPreset v) { return nameOf(v, kAccuracyPresetNames); }
 
+std::optional<AccuracyPreset> accuracyPresetFromName(std::string_view name) {
+  for (std::size_t k = 0; k < kAccuracyPresetNames.size(); ++k)
+    if (kAccuracyPresetNames[k] == name) return static_cast<AccuracyPreset>(k);
+  return std::nullopt;
+}
+
 }  // namespace protocols

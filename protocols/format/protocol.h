@@ -184,5 +184,7 @@ std::string_view toString(PostureName v);  // "custom" for kCustom
 std::string_view toString(EffectSetting v);
 std::string_view toString(SolverName v);
 std::string_view toString(AccuracyPreset v);
+// The preset called `name` ("draft", "standard", "fine"), or nothing for any other name.
+std::optional<AccuracyPreset> accuracyPresetFromName(std::string_view name);
 
 }  // namespace protocols
