@@ -29,7 +29,7 @@ constexpr const char* kUsage =
     "simulated second. Writes DIR/solvers.csv, DIR/solvers.md, DIR/compression_<run>.csv\n"
     "(paper Fig. 4) and DIR/iterations_<run>.csv (cumulative, Fig. 7). Default DIR: bench_solvers.\n"
     "  default: a = 5 cm, d = a/10, depth 4 d (~3200 particles), 0.6 s simulated\n"
-    "  --quick: a = 4 cm, d = a/8, depth 4 d (~1000 particles), 0.3 s simulated (a few minutes)\n"
+    "  --quick: a = 4 cm, d = a/8, depth 4 d (~1000 particles), 0.25 s simulated (a few minutes)\n"
     "Threads: OMP_NUM_THREADS. On a shared machine set OMP_WAIT_POLICY=passive.\n";
 
 struct UsageError : std::runtime_error {
@@ -117,7 +117,7 @@ int runBenchSolvers(Args args) {
   spec.columnWidth = quick ? 0.04 : 0.05;                      // [m]
   spec.spacing = spec.columnWidth / (quick ? 8.0 : 10.0);      // [m]
   spec.depth = 4 * spec.spacing;                               // [m] a slab, as the paper's 2D-like figure
-  const double duration = time > 0 ? time : (quick ? 0.3 : 0.6);  // [s]
+  const double duration = time > 0 ? time : (quick ? 0.25 : 0.6);  // [s]
   std::fprintf(stderr, "bench solvers: a = %.3g m, d = %.3g mm, %.3g s simulated, %d thread(s)\n",
                spec.columnWidth, spec.spacing * 1e3, duration, omp_get_max_threads());
   std::vector<protocols::SolverComparisonRun> runs;

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <filesystem>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,7 @@ struct SolverComparisonRun {
   double meanIterations = 0.0;          // per step
   double meanInterfaceGap = 0.0;        // [d] over the samples where it was measured
   double finalInterfaceGap = 0.0;       // [d] at the last measurement
+  double peakEnergyRatio = 0.0;         // [1] largest kinetic energy / released potential energy
   double wallSeconds = 0.0;             // [s] time loop only
   std::vector<SolverComparisonSample> series;
   double wallPerSimulatedSecond() const {
@@ -48,13 +50,20 @@ struct SolverComparisonRun {
   }
 };
 
-// When a run counts as failed: a non-finite position or velocity, a particle outside the tank
-// (beyond one spacing), a kinetic energy above the scene's released potential energy (energy
-// conservation: only a numerical instability can create it), a maximum compression above
-// `maxCompression` (particles overlapping), or an engine error (e.g. the step length fell below
-// its minimum).
+// When a run counts as failed: a non-finite position or velocity, a particle outside the closed
+// tank (beyond one spacing: through a wall), a kinetic energy above `energyFactor` times the
+// scene's released potential energy (a blow-up), an engine error (e.g. the step length fell
+// below its minimum), or, optionally, a compression above `maxCompression`.
+// Kinetic energy above 1x the potential energy already breaks energy conservation; the run
+// records the peak ratio (`peakEnergyRatio`) so that shows, but only 10x counts as failed: the
+// paper calls a run stable when it does not explode, and DFSPH with mass-weighted density puts
+// 1-3x the released energy into the interface in its first step at 1:10 and above (the push that
+// opens the gap between the phases) and then continues. That last test is off by default: with mass-weighted density a light particle
+// next to heavy ones reads "compressed" by the heavy neighbours' mass (at 1:10, +135 % at rest;
+// Wang et al. 2023 section 3.3), which is the very artefact the comparison shows, not a blow-up.
 struct SolverComparisonLimits {
-  double maxCompression = 0.5;  // [1] 50 %: far beyond any working solver (WCSPH stays near 1 %)
+  double energyFactor = 10.0;                                       // [1]
+  double maxCompression = std::numeric_limits<double>::infinity();  // [1]
 };
 
 // Runs `spec` for `duration` [s] of simulated time or until it fails.

@@ -37,6 +37,7 @@ TwoPhaseDamBreak buildTwoPhaseDamBreak(const TwoPhaseDamBreakSpec& spec) {
   const double height = 2 * a;               // [m]
   scene.tank.innerMin = sim::Vec3::Zero();
   scene.tank.innerMax = sim::Vec3(4 * a + 2 * gap, 3 * a, spec.depth + 2 * gap);
+  scene.tank.closedTop = true;  // the light phase is thrown high at 1:75; a lid keeps it in
   sim::WorldParameters params;
   params.particleSpacing = d;
   params.gravity = sim::Vec3(0, -spec.gravity, 0);

@@ -6,7 +6,7 @@
 // here are ours (say so when comparing numbers).
 //
 // Geometry (up = +y, surge along +x): heavy column x in [0, a], light column x in [a, 2a], both
-// 2a high and `depth` deep, in a tank 4a long and 3a high (open top). Lattice particles of mass
+// 2a high and `depth` deep, in a closed tank 4a long and 3a high. Lattice particles of mass
 // rho0 d^3 start 1.2 d from the walls (the engine's wall gap, sim/scenes/dam_break.cpp).
 #pragma once
 
