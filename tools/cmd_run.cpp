@@ -155,11 +155,13 @@ int runRun(Args args) {
       const int signalNumber = gSignal.load();
       return signalNumber != 0 ? 128 + signalNumber : 1;
     }
-    for (std::size_t k = 0; k < scenario.schedule.size() && k < summary.steadyPostures.size(); ++k)
-      if (scenario.schedule[k].untilSteady && summary.steadyPostures[k] >= 0)
-        std::printf("posture %zu (%s): %s after %.4g s\n", k + 1, scenario.schedule[k].label.c_str(),
-                     summary.steadyPostures[k] == 1 ? "steady" : "not steady, stopped at its maximum",
-                    scenario.schedule[k].duration);
+    for (std::size_t k = 0; k < scenario.schedule.size(); ++k) {
+      const protocols::ScheduledPosture& posture = scenario.schedule[k];
+      if (posture.untilSteady && posture.endedSteady)
+        std::printf("posture %zu (%s): %s after %.4g s\n", k + 1, posture.label.c_str(),
+                    *posture.endedSteady ? "steady" : "not steady, stopped at its maximum",
+                    posture.duration);
+    }
     std::printf("run finished: %ld steps, %zu frames, %.4g s simulated in %.1f s; mean retinal "
                 "coverage %s\noutput: %s\n",
                 summary.steps, summary.frames, summary.simulatedTime, summary.wallSeconds,

@@ -45,7 +45,9 @@ void applyRecordedPostureEnds(const FrameReader& reader, Scenario& s, double upT
                             steady = ends.column("steady"), start = ends.column("start");
   for (std::size_t r = 0; r < ends.rows; ++r) {
     const auto k = static_cast<std::size_t>(index[r]);
-    if (times[r] <= upTo && steady[r] > 0 && k < s.schedule.size()) s.schedule[k].duration = times[r] - start[r];
+    if (times[r] > upTo || k >= s.schedule.size()) continue;
+    s.schedule[k].endedSteady = steady[r] > 0;
+    if (steady[r] > 0) s.schedule[k].duration = times[r] - start[r];
   }
 }
 
@@ -180,7 +182,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     writer->flush();
     writeCheckpoint(checkpointPath, state);
   };
-  // One steady-state sample: kinetic energy per mass of the fluid and the retina's coverage now.
+  // One steady-state sample: the fluid's kinetic energy per mass and every region's and break's
+  // coverage now.
   double totalMass = 0.0;  // [kg] constant
   {
     sim::DeterministicReducer r;
@@ -213,9 +216,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
                            {static_cast<double>(k), steady ? 1.0 : 0.0, postureStart},
                            {"posture", "steady", "start"});
       if (steady) posture.duration = world.time - postureStart;
+      posture.endedSteady = steady;
       postureStart = steady ? world.time : postureEnd;
-      summary.steadyPostures.resize(std::max(summary.steadyPostures.size(), k + 1), -1);
-      summary.steadyPostures[k] = steady ? 1 : 0;
       nextSample = postureStart;
       samples.clear();
       ended = true;

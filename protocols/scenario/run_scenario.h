@@ -51,9 +51,6 @@ struct RunOptions {
 
 struct RunSummary {
   bool stopped = false;        // a stop was requested: checkpoint written, no report
-  // Per posture: 1 ended because it was steady, 0 ran its (maximum) duration, -1 not run by this
-  // call (before the checkpoint a resumed run started from).
-  std::vector<int> steadyPostures;
   std::size_t frames = 0;
   long steps = 0;
   double simulatedTime = 0.0;  // [s]
@@ -63,7 +60,8 @@ struct RunSummary {
 
 // Runs `scenario` (built from `protocol`). Throws IoError for output problems, SimError when the
 // simulation fails (e.g. a particle escapes the cavity).
-// The scenario's schedule is shortened to the postures' actual durations (see above).
+// Steady postures' durations in the scenario's schedule become what was run, and every ended
+// posture's ScheduledPosture::endedSteady is set (see above).
 RunSummary runScenario(const Protocol& protocol, Scenario& scenario, const RunOptions& options);
 
 // Shortens the durations of `scenario`'s postures that ended steady to what the run's "postures"

@@ -81,8 +81,10 @@ struct FluidPhase {
 struct ScheduledPosture {
   std::string label;
   sim::Vec3 gravity = sim::Vec3::Zero();  // [m/s^2] eye frame
-  double duration = 0.0;                  // [s] (the upper bound when untilSteady)
+  double duration = 0.0;                  // [s] (the upper bound when untilSteady; what was run
+                                          //      once a run ended it steady)
   bool untilSteady = false;
+  std::optional<bool> endedSteady;        // set by a run (or from its files): steady before the bound
 };
 
 struct AccuracySettings {

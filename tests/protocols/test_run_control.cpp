@@ -14,6 +14,7 @@
 #include <regex>
 #include <thread>
 
+#include "protocols/format/parse_protocol.h"
 #include "protocols/io/frame_reader.h"
 #include "protocols/scenario/progress_text.h"
 #include "protocols/scenario/steady_state.h"
@@ -159,6 +160,7 @@ TEST_CASE("until steady: a settling eye ends its posture before the maximum",
   // The report's timeline uses the actual duration, also when rebuilt from the files.
   const std::string html = readText(dir / "a" / "report.html");
   CHECK(protocols_test::checkXml(html).empty());
+  CHECK(html.find("supine until steady (reached after") != std::string::npos);
   fs::remove(dir / "a" / "report.html");
   REQUIRE(runTamponade("report a", dir).exitCode == 0);
   CHECK(readText(dir / "a" / "report.html") == html);
@@ -285,4 +287,19 @@ TEST_CASE("SIGTERM: checkpoint, readable frames, exit 143, resume equals the con
   for (const char* field : {sim::field::kPosition, sim::field::kVelocity})
     CHECK(a.readField(last, "fluid", field).reals == b.readField(last, "fluid", field).reals);
   fs::remove_all(dir);
+}
+
+TEST_CASE("every shipped example protocol, the README's default included, is valid",
+          "[unit][protocol][examples]") {
+  std::size_t count = 0;
+  bool hasDefault = false;
+  for (const auto& entry : fs::directory_iterator(fs::path(TAMPONADE_SOURCE_DIR) / "data" / "protocols")) {
+    if (entry.path().extension() != ".toml") continue;
+    INFO(entry.path().string());
+    CHECK_NOTHROW(protocols::parseProtocol(entry.path()));
+    hasDefault = hasDefault || entry.path().filename() == "default_eye.toml";
+    ++count;
+  }
+  CHECK(count >= 3);  // the issue asks for at least three examples
+  CHECK(hasDefault);  // tools/quickstart.sh runs it
 }
