@@ -84,7 +84,7 @@ struct ScheduledPosture {
   double duration = 0.0;                  // [s] (the upper bound when untilSteady; what was run
                                           //      once a run ended it steady)
   bool untilSteady = false;
-  std::optional<bool> endedSteady;        // set by a run (or from its files): steady before the bound
+  std::optional<bool> endedSteady = {};   // set by a run (or from its files): steady before the bound
 };
 
 struct AccuracySettings {

