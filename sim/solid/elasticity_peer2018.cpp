@@ -274,6 +274,26 @@ void ElasticityPeer2018::attach(World& world) {
     gradSum_[s] = b;
   }
 
+  // Bodies (one per elastic material), for the momentum correction in apply().
+  std::vector<std::int32_t> materials(materialOf);
+  std::sort(materials.begin(), materials.end());
+  materials.erase(std::unique(materials.begin(), materials.end()), materials.end());
+  bodyCount_ = materials.size();
+  bodyOf_.resize(slots);
+  bodyBegin_.assign(bodyCount_ + 1, 0);
+  for (std::size_t s = 0; s < slots; ++s) {
+    bodyOf_[s] = static_cast<std::int32_t>(
+        std::lower_bound(materials.begin(), materials.end(), materialOf[s]) - materials.begin());
+    ++bodyBegin_[static_cast<std::size_t>(bodyOf_[s]) + 1];
+  }
+  for (std::size_t b = 0; b < bodyCount_; ++b) bodyBegin_[b + 1] += bodyBegin_[b];
+  bodySlots_.resize(slots);
+  {
+    std::vector<std::size_t> next(bodyBegin_.begin(), bodyBegin_.end() - 1);
+    for (std::size_t s = 0; s < slots; ++s) bodySlots_[next[static_cast<std::size_t>(bodyOf_[s])]++] = s;
+  }
+  bodyFixed_.assign(bodyCount_, 0);
+
   slotIndex_.resize(slots);
   fixed_.resize(slots);
   mass_.resize(slots);
@@ -327,7 +347,7 @@ void ElasticityPeer2018::energyGradient(const std::vector<Vec3>& u, bool subtrac
     Mat3 T = volume_[s] * R * sigma;
     for (std::size_t k = pairBegin_[s]; k < pairBegin_[s + 1]; ++k) {
       const auto j = static_cast<std::size_t>(pairSlot_[k]);
-      const Vec3 r = pairHourglass_[k] * (defGrad_[s] * pairX_[k] - (u[j] - u[s]));
+      const Vec3 r = pairHourglass_[k] * (0.5 * (defGrad_[s] + defGrad_[j]) * pairX_[k] - (u[j] - u[s]));
       T += r * pairX_[k].transpose();
     }
     stress_[s] = T;
@@ -335,7 +355,8 @@ void ElasticityPeer2018::energyGradient(const std::vector<Vec3>& u, bool subtrac
       Real e = volume_[s] * (mu_[s] * eps.squaredNorm() + 0.5 * lambda_[s] * eps.trace() * eps.trace());
       for (std::size_t k = pairBegin_[s]; k < pairBegin_[s + 1]; ++k) {
         const auto j = static_cast<std::size_t>(pairSlot_[k]);
-        e += 0.5 * pairHourglass_[k] * (defGrad_[s] * pairX_[k] - (u[j] - u[s])).squaredNorm();
+        e += 0.5 * pairHourglass_[k] *
+             (0.5 * (defGrad_[s] + defGrad_[j]) * pairX_[k] - (u[j] - u[s])).squaredNorm();
       }
       energy_[s] = e;
     }
@@ -405,6 +426,10 @@ void ElasticityPeer2018::apply(World& world, const StepContext& context) {
     rotation_[s] = rotation[i];
   }
 
+  std::fill(bodyFixed_.begin(), bodyFixed_.end(), 0);
+  for (std::size_t s = 0; s < slots; ++s)
+    if (fixed_[s]) bodyFixed_[static_cast<std::size_t>(bodyOf_[s])] = 1;
+
   // Elastic forces at the start-of-step positions; also updates the rotations.
   energyGradient(x_, true, grad_);
   stats_.elasticEnergy = reducer_.sum(slots, [&](std::size_t s) { return energy_[s]; });
@@ -449,6 +474,23 @@ void ElasticityPeer2018::apply(World& world, const StepContext& context) {
   stats_.iterations = iteration;
   stats_.relativeResidual = bNorm > 0 ? std::sqrt(std::max(rz, 0.0)) / bNorm : 0.0;
   stats_.converged = std::sqrt(std::max(rz, 0.0)) <= target;
+
+  // The exact solution conserves each free body's momentum (the energy is translation invariant,
+  // so sum_s grad_s = 0 and H has the translations in its null space); the CG residual does not.
+  // Remove its momentum part with a uniform velocity shift per body without fixed particles.
+  for (std::size_t b = 0; b < bodyCount_; ++b) {
+    if (bodyFixed_[b]) continue;
+    Vec3 wanted = Vec3::Zero(), actual = Vec3::Zero();
+    Real mass = 0;
+    for (std::size_t s = bodyBegin_[b]; s < bodyBegin_[b + 1]; ++s) {
+      const std::size_t t = bodySlots_[s];
+      wanted += mass_[t] * p.v[slotIndex_[t]];
+      actual += mass_[t] * v_[t];
+      mass += mass_[t];
+    }
+    const Vec3 shift = (wanted - actual) / mass;
+    for (std::size_t s = bodyBegin_[b]; s < bodyBegin_[b + 1]; ++s) v_[bodySlots_[s]] += shift;
+  }
 
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < slots; ++s) {
