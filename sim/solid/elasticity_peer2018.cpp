@@ -299,7 +299,7 @@ void ElasticityPeer2018::attach(World& world) {
   mass_.resize(slots);
   energy_.resize(slots);
   for (auto* v : {&x_, &v_, &rhs_, &r_, &z_, &p_, &ap_, &grad_}) v->resize(slots);
-  for (auto* m : {&rotation_, &defGrad_, &stress_, &hourglass_, &precond_}) m->resize(slots);
+  for (auto* m : {&rotation_, &defGrad_, &stress_, &precond_}) m->resize(slots);
 }
 
 void ElasticityPeer2018::mapSlots(const World& world) {

@@ -135,7 +135,7 @@ class ElasticityPeer2018 final : public Effect {
   std::vector<Real> mass_;             // [kg]
   std::vector<Real> energy_;           // [J] per slot, elastic + zero-energy-mode penalty
   std::vector<Vec3> x_, v_, rhs_, r_, z_, p_, ap_, grad_;
-  std::vector<Mat3> rotation_, defGrad_, stress_, hourglass_, precond_;
+  std::vector<Mat3> rotation_, defGrad_, stress_, precond_;  // stress_ holds T_s (see .cpp)
 };
 
 }  // namespace sim
