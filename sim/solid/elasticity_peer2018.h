@@ -59,9 +59,9 @@ struct ElasticityParameters {
   // accurate (a wave crosses at most C spacings per step) and the CG iteration count moderate.
   Real waveCourantNumber = 10.0;
   // [1] support radius of the solid's reference kernel in particle spacings (0 = the world's
-  // kernel). The reference neighbourhoods are the solid's own, so it may use a wider support than
-  // the fluid: with 2 d the corrected deformation gradient leaves soft zero-energy modes and a
-  // cantilever bends ~30 % too far (docs/elasticity.md).
+  // kernel). The reference neighbourhoods are the solid's own, so it may be wider than the fluid's:
+  // at 2 d a surface particle sees one layer inwards, too few for the quadratic gradient weights;
+  // it falls back to the first-order correction and a cantilever bends ~30 % too far.
   Real supportRadiusFactor = 2.5;
   // Quadratic moving-least-squares gradient weights instead of the first-order correction where
   // the neighbourhood determines a quadratic (see docs/elasticity.md for why).
