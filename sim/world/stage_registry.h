@@ -17,6 +17,7 @@
 #include "sim/fluid/indsph_wang2023.h"
 #include "sim/fluid/number_density_solenthaler2008.h"
 #include "sim/fluid/wcsph_becker2007.h"
+#include "sim/solid/elasticity_peer2018.h"
 #include "sim/world/pipeline.h"
 
 namespace sim {
@@ -30,6 +31,7 @@ struct PipelineOptions {
   WcsphParameters wcsph;             // also the number_density solver's speed of sound
   IndsphParameters indsph;
   IisphParameters iisph;
+  ElasticityParameters elasticity;
   bool wallFriction = true;              // no-slip viscous walls
   Real velocitySmoothing = 0.05;         // [1] XSPH strength for incompressible solvers (0 = off)
   std::map<std::string, Force> forced;   // effect name -> forced on/off
