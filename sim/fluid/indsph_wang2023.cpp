@@ -170,55 +170,37 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
   auto& kappa = *kappa_;
   const auto& delta = *numberDensity_;
 
-  // Target of this step's solve: rest number density, except where the particle is ALREADY
-  // compressed at the start of the step by more than maxCorrectionPerStep (a scene assembled
-  // compressed); there that much is removed per step. Compression the step's own motion would
-  // add (an impact, a particle driven into a wall) is always removed in full. Removing a
-  // compression c in one step needs velocities of ~c d/dt: 30 % at dt = 1e-6 s is hundreds of
-  // m/s, and the fluid explodes instead of relaxing.
   predictNumberDensity(world, dt);
-  target_.resize(n);
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    const Real delta0 = 1.0 / world.restVolumeOf(i);
-    target_[i] = std::max(delta0, delta[i] - params_.maxCorrectionPerStep * delta0);
-  }
-  auto residual = [&] {  // mean of (delta* - target)/delta0 over all particles
-    return reducer_.sum(n, [&](std::size_t i) {
-             return std::max(predicted_[i] - target_[i], Real(0)) *
-                    world.restVolumeOf(static_cast<Index>(i));
-           }) / n;
-  };
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    increment_[i] = predicted_[i] > target_[i] ? params_.warmStartFactor * warmStart_[i] : 0.0;
+    increment_[i] = predicted_[i] * world.restVolumeOf(i) > 1.0
+                        ? params_.warmStartFactor * warmStart_[i]
+                        : 0.0;
     kappa[i] = increment_[i];
   }
   if (params_.warmStartFactor > 0) applyPressureVelocity(world, increment_, dt);
 
-  Real compression = predictNumberDensity(world, dt);
-  Real error = residual();
+  Real error = predictNumberDensity(world, dt);
   int iteration = 0;
   const Real invDt2 = 1.0 / (dt * dt);
   while ((iteration < params_.minIterations || error > params_.tolerance) &&
          iteration < params_.maxIterations) {
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
+      const Real delta0 = 1.0 / world.restVolumeOf(i);
       // Eq. 18 with dt^2 (the paper's dt is a typesetting slip: the pressure acts for dt on a
       // velocity that acts for dt on the number density, eq. 17).
-      increment_[i] = diagonal_[i] > 0 ? params_.relaxation * delta[i] *
-                                             std::max(predicted_[i] - target_[i], Real(0)) *
+      increment_[i] = diagonal_[i] > 0 ? params_.relaxation * delta[i] * (predicted_[i] - delta0) *
                                              invDt2 / diagonal_[i]
                                        : 0.0;
       kappa[i] += increment_[i];
     }
     applyPressureVelocity(world, increment_, dt);
-    compression = predictNumberDensity(world, dt);
-    error = residual();
+    error = predictNumberDensity(world, dt);
     ++iteration;
   }
   stats_.densityIterations = iteration;
-  stats_.averageCompression = compression;
+  stats_.averageCompression = error;
   stats_.maxCompression = DeterministicReducer::max(predicted_.size(), [&](std::size_t i) {
     return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
   });

@@ -36,10 +36,6 @@ struct IndsphParameters {
   // two-phase dam break (cfl 0.15). 0.5, IISPH's relaxation, ran 1 s at 1:2...1:75 (2026-11-22).
   Real relaxation = 0.5;
   Real warmStartFactor = 0.5;   // [1] fraction of last accepted step's kappa applied first
-  // [1] largest existing compression (of delta0) one step removes; more is removed over several
-  // steps. Compression a step's own motion would add is always removed in full, so this only
-  // acts on a state that is already compressed (a scene assembled compressed).
-  Real maxCorrectionPerStep = 0.05;
   // Divergence-free pass (not in the paper; DFSPH's second solve in number-density form). On the
   // 4 x 8 cm tank at rest (omega 0.5) it lowers the final kinetic energy 3x (1.6e-6 vs 4.8e-6 J)
   // and the hydrostatic error (1.0 % vs 1.9 %); on the dam break it converges in one iteration
@@ -69,7 +65,6 @@ class IndsphWang2023 final : public PressureSolver {
   std::vector<Real>* kappa_ = nullptr;          // [Pa m^3] accumulated kappa, warm start
   std::vector<Real> diagonal_;                  // [m^-8 kg^-1] |G|^2/m_i + sum |gradW|^2/m_j
   std::vector<Real> predicted_;                 // [1/m^3] delta* (scratch)
-  std::vector<Real> target_;                    // [1/m^3] this step's target number density
   std::vector<Real> increment_;                 // [Pa m^3] this iteration's kappa (scratch)
   std::vector<Real> warmStart_;                 // [Pa m^3] last accepted step's kappa (scratch)
   DeterministicReducer reducer_;
