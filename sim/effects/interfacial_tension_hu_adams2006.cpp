@@ -1,0 +1,114 @@
+#include "sim/effects/interfacial_tension_hu_adams2006.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+namespace sim {
+namespace {
+
+// Colour of material m for the pair (a, b): 1 on a, 0 on b, -1 if it takes no part.
+inline int colourOf(int m, const InterfacialTension& pair) {
+  return m == pair.materialA ? 1 : (m == pair.materialB ? 0 : -1);
+}
+
+}  // namespace
+
+void InterfacialTensionHuAdams2006::attach(World& world) {
+  const auto& tensions = world.materials.interfacialTensions();
+  require(!tensions.empty(),
+          "interfacial_tension is on but no pair of materials has a tension sigma > 0 N/m: set one "
+          "(MaterialTable::setInterfacialTension) or switch the stage off");
+  for (const auto& t : tensions)
+    require(world.materials[t.materialA].kind == MaterialKind::kFluid &&
+                world.materials[t.materialB].kind == MaterialKind::kFluid,
+            "interfacial tension between '" + world.materials[t.materialA].name + "' and '" +
+                world.materials[t.materialB].name + "': both must be fluids");
+  colourGradient_ =
+      &world.particles.fields.addOrGet<Vec3>({field::kColourGradient, "1/m", false, true});
+}
+
+Real InterfacialTensionHuAdams2006::maxTimeStep(const World& world) const {
+  Real dt = std::numeric_limits<Real>::infinity();
+  const Real d = world.particleSpacing();
+  for (const auto& t : world.materials.interfacialTensions()) {
+    const Real rhoAvg =
+        0.5 * (world.materials[t.materialA].restDensity + world.materials[t.materialB].restDensity);
+    dt = std::min(dt, std::sqrt(rhoAvg * d * d * d / (2.0 * std::numbers::pi * t.sigma)));
+  }
+  return dt;
+}
+
+void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
+  auto& p = world.particles;
+  const Index n = static_cast<Index>(p.size());
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
+  const auto& wallVolume = world.walls.volume;
+  const auto& tensions = world.materials.interfacialTensions();
+  const std::vector<Vec3>* wallPart = nullptr;
+  if (p.fields.has(field::kWallColourGradient))
+    wallPart = &p.fields.get<Vec3>(field::kWallColourGradient);
+  stress_.resize(n);
+  gradient_.resize(n);
+  const Real dimension = 3.0;
+
+  for (std::size_t pairIndex = 0; pairIndex < tensions.size(); ++pairIndex) {
+    const InterfacialTension& pair = tensions[pairIndex];
+    const Real sigma = pair.sigma;
+    // The wall part belongs to the pair whose fluid has contact angles; WallAdhesionYoung checks
+    // there is only one such pair and it is listed first in that case.
+    const bool withWall = wallPart != nullptr && pairIndex == 0;
+    // Phase 1: colour gradient and surface stress of every particle of the pair.
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      const int ci = colourOf(p.material[i], pair);
+      if (ci < 0) {
+        gradient_[i].setZero();
+        stress_[i].setZero();
+        continue;
+      }
+      Vec3 g = Vec3::Zero();
+      for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+        const Index j = nf.indices[k];
+        const int cj = colourOf(p.material[j], pair);
+        if (cj < 0 || cj == ci) continue;  // (C_j - C_i) = 0 within a phase
+        g += (p.mass[j] / p.density[j]) * Real(cj - ci) * gradF[k];
+      }
+      if (withWall) g += (*wallPart)[i];
+      gradient_[i] = g;
+      const Real norm = g.norm();  // [1/m]
+      // Below 1e-6 of the interface's |gradC| ~ 1/h the direction is round-off: no stress.
+      if (norm * world.supportRadius() < 1e-6) {
+        stress_[i].setZero();
+        continue;
+      }
+      stress_[i] = sigma * (norm / dimension * Mat3::Identity() - g * g.transpose() / norm);
+    }
+    if (pairIndex == 0) *colourGradient_ = gradient_;
+    // Phase 2: divergence of the stress, pairwise antisymmetric; walls mirror the stress.
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      if (colourOf(p.material[i], pair) < 0) continue;
+      const Real vi = p.mass[i] / p.density[i];
+      Vec3 f = Vec3::Zero();  // [N]
+      for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+        const Index j = nf.indices[k];
+        if (colourOf(p.material[j], pair) < 0) continue;
+        const Real vj = p.mass[j] / p.density[j];
+        f += vi * vj * ((stress_[i] + stress_[j]) * gradF[k]);
+      }
+      if (!stress_[i].isZero(0)) {
+        Vec3 wallSum = Vec3::Zero();
+        for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+          wallSum += wallVolume[nw.indices[k]] * gradB[k];
+        f += 2.0 * vi * (stress_[i] * wallSum);
+      }
+      p.a[i] += f / p.mass[i];
+    }
+  }
+}
+
+}  // namespace sim
