@@ -47,10 +47,8 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   const auto& gradF = world.fluidGradients();
   const auto& gradB = world.wallGradients();
   const auto& wallVolume = world.walls.volume;
+  const auto& wallNormal = world.walls.normal;
   const auto& tensions = world.materials.interfacialTensions();
-  const std::vector<Vec3>* wallPart = nullptr;
-  if (p.fields.has(field::kWallColourGradient))
-    wallPart = &p.fields.get<Vec3>(field::kWallColourGradient);
   stress_.resize(n);
   gradient_.resize(n);
   const Real dimension = 3.0;
@@ -58,9 +56,6 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   for (std::size_t pairIndex = 0; pairIndex < tensions.size(); ++pairIndex) {
     const InterfacialTension& pair = tensions[pairIndex];
     const Real sigma = pair.sigma;
-    // The wall part belongs to the pair whose fluid has contact angles; WallAdhesionYoung checks
-    // there is only one such pair and it is listed first in that case.
-    const bool withWall = wallPart != nullptr && pairIndex == 0;
     // Phase 1: colour gradient and surface stress of every particle of the pair.
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
@@ -77,9 +72,8 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
         if (cj < 0 || cj == ci) continue;  // (C_j - C_i) = 0 within a phase
         g += (p.mass[j] / p.density[j]) * Real(cj - ci) * gradF[k];
       }
-      if (withWall) g += (*wallPart)[i];
-      gradient_[i] = g;
       const Real norm = g.norm();  // [1/m]
+      gradient_[i] = g;
       // Below 1e-6 of the interface's |gradC| ~ 1/h the direction is round-off: no stress.
       if (norm * world.supportRadius() < 1e-6) {
         stress_[i].setZero();
@@ -100,11 +94,22 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
         const Real vj = p.mass[j] / p.density[j];
         f += vi * vj * ((stress_[i] + stress_[j]) * gradF[k]);
       }
-      if (!stress_[i].isZero(0)) {
-        Vec3 wallSum = Vec3::Zero();
-        for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+      if (!stress_[i].isZero(0) && nw.count(i) > 0) {
+        // Mirror image of the stress across the wall: Pi_b = R Pi_i R with the reflection
+        // R = I - 2 m m^T about the local wall normal m. (An unreflected copy would add a
+        // tangential traction 2 Pi_tm on a tilted contact line and pull it toward 90 deg.)
+        Vec3 wallSum = Vec3::Zero(), m = Vec3::Zero();
+        for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
           wallSum += wallVolume[nw.indices[k]] * gradB[k];
-        f += 2.0 * vi * (stress_[i] * wallSum);
+          m += wallNormal[nw.indices[k]] * wallVolume[nw.indices[k]];
+        }
+        Mat3 mirrored = stress_[i];
+        if (m.squaredNorm() > 0) {
+          m.normalize();
+          const Mat3 reflect = Mat3::Identity() - 2.0 * m * m.transpose();
+          mirrored = reflect * stress_[i] * reflect;
+        }
+        f += vi * ((stress_[i] + mirrored) * wallSum);
       }
       p.a[i] += f / p.mass[i];
     }

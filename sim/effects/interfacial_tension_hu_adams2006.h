@@ -13,12 +13,11 @@
 // 2 sigma / R (tests/sim/interface_laplace.cpp checks it); the isotropic part sigma|gradC|/D
 // only changes pressure inside the diffuse layer, not the jump between the bulk phases.
 //
-// Walls: the pair sum is mirrored onto wall particles b (stress Pi_b = Pi_i, volume the Akinci
-// 2012 boundary volume), so a uniform stress near a wall exerts no spurious force, just as the
-// Akinci pressure mirror does. A wall contributes nothing to gradC unless the wall_adhesion stage
-// (wall_adhesion_young.h) is active; it writes the wall's part of gradC into the field
-// "wall_colour_gradient", which is added here. With no contact angle the wall acts as a mirror,
-// i.e. a neutral 90 deg wall.
+// Walls: the pair sum is mirrored onto wall particles b (stress Pi_b = R Pi_i R, the reflection of
+// Pi_i about the local wall plane; volume the Akinci 2012 boundary volume), so a uniform stress
+// near a wall exerts no spurious force, just as the Akinci pressure mirror does. Walls do not
+// enter gradC: a wall is a neutral (90 deg) mirror; the wall_adhesion stage
+// (wall_adhesion_young.h) adds the wall interface energies that set another contact angle.
 //
 // Time step: the capillary-wave limit dt <= sqrt(rho_avg d^3 / (2 pi sigma)) (Brackbill, Kothe
 // & Zemach 1992, J. Comput. Phys. 100:335, eq. 61), with rho_avg the mean of the pair's rest
@@ -32,8 +31,6 @@
 namespace sim {
 
 namespace field {
-// [1/m] wall part of the colour gradient of the (single) pair that has contact angles.
-inline constexpr const char* kWallColourGradient = "wall_colour_gradient";
 // [1/m] colour gradient of the first tension pair (the diffuse interface normal times delta).
 inline constexpr const char* kColourGradient = "colour_gradient";
 }  // namespace field

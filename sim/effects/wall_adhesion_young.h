@@ -1,25 +1,32 @@
-// Wall wetting with a contact angle theta per (fluid, wall tag), the model parameter derived from
-// Young's relation, no per-scene tuning.
+// Wall wetting with a contact angle theta per (fluid, wall tag): Young's relation applied as a
+// wall-interface surface stress, no per-scene tuning.
 //
-// The wall takes part in the diffuse interface of interfacial_tension
-// (interfacial_tension_hu_adams2006.h) with a fixed colour c_w. In that model the energy of an
-// interface across which the colour changes by |dC| is sigma |dC| per unit area, so a wall of
-// colour c_w has the interface energies gamma_wA = sigma (1 - c_w) against phase A (C = 1) and
-// gamma_wB = sigma c_w against phase B (C = 0). Young's relation measured through A,
-//   sigma cos(theta_A) = gamma_wB - gamma_wA = sigma (2 c_w - 1),
-// gives the wall colour
-//   c_w = (1 + cos theta_A) / 2,
-// which depends on theta only (sigma cancels). Each step this stage writes the wall part of the
-// colour gradient, sum_b V_b (c_w - C_i) gradW_ib over the walls with a contact angle, into the
-// field "wall_colour_gradient"; interfacial_tension adds it to the fluid part before forming the
-// stress, so the interface normal near the wall turns toward the angle Young's relation asks
-// for (the discrete counterpart of the wall boundary condition on the normal in Brackbill,
-// Kothe & Zemach 1992, section 2.3, without choosing a contact-line region by hand). Walls of
-// tags without a contact angle contribute nothing: they act as a neutral (90 deg) mirror.
+// The fluid-fluid interface of interfacial_tension (interfacial_tension_hu_adams2006.h) is a
+// surface stress sigma (I - n n) delta_s (Lafaurie et al. 1994). A wall wetted by phase k has its
+// own interface energy gamma_wk, i.e. a surface stress gamma_wk (I - m m) delta_w in the fluid
+// layer next to the wall (m: wall normal into the fluid, delta_w: a wall delta function). Inside
+// one phase this stress is uniform along the wall and exerts no force; where the contact line
+// separates the phases, its divergence is the line force (gamma_wB - gamma_wA) along the wall,
+// which moves the contact line until Young's relation holds:
+//   sigma cos(theta_A) = gamma_wB - gamma_wA          (theta_A measured through phase A).
+// Only the difference matters, so the model uses gamma_wA = -sigma cos(theta_A) / 2 and
+// gamma_wB = +sigma cos(theta_A) / 2: the one parameter comes from theta and sigma alone.
 //
-// The angle given is measured through the fluid named in ContactAngle; the toolkit's clinical
-// convention (DESIGN.md) names the aqueous phase. Only one tension pair may have contact angles
-// (the scene's oil-aqueous pair); it must be the first pair of the MaterialTable.
+// Discretisation (the same pair form as the fluid-fluid stress, so both line forces are
+// measured by one operator):
+//   A_b      area of wall particle b = 1 / sum_b' W2(x_b - x_b')   (2-D cubic spline, own support)
+//   S_b      = sum_i V_i W_ib, how much fluid the wall particle sees this step
+//   delta_i  = sum_b (A_b / S_b) W_ib: a wall delta function whose integral over the fluid on
+//            each unit of wall area is exactly 1 (sum_i V_i delta_i = sum_b A_b) wherever the
+//            fluid sits, so the wall energy does not depend on the fluid-wall gap
+//   Pi_i     = gamma_{phase of i} delta_i (I - m_i m_i^T)
+//   a_i     += 1/m_i sum_j V_i V_j (Pi_i + Pi_j) gradW_ij
+// Walls of tags without a contact angle get no wall stress: they stay neutral (90 deg).
+//
+// Convention: the angle in ContactAngle is measured through the fluid it names; the toolkit's
+// clinical convention (DESIGN.md) names the aqueous phase (theta ~ 18 deg for silicone oil on
+// retina, Fawcett et al. 1994). One pair of liquids may have contact angles: the first tension
+// pair of the MaterialTable.
 #pragma once
 
 #include <vector>
@@ -34,13 +41,13 @@ class WallAdhesionYoung final : public Effect {
   void attach(World& world) override;
   void apply(World& world, const StepContext& context) override;
 
-  // c_w for a contact angle theta [deg] measured through the phase of colour 1.
-  static Real wallColour(Real thetaThroughColourOne);
-
  private:
-  std::vector<Real> wallColour_;  // [1] per wall particle; NaN where the wall has no angle
-  int materialA_ = -1, materialB_ = -1;  // the pair; A has colour 1
-  std::vector<Vec3>* wallGradient_ = nullptr;  // [1/m]
+  int materialA_ = -1, materialB_ = -1;  // the pair; the stored cosines are measured through A
+  std::vector<Real> cosThetaA_;   // [1] per wall particle; NaN where its tag has no angle
+  std::vector<Real> wallArea_;    // [m^2] per wall particle
+  std::vector<Real> wallFluidSum_;  // [1] S_b scratch
+  std::vector<Mat3> stress_;      // [Pa] scratch
+  Real sigma_ = 0.0;              // [N/m]
 };
 
 }  // namespace sim

@@ -18,7 +18,8 @@ PressureJump measureDropletPressureJump(const World& world, const std::vector<Re
     if (p.material[i] == region.material && r < region.radius - region.margin) {
       sumIn += pressure[i];
       ++out.insideCount;
-    } else if (p.material[i] != region.material && r > region.radius + region.margin) {
+    } else if (p.material[i] != region.material && r > region.radius + region.margin &&
+               r < region.outerRadius) {
       sumOut += pressure[i];
       ++out.outsideCount;
     }
