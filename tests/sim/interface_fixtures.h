@@ -43,6 +43,9 @@ struct DropletSpec {
   // a cap cut by the floor; <= -1 means a free droplet centred in the box.
   Real sessileStartCos = -2;
   Real boxHeight = 0;         // [m] inner height for sessile scenes (0: same as the width)
+  // [1] shape perturbation of a free droplet, r(theta) = R (1 + eps P2(cos theta)) with theta
+  // from the +y axis (the l = 2 mode of the oscillation benchmark)
+  Real p2Amplitude = 0;
 };
 
 // Fills the closed box on a lattice of spacing d starting kWallGap d from the walls; particles
@@ -80,7 +83,9 @@ inline DropletScene dropletScene(const DropletSpec& s) {
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
         const Vec3 x = Vec3::Constant(gap) + d * Vec3(i + 0.5, j + 0.5, k + 0.5);
-        const bool isOil = (x - out.centre).norm() < s.radius;
+        const Vec3 r = x - out.centre;
+        const Real c = r.norm() > 0 ? r.y() / r.norm() : 0;
+        const bool isOil = r.norm() < s.radius * (1 + s.p2Amplitude * 0.5 * (3 * c * c - 1));
         const int m = isOil ? out.oil : out.aqueous;
         oilCount += isOil;
         w.particles.add(x, Vec3::Zero(), w.materials[m].restDensity * d * d * d * (1 + s.massExcess),

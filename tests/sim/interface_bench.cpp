@@ -1,0 +1,153 @@
+// Longer interface validations (issue 6) that are too costly for CI, run by hand:
+//   sim_interface_bench oscillation [R_mm] [d_per_R]   l = 2 droplet oscillation vs Lamb/Rayleigh
+//   sim_interface_bench sessile THETA_DEG [t_end_s]    sessile droplet contact angle
+// Results and wall times go to stdout; docs/interface.md records the measured numbers.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <numbers>
+#include <vector>
+
+#include "interface_fixtures.h"
+#include "sim/measure/droplet_pressure_jump.h"
+#include "sim/measure/sessile_contact_angle.h"
+
+using namespace sim;
+
+namespace {
+
+double seconds(std::chrono::steady_clock::time_point t0) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// Shape moment of the oil: Q = <y^2> - (<x^2> + <z^2>) / 2 about its centre [m^2]; it follows
+// the P2 amplitude of the droplet's shape.
+Real shapeMoment(const World& w, int oil) {
+  const Vec3 c = centreOfMaterial(w, oil);
+  Real q = 0;
+  int n = 0;
+  for (Index i = 0; i < w.particles.size(); ++i)
+    if (w.particles.material[i] == oil) {
+      const Vec3 r = w.particles.x[i] - c;
+      q += r.y() * r.y() - 0.5 * (r.x() * r.x() + r.z() * r.z());
+      ++n;
+    }
+  return q / n;
+}
+
+int oscillation(Real radius, Real perR) {
+  testing::DropletSpec s;
+  s.radius = radius;
+  s.spacing = radius / perR;
+  s.halfWidth = 2 * radius;
+  s.sigma = 0.04;
+  s.oilViscosity = s.aqueousViscosity = 1e-3;  // water-like: damping 5 nu / R^2 << omega
+  s.massExcess = 0.05;
+  s.p2Amplitude = 0.15;
+  auto scene = testing::dropletScene(s);
+  World& w = *scene.world;
+  const Real rhoI = 970, rhoO = 1000;
+  // Lamb (1932, Hydrodynamics, section 275): a drop of density rhoI in a liquid of density rhoO,
+  //   omega_l^2 = l (l+1) (l-1) (l+2) sigma / (R^3 ((l+1) rhoI + l rhoO));
+  // with rhoO = 0 it is Rayleigh's l (l-1) (l+2) sigma / (rhoI R^3).
+  const Real R = scene.radius;
+  const Real omega = std::sqrt(24 * s.sigma / (R * R * R * (3 * rhoI + 2 * rhoO)));
+  const Real period = 2 * std::numbers::pi / omega;
+  PipelineOptions options;
+  options.solver = "wcsph";
+  options.wcsph.speedOfSound = 12 * std::sqrt(2 * s.sigma / R / 1000);
+  Pipeline pipeline = assemblePipeline(w, options);
+  pipeline.attach(w);
+  std::printf("oscillation: R = %.2f mm, d = R/%.0f, %zu particles, sigma %.3f N/m, Lamb period "
+              "%.2f ms (Rayleigh in vacuum %.2f ms)\n",
+              R * 1e3, perR, w.particles.size(), s.sigma, period * 1e3,
+              2 * std::numbers::pi / std::sqrt(8 * s.sigma / (rhoI * R * R * R)) * 1e3);
+  const auto t0 = std::chrono::steady_clock::now();
+  std::vector<Real> times, q;
+  while (w.time < 2.2 * period) {
+    pipeline.step(w);
+    times.push_back(w.time);
+    q.push_back(shapeMoment(w, scene.oil));
+  }
+  // Crossings of the mean (the mean over the run removes the static offset of the lattice).
+  Real mean = 0;
+  for (Real v : q) mean += v;
+  mean /= static_cast<Real>(q.size());
+  std::vector<Real> crossings;
+  for (std::size_t k = 1; k < q.size(); ++k)
+    if ((q[k - 1] - mean) * (q[k] - mean) < 0) {
+      const Real f = (q[k - 1] - mean) / (q[k - 1] - q[k]);
+      crossings.push_back(times[k - 1] + f * (times[k] - times[k - 1]));
+    }
+  for (std::size_t k = 0; k < q.size(); k += q.size() / 40)
+    std::printf("  t = %.4f s  Q - mean = %+.3e m^2\n", times[k], q[k] - mean);
+  if (crossings.size() < 3) {
+    std::printf("fewer than 3 mean crossings: no oscillation measured\n");
+    return 1;
+  }
+  // Half periods between successive crossings; use the ones after the first (start-up).
+  const Real measured = 2 * (crossings.back() - crossings[1]) /
+                        static_cast<Real>(crossings.size() - 2);
+  std::printf("measured period %.2f ms from %zu crossings, Lamb %.2f ms: %+.1f %%; %ld steps, "
+              "wall %.1f s\n",
+              measured * 1e3, crossings.size(), period * 1e3, 100 * (measured / period - 1),
+              w.stepCount, seconds(t0));
+  return 0;
+}
+
+int sessile(Real theta, Real tEnd, Real startCos) {
+  testing::DropletSpec s;
+  s.radius = 0.003;
+  s.spacing = s.radius / 6;
+  s.halfWidth = 2 * s.radius;
+  s.boxHeight = 1.6 * s.radius;
+  s.sigma = 0.04;
+  s.oilViscosity = s.aqueousViscosity = 0.05;
+  s.massExcess = 0.05;
+  s.sessileStartCos = startCos;
+  auto scene = testing::dropletScene(s);
+  World& w = *scene.world;
+  w.materials.setContactAngle(scene.oil, 0, theta);
+  PipelineOptions options;
+  options.solver = "wcsph";
+  options.wcsph.speedOfSound = 2;
+  options.wcsph.artificialViscosity = 0.5;
+  options.wallFriction = false;  // free slip: a no-slip wall pins the contact line (Huh-Scriven)
+  Pipeline pipeline = assemblePipeline(w, options);
+  pipeline.attach(w);
+  const auto t0 = std::chrono::steady_clock::now();
+  Real next = 0;
+  CapFit fit;
+  while (w.time < tEnd) {
+    pipeline.step(w);
+    if (w.time >= next) {
+      fit = fitSessileCap(w, scene.oil, {Vec3::Zero(), Vec3::UnitY()}, s.spacing);
+      std::printf("  t = %.4f s  theta = %.1f deg (through oil)  R = %.2f mm  rms %.3f mm\n",
+                  w.time, fit.contactAngle, fit.sphere.radius * 1e3,
+                  fit.sphere.rmsResidual * 1e3);
+      next += tEnd / 10;
+    }
+  }
+  fit = fitSessileCap(w, scene.oil, {Vec3::Zero(), Vec3::UnitY()}, s.spacing);
+  std::printf("sessile: requested %.1f deg, start %.1f deg, measured %.1f deg after %.3f s; "
+              "%zu particles, %ld steps, wall %.1f s\n",
+              theta, std::acos(-startCos) * 180 / std::numbers::pi, fit.contactAngle, w.time,
+              w.particles.size(), w.stepCount, seconds(t0));
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc >= 2 && std::strcmp(argv[1], "oscillation") == 0)
+    return oscillation(argc > 2 ? std::atof(argv[2]) * 1e-3 : 0.003, argc > 3 ? std::atof(argv[3]) : 6);
+  if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0)
+    return sessile(std::atof(argv[2]), argc > 3 ? std::atof(argv[3]) : 0.05,
+                   argc > 4 ? std::atof(argv[4]) : 0.0);
+  std::fprintf(stderr,
+               "usage: sim_interface_bench oscillation [R_mm] [d_per_R]\n"
+               "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n");
+  return 2;
+}
