@@ -108,7 +108,13 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
     if (weight <= 0 || m.squaredNorm() == 0) continue;
     m.normalize();
     const Real cosA = cosWeighted / weight;
-    const Real gamma = (p.material[i] == materialA_ ? -0.5 : 0.5) * sigma_ * cosA;  // [N/m]
+    // Only gamma_wB - gamma_wA = sigma cos(theta_A) matters. All of it goes to one phase, as a
+    // tension (gamma > 0): on B when cos > 0, on A when cos < 0. A compressive wall layer
+    // (gamma < 0) stalled the contact line in tests; and a layer on one phase ends only at the
+    // contact line and at the walls that phase wets.
+    const bool isA = p.material[i] == materialA_;
+    const Real gamma = cosA >= 0 ? (isA ? 0.0 : sigma_ * cosA) : (isA ? -sigma_ * cosA : 0.0);
+    if (gamma == 0.0) continue;  // [N/m]
     stress_[i] = gamma * delta * (Mat3::Identity() - m * m.transpose());
     any = true;
   }

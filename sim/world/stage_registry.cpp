@@ -72,9 +72,7 @@ const std::vector<EffectEntry>& effectRegistry() {
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<XsphMonaghan1989>(o.velocitySmoothing);
        }},
-      // wall_adhesion before interfacial_tension: it writes the wall part of the colour gradient
-      // that the tension stage reads in the same step.
-      {"wall_adhesion", "contact angle per (fluid, wall) via Young's relation (wall colour)",
+      {"wall_adhesion", "contact angle per (fluid, wall): Young wall-interface stress",
        [](const World& w, const PipelineOptions&) {
          const bool on = !w.materials.contactAngles().empty() &&
                          !w.materials.interfacialTensions().empty();

@@ -18,6 +18,8 @@ inline Material liquid(const char* name, Real rho, Real mu) {
   return m;
 }
 
+inline constexpr int kFloorTag = 1;  // wall tag of the box floor (y = 0); other walls keep 0
+
 struct DropletScene {
   TankSpec spec;
   std::unique_ptr<World> world;
@@ -71,6 +73,9 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   out.aqueous = w.materials.add(liquid("aqueous", s.aqueousDensity, s.aqueousViscosity));
   w.materials.setInterfacialTension(out.oil, out.aqueous, s.sigma);
   addTankWalls(w, out.spec, d);
+  // The floor gets its own tag so that a contact angle can be set on it alone.
+  for (std::size_t b = 0; b < w.walls.size(); ++b)
+    if (w.walls.normal[b].y() < -0.5) w.walls.tag[b] = kFloorTag;
   const bool sessile = s.sessileStartCos > -1;
   // The floor's fluid side is y = 0; the first lattice layer sits at gap + d/2.
   out.centre = sessile ? Vec3(0.5 * out.spec.innerMax.x(), s.sessileStartCos * s.radius,
