@@ -104,16 +104,25 @@ int sessile(Real theta, Real tEnd, Real startCos) {
   s.halfWidth = 2 * s.radius;
   s.boxHeight = 1.6 * s.radius;
   s.sigma = 0.04;
-  s.oilViscosity = s.aqueousViscosity = 0.05;
-  s.massExcess = 0.05;
+  s.oilViscosity = s.aqueousViscosity = 0.005;
+  s.massExcess = 0.02;
   s.sessileStartCos = startCos;
+  if (startCos < -0.1) {
+    // A flatter start: keep the hemisphere's volume, 2/3 pi R0^3 = cap volume of radius R.
+    const Real c = -startCos;
+    const Real capFactor = (2 + c) * (1 - c) * (1 - c) / 3;  // cap volume / (pi R^3), c = cos(theta)
+    s.radius = 0.003 * std::cbrt(2.0 / 3.0 / capFactor);
+    s.spacing = 0.0005;
+    s.halfWidth = 0.006;
+    s.boxHeight = 0.0048;
+  }
   auto scene = testing::dropletScene(s);
   World& w = *scene.world;
-  w.materials.setContactAngle(scene.oil, 0, theta);
+  w.materials.setContactAngle(scene.oil, testing::kFloorTag, theta);
   PipelineOptions options;
   options.solver = "wcsph";
   options.wcsph.speedOfSound = 2;
-  options.wcsph.artificialViscosity = 0.5;
+  options.wcsph.artificialViscosity = 0.1;
   options.wallFriction = false;  // free slip: a no-slip wall pins the contact line (Huh-Scriven)
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
@@ -128,6 +137,7 @@ int sessile(Real theta, Real tEnd, Real startCos) {
                   w.time, fit.contactAngle, fit.sphere.radius * 1e3,
                   fit.sphere.rmsResidual * 1e3);
       next += tEnd / 10;
+      std::fflush(stdout);
     }
   }
   fit = fitSessileCap(w, scene.oil, {Vec3::Zero(), Vec3::UnitY()}, s.spacing);
