@@ -50,6 +50,7 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   const auto& wallNormal = world.walls.normal;
   const auto& tensions = world.materials.interfacialTensions();
   stress_.resize(n);
+  stressed_.resize(n);
   gradient_.resize(n);
   const Real dimension = 3.0;
 
@@ -60,9 +61,9 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       const int ci = colourOf(p.material[i], pair);
+      stressed_[i] = 0;
       if (ci < 0) {
         gradient_[i].setZero();
-        stress_[i].setZero();
         continue;
       }
       Vec3 g = Vec3::Zero();
@@ -75,11 +76,9 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
       const Real norm = g.norm();  // [1/m]
       gradient_[i] = g;
       // Below 1e-6 of the interface's |gradC| ~ 1/h the direction is round-off: no stress.
-      if (norm * world.supportRadius() < 1e-6) {
-        stress_[i].setZero();
-        continue;
-      }
+      if (norm * world.supportRadius() < 1e-6) continue;
       stress_[i] = sigma * (norm / dimension * Mat3::Identity() - g * g.transpose() / norm);
+      stressed_[i] = 1;
     }
     if (pairIndex == 0) *colourGradient_ = gradient_;
     // Phase 2: divergence of the stress, pairwise antisymmetric; walls mirror the stress.
@@ -90,11 +89,12 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
       Vec3 f = Vec3::Zero();  // [N]
       for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
         const Index j = nf.indices[k];
-        if (colourOf(p.material[j], pair) < 0) continue;
-        const Real vj = p.mass[j] / p.density[j];
-        f += vi * vj * ((stress_[i] + stress_[j]) * gradF[k]);
+        if (!stressed_[i] && !stressed_[j]) continue;  // both zero (includes non-members)
+        const Mat3 sum = stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
+                                      : stress_[j];
+        f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
       }
-      if (!stress_[i].isZero(0) && nw.count(i) > 0) {
+      if (stressed_[i] && nw.count(i) > 0) {
         // Mirror image of the stress across the wall: Pi_b = R Pi_i R with the reflection
         // R = I - 2 m m^T about the local wall normal m, so the wall takes only the normal part
         // of the interface's pull and the contact line feels its full tangential part

@@ -86,10 +86,10 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
   }
   // Wall delta function, wall normal and wall-interface stress per particle.
   stress_.resize(n);
+  stressed_.assign(n, 0);
   bool any = false;
 #pragma omp parallel for schedule(static) reduction(|| : any)
   for (Index i = 0; i < n; ++i) {
-    stress_[i].setZero();
     if (!inPair(i) || nw.count(i) == 0) continue;
     Real delta = 0, cosWeighted = 0, weight = 0;  // [1/m], [1], [1/m^3]
     Vec3 m = Vec3::Zero();
@@ -109,13 +109,14 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
     m.normalize();
     const Real cosA = cosWeighted / weight;
     // Only gamma_wB - gamma_wA = sigma cos(theta_A) matters. All of it goes to one phase, as a
-    // tension (gamma > 0): on B when cos > 0, on A when cos < 0. A compressive wall layer
-    // (gamma < 0) stalled the contact line in tests; and a layer on one phase ends only at the
-    // contact line and at the walls that phase wets.
+    // tension (gamma > 0): on B when cos > 0, on A when cos < 0. A layer on one phase ends only
+    // at the contact line and where that phase's wetted wall ends (a split over both phases
+    // put line forces at every box edge, which pushed corner particles through the walls).
     const bool isA = p.material[i] == materialA_;
     const Real gamma = cosA >= 0 ? (isA ? 0.0 : sigma_ * cosA) : (isA ? -sigma_ * cosA : 0.0);
     if (gamma == 0.0) continue;  // [N/m]
     stress_[i] = gamma * delta * (Mat3::Identity() - m * m.transpose());
+    stressed_[i] = 1;
     any = true;
   }
   if (!any) return;
@@ -126,8 +127,10 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
     Vec3 f = Vec3::Zero();  // [N]
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
       const Index j = nf.indices[k];
-      if (stress_[i].isZero(0) && stress_[j].isZero(0)) continue;
-      f += vi * (p.mass[j] / p.density[j]) * ((stress_[i] + stress_[j]) * gradF[k]);
+      if (!stressed_[i] && !stressed_[j]) continue;
+      const Mat3 sum = stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
+                                    : stress_[j];
+      f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
     }
     p.a[i] += f / p.mass[i];
   }

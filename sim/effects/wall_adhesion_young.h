@@ -37,6 +37,7 @@
 // pair of the MaterialTable.
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include "sim/effects/effect.h"
@@ -54,7 +55,8 @@ class WallAdhesionYoung final : public Effect {
   std::vector<Real> cosThetaA_;   // [1] per wall particle; NaN where its tag has no angle
   std::vector<Real> wallArea_;    // [m^2] per wall particle
   std::vector<Real> wallFluidSum_;  // [1] S_b scratch
-  std::vector<Mat3> stress_;      // [Pa] scratch
+  std::vector<Mat3> stress_;      // [Pa] scratch, valid where stressed_ is 1
+  std::vector<std::uint8_t> stressed_;
   Real sigma_ = 0.0;              // [N/m]
 };
 

@@ -108,6 +108,19 @@ int oscillation(Real radius, Real perR, Real kPeriods) {
       }
     }
   }
+  // Extrema of a running mean over +-30 samples: the first period read directly (max to max).
+  std::vector<Real> extremaTimes;
+  const std::size_t halfWindow = 30;
+  std::vector<Real> smooth(q.size(), 0);
+  for (std::size_t k = halfWindow; k + halfWindow < q.size(); ++k) {
+    for (std::size_t j = k - halfWindow; j <= k + halfWindow; ++j) smooth[k] += q[j];
+    smooth[k] /= 2 * halfWindow + 1;
+  }
+  for (std::size_t k = halfWindow + 1; k + halfWindow + 1 < q.size(); ++k)
+    if ((smooth[k] - smooth[k - 1]) * (smooth[k + 1] - smooth[k]) < 0) {
+      extremaTimes.push_back(times[k]);
+      std::printf("  extremum at t = %.4f s (Q = %+.3e m^2)\n", times[k], smooth[k]);
+    }
   const Real measured = 2 * std::numbers::pi / bestW;
   std::printf("fitted period %.2f ms (damping %.1f 1/s), Lamb %.2f ms: %+.1f %%; %ld steps, "
               "wall %.1f s\n",
