@@ -1,6 +1,7 @@
 #include "protocols/scenario/scenario.h"
 
 #include <algorithm>
+#include <numbers>
 #include <cmath>
 
 #include "anatomy/anatomy_error.h"
@@ -134,6 +135,8 @@ FluidPhase phaseFromLibrary(const std::string& name, bool isTamponade) {
   f.isTamponade = isTamponade;
   f.density = r.density->value;
   f.dynamicViscosity = r.dynamicViscosity->value;
+  if (r.interfacialTension) f.interfacialTension = r.interfacialTension->value;
+  if (r.contactAngle) f.contactAngleThroughAqueous = r.contactAngle->value;
   return f;
 }
 
@@ -150,6 +153,8 @@ FluidPhase tamponadePhase(const TamponadeSpec& t) {
     const Viscosity& v = t.viscosity->value;
     f.dynamicViscosity = v.kind == ViscosityKind::kDynamic ? v.value : v.value * f.density;
   }
+  if (t.interfacialTension) f.interfacialTension = t.interfacialTension->value;
+  if (t.contactAngle) f.contactAngleThroughAqueous = t.contactAngle->value * 180.0 / std::numbers::pi;
   return f;
 }
 
@@ -258,6 +263,20 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   }
 
   buildWalls(p, s, options.wallSpacingFactor * d);
+
+  // Interface physics data (issue 6): the stage rules switch interfacial tension and wall
+  // adhesion on when both phases are present (sim::effectRegistry()).
+  if (oil.interfacialTension && *oil.interfacialTension > 0.0) {
+    s.world->materials.setInterfacialTension(aqueous.materialIndex, oil.materialIndex,
+                                             *oil.interfacialTension);
+    if (oil.contactAngleThroughAqueous) {
+      std::vector<int> tags(s.world->walls.tag.begin(), s.world->walls.tag.end());
+      std::sort(tags.begin(), tags.end());
+      tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
+      for (const int tag : tags)
+        s.world->materials.setContactAngle(aqueous.materialIndex, tag, *oil.contactAngleThroughAqueous);
+    }
+  }
 
   // Fluids: fill plane under the first posture's gravity; a lighter tamponade floats.
   const sim::Vec3 down = s.schedule.front().gravity.normalized();

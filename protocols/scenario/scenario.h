@@ -73,6 +73,10 @@ struct FluidPhase {
   bool isTamponade = false;
   double density = 0.0;       // [kg/m^3]
   double dynamicViscosity = 0.0;  // [Pa s]
+  // Tamponade only: interfacial tension against aqueous [N/m] and contact angle on the retina
+  // measured through the aqueous phase [deg] (DESIGN.md), from the library or the protocol.
+  std::optional<double> interfacialTension;
+  std::optional<double> contactAngleThroughAqueous;
   double volume = 0.0;        // [m^3] the phase's share of the cavity volume (geometric)
   std::size_t count = 0;      // particles
   double particleMass = 0.0;  // [kg] MassRule

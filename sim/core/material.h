@@ -22,6 +22,23 @@ struct Material {
   Real kinematicViscosity() const { return dynamicViscosity / restDensity; }  // [m^2/s]
 };
 
+// Interfacial tension between two fluid materials (issue 6).
+struct InterfacialTension {
+  int materialA = -1;
+  int materialB = -1;
+  Real sigma = 0.0;  // [N/m]
+};
+
+// Contact angle of a fluid on the wall particles of one tag, MEASURED THROUGH `fluidMaterial`
+// (0 deg: that fluid spreads on the wall; 180 deg: it beads up). The toolkit's clinical convention
+// (DESIGN.md) gives theta through the aqueous phase; a caller holding the angle through the
+// tamponade passes the tamponade as fluidMaterial, or 180 deg minus it for the aqueous.
+struct ContactAngle {
+  int fluidMaterial = -1;
+  int wallTag = 0;
+  Real angle = 90.0;  // [deg]
+};
+
 class MaterialTable {
  public:
   // Returns the new material's index. Validates the physical parameters.
@@ -51,11 +68,40 @@ class MaterialTable {
     for (const auto& m : materials_) n += (m.kind == kind);
     return n;
   }
+  // Sets (or replaces) sigma [N/m] between fluid materials a and b (sigma 0 removes it).
+  void setInterfacialTension(int a, int b, Real sigma) {
+    require(a != b && a >= 0 && b >= 0 && a < size() && b < size(),
+            "interfacial tension needs two different existing materials");
+    require(sigma >= 0.0, "interfacial tension must be >= 0 N/m");
+    std::erase_if(tensions_, [&](const InterfacialTension& t) {
+      return (t.materialA == a && t.materialB == b) || (t.materialA == b && t.materialB == a);
+    });
+    if (sigma > 0.0) tensions_.push_back({a, b, sigma});
+  }
+  Real interfacialTension(int a, int b) const {  // [N/m], 0 when none is set
+    for (const auto& t : tensions_)
+      if ((t.materialA == a && t.materialB == b) || (t.materialA == b && t.materialB == a))
+        return t.sigma;
+    return 0.0;
+  }
+  const std::vector<InterfacialTension>& interfacialTensions() const { return tensions_; }
+  // Sets (or replaces) the contact angle [deg], measured through `fluid`, on walls of `wallTag`.
+  void setContactAngle(int fluid, int wallTag, Real degrees) {
+    require(fluid >= 0 && fluid < size(), "contact angle for a material that does not exist");
+    require(degrees > 0.0 && degrees < 180.0,
+            "contact angle must be in (0, 180) deg, measured through material '" +
+                materials_[static_cast<size_t>(fluid)].name + "'");
+    std::erase_if(angles_, [&](const ContactAngle& c) { return c.wallTag == wallTag; });
+    angles_.push_back({fluid, wallTag, degrees});
+  }
+  const std::vector<ContactAngle>& contactAngles() const { return angles_; }
   auto begin() const { return materials_.begin(); }
   auto end() const { return materials_.end(); }
 
  private:
   std::vector<Material> materials_;
+  std::vector<InterfacialTension> tensions_;
+  std::vector<ContactAngle> angles_;
 };
 
 }  // namespace sim

@@ -3,6 +3,8 @@
 #include <sstream>
 
 #include "sim/effects/gravity.h"
+#include "sim/effects/interfacial_tension_hu_adams2006.h"
+#include "sim/effects/wall_adhesion_young.h"
 #include "sim/effects/viscosity_monaghan2005.h"
 #include "sim/effects/xsph_monaghan1989.h"
 
@@ -69,6 +71,48 @@ const std::vector<EffectEntry>& effectRegistry() {
        },
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<XsphMonaghan1989>(o.velocitySmoothing);
+       }},
+      {"wall_adhesion", "contact angle per (fluid, wall): Young wall-interface stress",
+       [](const World& w, const PipelineOptions&) {
+         // Wetting acts at a contact line: it needs both liquids of the tension pair present.
+         bool bothPhases = false;
+         for (const auto& t : w.materials.interfacialTensions()) {
+           bool hasA = false, hasB = false;
+           for (const auto m : w.particles.material) {
+             hasA = hasA || m == t.materialA;
+             hasB = hasB || m == t.materialB;
+           }
+           bothPhases = bothPhases || (hasA && hasB);
+         }
+         const bool angle = !w.materials.contactAngles().empty();
+         const bool on = angle && bothPhases;
+         return StageDecision{"wall_adhesion", on, false,
+                              on ? "a contact angle is given for a fluid with interfacial tension"
+                                 : (angle ? "one liquid only: no contact line"
+                                          : "no contact angle (walls are neutral, 90 deg)")};
+       },
+       [](const World&, const PipelineOptions&) { return std::make_unique<WallAdhesionYoung>(); }},
+      {"interfacial_tension", "surface stress between two liquids (Hu & Adams 2006)",
+       [](const World& w, const PipelineOptions&) {
+         std::ostringstream why;
+         bool on = false;
+         for (const auto& t : w.materials.interfacialTensions()) {
+           bool hasA = false, hasB = false;
+           for (const auto m : w.particles.material) {
+             hasA = hasA || m == t.materialA;
+             hasB = hasB || m == t.materialB;
+           }
+           if (hasA && hasB && !on) {
+             on = true;
+             why << "two liquid phases with sigma = " << t.sigma << " N/m ('"
+                 << w.materials[t.materialA].name << "', '" << w.materials[t.materialB].name << "')";
+           }
+         }
+         if (!on) why << "no two liquid phases with an interfacial tension";
+         return StageDecision{"interfacial_tension", on, false, why.str()};
+       },
+       [](const World&, const PipelineOptions&) {
+         return std::make_unique<InterfacialTensionHuAdams2006>();
        }},
       {"elasticity", "implicit corotated linear elasticity (Peer et al. 2018), elastic tissue",
        [](const World& w, const PipelineOptions&) {

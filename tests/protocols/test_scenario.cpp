@@ -185,15 +185,21 @@ TEST_CASE("forced effects reach the pipeline; one-fluid scenes", "[unit][scenari
     for (const auto& note : t.notes) noted = noted || note.find("one fluid only") != std::string::npos;
     CHECK(noted);
   }
-  // Forcing on an effect this build lacks: a ProtocolError at the line that forces it.
-  try {
-    assembleScenario(parseProtocol((dir / "missing.toml").string()));
-    FAIL("expected a ProtocolError");
-  } catch (const ProtocolError& e) {
-    REQUIRE(e.diagnostics().size() == 1);
-    CHECK(e.diagnostics()[0].where.line == 16);  // `interfacial_tension = true`
-    CHECK_THAT(e.diagnostics()[0].toString(),
-               Catch::Contains("effect 'interfacial_tension' is forced on but this build does not have it"));
+  // Two phases with the library's sigma: interfacial tension and wall adhesion are chosen; a
+  // one-fluid scene (full fill) has neither, and allocates none of their fields.
+  {
+    Scenario two = assembleScenario(parseProtocol((dir / "missing.toml").string()));
+    const sim::Pipeline pipeline = sim::assemblePipeline(*two.world, two.pipelineOptions);
+    CHECK(pipeline.hasStage("interfacial_tension"));
+    CHECK(pipeline.hasStage("wall_adhesion"));
+    CHECK_FALSE(pipeline.hasStage("elasticity"));  // no tissue in the scene
+    Scenario one = assembleScenario(parseProtocol((dir / "full.toml").string()));
+    sim::Pipeline onePipeline = sim::assemblePipeline(*one.world, one.pipelineOptions);
+    CHECK_FALSE(onePipeline.hasStage("interfacial_tension"));
+    CHECK_FALSE(onePipeline.hasStage("wall_adhesion"));
+    onePipeline.attach(*one.world);
+    CHECK_FALSE(one.world->particles.fields.has("colour_gradient"));
+    CHECK_FALSE(one.world->particles.fields.has("reference_position"));
   }
   fs::remove_all(dir);
 }

@@ -1,0 +1,139 @@
+#include "sim/effects/wall_adhesion_young.h"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <string>
+
+namespace sim {
+namespace {
+
+// 2-D cubic spline with support radius h (Monaghan 1992 normalisation 40 / (7 pi h^2)), used
+// only to measure the area per wall particle on the sampled wall surface.
+Real cubicSpline2d(Real r, Real h) {
+  const Real q = r / h;
+  if (q >= 1) return 0;
+  const Real norm = 40.0 / (7.0 * std::numbers::pi * h * h);
+  if (q <= 0.5) return norm * (6 * (q * q * q - q * q) + 1);
+  const Real t = 1 - q;
+  return norm * 2 * t * t * t;
+}
+
+}  // namespace
+
+void WallAdhesionYoung::attach(World& world) {
+  const auto& materials = world.materials;
+  const auto& angles = materials.contactAngles();
+  const auto& tensions = materials.interfacialTensions();
+  require(!angles.empty(), "wall_adhesion is on but no contact angle is given");
+  require(!tensions.empty(),
+          "a contact angle needs an interfacial tension between the fluid that touches the wall "
+          "and the other fluid: set sigma (MaterialTable::setInterfacialTension)");
+  const InterfacialTension& pair = tensions.front();
+  materialA_ = pair.materialA;
+  materialB_ = pair.materialB;
+  sigma_ = pair.sigma;
+  const std::size_t nWalls = world.walls.size();
+  cosThetaA_.assign(nWalls, std::numeric_limits<Real>::quiet_NaN());
+  for (const auto& angle : angles) {
+    const std::string& fluid = materials[angle.fluidMaterial].name;
+    require(angle.fluidMaterial == materialA_ || angle.fluidMaterial == materialB_,
+            "contact angle given through '" + fluid + "', which is not in the first tension pair ('" +
+                materials[materialA_].name + "', '" + materials[materialB_].name +
+                "'): wall wetting supports one pair of liquids; list that pair first");
+    // theta through B is 180 deg - theta through A.
+    const Real thetaA = angle.fluidMaterial == materialA_ ? angle.angle : 180.0 - angle.angle;
+    const Real cosA = std::cos(thetaA * std::numbers::pi / 180.0);
+    bool found = false;
+    for (std::size_t b = 0; b < nWalls; ++b)
+      if (world.walls.tag[b] == angle.wallTag) {
+        cosThetaA_[b] = cosA;
+        found = true;
+      }
+    require(found, "contact angle for wall tag " + std::to_string(angle.wallTag) +
+                       " (through '" + fluid + "') but no wall particle has that tag");
+  }
+  // Area per wall particle from the surface number density of the wall sample.
+  const NeighborList& ss = world.search().staticStatic();
+  const Real h = world.supportRadius();
+  wallArea_.resize(nWalls);
+#pragma omp parallel for schedule(static)
+  for (std::size_t b = 0; b < nWalls; ++b) {
+    Real density = cubicSpline2d(0, h);  // [1/m^2]
+    for (const Index* k = ss.begin(static_cast<Index>(b)); k != ss.end(static_cast<Index>(b)); ++k)
+      if (*k != b) density += cubicSpline2d((world.walls.x[b] - world.walls.x[*k]).norm(), h);
+    wallArea_[b] = 1.0 / density;
+  }
+}
+
+void WallAdhesionYoung::apply(World& world, const StepContext&) {
+  auto& p = world.particles;
+  const auto& walls = world.walls;
+  const Index n = static_cast<Index>(p.size());
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const auto& gradF = world.fluidGradients();
+  const Kernel& kernel = world.kernel;
+  auto inPair = [&](Index i) { return p.material[i] == materialA_ || p.material[i] == materialB_; };
+
+  // S_b: serial scatter over the wall lists (deterministic order; O(particles near walls)).
+  wallFluidSum_.assign(walls.size(), 0.0);
+  for (Index i = 0; i < n; ++i) {
+    if (nw.count(i) == 0) continue;
+    const Real vi = p.mass[i] / p.density[i];
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      wallFluidSum_[*b] += vi * kernel.W(p.x[i] - walls.x[*b]);
+  }
+  // Wall delta function, wall normal and wall-interface stress per particle.
+  stress_.resize(n);
+  stressed_.assign(n, 0);
+  bool any = false;
+#pragma omp parallel for schedule(static) reduction(|| : any)
+  for (Index i = 0; i < n; ++i) {
+    if (!inPair(i) || nw.count(i) == 0) continue;
+    Real delta = 0, cosWeighted = 0, weight = 0;  // [1/m], [1], [1/m^3]
+    Vec3 m = Vec3::Zero();
+    for (const Index* bp = nw.begin(i); bp != nw.end(i); ++bp) {
+      const Index b = *bp;
+      if (std::isnan(cosThetaA_[b])) continue;
+      const Real w = kernel.W(p.x[i] - walls.x[b]);
+      // A wall particle that sees almost no fluid (a dry corner) would make A_b / S_b blow up;
+      // 1e-3 of a half-filled kernel is far below any wetted wall.
+      if (wallFluidSum_[b] < 1e-3) continue;
+      delta += wallArea_[b] / wallFluidSum_[b] * w;
+      cosWeighted += w * cosThetaA_[b];
+      weight += w;
+      m -= w * walls.normal[b];  // wall normals point into the wall
+    }
+    if (weight <= 0 || m.squaredNorm() == 0) continue;
+    m.normalize();
+    const Real cosA = cosWeighted / weight;
+    // Only gamma_wB - gamma_wA = sigma cos(theta_A) matters. All of it goes to one phase, as a
+    // tension (gamma > 0): on B when cos > 0, on A when cos < 0. A layer on one phase ends only
+    // at the contact line and where that phase's wetted wall ends (a split over both phases
+    // put line forces at every box edge, which pushed corner particles through the walls).
+    const bool isA = p.material[i] == materialA_;
+    const Real gamma = cosA >= 0 ? (isA ? 0.0 : sigma_ * cosA) : (isA ? -sigma_ * cosA : 0.0);
+    if (gamma == 0.0) continue;  // [N/m]
+    stress_[i] = gamma * delta * (Mat3::Identity() - m * m.transpose());
+    stressed_[i] = 1;
+    any = true;
+  }
+  if (!any) return;
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    if (!inPair(i)) continue;
+    const Real vi = p.mass[i] / p.density[i];
+    Vec3 f = Vec3::Zero();  // [N]
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+      const Index j = nf.indices[k];
+      if (!stressed_[i] && !stressed_[j]) continue;
+      const Mat3 sum = stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
+                                    : stress_[j];
+      f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
+    }
+    p.a[i] += f / p.mass[i];
+  }
+}
+
+}  // namespace sim

@@ -1,0 +1,69 @@
+#include "sim/measure/sessile_contact_angle.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace sim {
+
+SphereFit fitSphere(const std::vector<Vec3>& points) {
+  require(points.size() >= 4, "sphere fit needs at least 4 points");
+  // Normal equations of |x|^2 = 2 c.x + k (unknowns c, k), solved in the coordinates relative to
+  // the points' mean for conditioning.
+  Vec3 mean = Vec3::Zero();
+  for (const Vec3& x : points) mean += x;
+  mean /= static_cast<Real>(points.size());
+  Eigen::Matrix4d ata = Eigen::Matrix4d::Zero();
+  Eigen::Vector4d atb = Eigen::Vector4d::Zero();
+  for (const Vec3& x : points) {
+    const Vec3 y = x - mean;
+    const Eigen::Vector4d row(2 * y.x(), 2 * y.y(), 2 * y.z(), 1.0);
+    ata += row * row.transpose();
+    atb += row * y.squaredNorm();
+  }
+  const Eigen::Vector4d sol = ata.ldlt().solve(atb);
+  require(sol.allFinite(), "sphere fit is degenerate (points coplanar?)");
+  SphereFit fit;
+  const Vec3 c = sol.head<3>();
+  const Real r2 = sol[3] + c.squaredNorm();
+  require(r2 > 0, "sphere fit is degenerate");
+  fit.centre = c + mean;
+  fit.radius = std::sqrt(r2);
+  Real sum = 0;
+  for (const Vec3& x : points) {
+    const Real e = (x - fit.centre).norm() - fit.radius;
+    sum += e * e;
+  }
+  fit.rmsResidual = std::sqrt(sum / static_cast<Real>(points.size()));
+  return fit;
+}
+
+CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& wall,
+                     Real excludeNearWall) {
+  const auto& p = world.particles;
+  const NeighborList& nf = world.fluidNeighbors();
+  const Real maxPair = 1.5 * world.particleSpacing();
+  const Vec3 n = wall.normal.normalized();
+  std::vector<Vec3> points;
+  for (Index i = 0; i < p.size(); ++i) {
+    if (p.material[i] != dropletMaterial) continue;
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
+      if (p.material[*j] == dropletMaterial) continue;
+      if ((p.x[i] - p.x[*j]).norm() > maxPair) continue;
+      const Vec3 mid = 0.5 * (p.x[i] + p.x[*j]);
+      if ((mid - wall.point).dot(n) < excludeNearWall) continue;
+      points.push_back(mid);
+    }
+  }
+  require(points.size() >= 4, "sessile cap fit: fewer than 4 interface points above the wall");
+  CapFit out;
+  out.sphere = fitSphere(points);
+  out.pointCount = static_cast<int>(points.size());
+  const Real zc = (out.sphere.centre - wall.point).dot(n);
+  out.contactAngle =
+      std::acos(std::clamp(-zc / out.sphere.radius, Real(-1), Real(1))) * 180.0 / std::numbers::pi;
+  return out;
+}
+
+}  // namespace sim

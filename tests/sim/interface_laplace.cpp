@@ -1,0 +1,94 @@
+// Issue 6, validation 1: Young-Laplace pressure jump of an oil droplet in aqueous (no gravity,
+// closed box) with the interfacial_tension stage, for two radii and two tensions.
+#include <catch2/catch.hpp>
+
+#include <cstdio>
+
+#include "interface_fixtures.h"
+#include "sim/measure/droplet_pressure_jump.h"
+
+using namespace sim;
+
+namespace {
+
+struct LaplaceResult {
+  Real measured = 0;  // [Pa] time-averaged inside - outside
+  Real expected = 0;  // [Pa] 2 sigma / R
+  long steps = 0;
+};
+
+constexpr Real kRunTaus = 1.5;  // [1] run length in capillary times
+
+// Runs the droplet for 1.5 capillary times tau = sqrt(rho R^3 / sigma) and averages the jump
+// from 0.5 tau on (the first half capillary time lets the lattice sphere relax and the start-up acoustic
+// wave decay).
+LaplaceResult runLaplace(Real radius, Real sigma) {
+  testing::DropletSpec s;
+  s.radius = radius;
+  s.spacing = radius / 6;  // d = R/6: 3 kernel supports per radius (issue 6 suggests R/6..R/8)
+  const Real h = 2 * s.spacing;
+  // Fluid reaches 2h beyond the interface's outer edge R + h, plus one d: the outside sample
+  // (R + h < r < R + 2h) stays clear of the wall layer.
+  s.halfWidth = radius + 2 * h + s.spacing;
+  s.sigma = sigma;
+  // Viscosity does not enter the static jump; 0.05 Pa s (Ohnesorge ~0.1-0.2) damps the
+  // capillary oscillation of the relaxing lattice sphere within the run.
+  s.oilViscosity = s.aqueousViscosity = 0.05;
+  s.massExcess = 0.05;  // background pressure ~ 100 Pa keeps every particle above the p = 0 clamp
+  auto scene = testing::dropletScene(s);
+  World& w = *scene.world;
+  const Real expected = 2 * sigma / scene.radius;
+  PipelineOptions options;
+  options.solver = "wcsph";  // DFSPH's rest state is not yet calm (engine-notes KNOWN PROBLEM)
+  // c = 12 sqrt(dp / rho): the jump compresses the droplet by dp / (rho c^2) < 1 %.
+  options.wcsph.speedOfSound = 12 * std::sqrt(expected / 1000.0);
+  // alpha 0.5 damps the box's acoustic modes excited by the compressed start; artificial
+  // viscosity vanishes at rest and cannot shift a static balance.
+  options.wcsph.artificialViscosity = 0.5;
+  Pipeline pipeline = assemblePipeline(w, options);
+  REQUIRE(pipeline.hasStage("interfacial_tension"));
+  pipeline.attach(w);
+  const auto& pressure = w.particles.fields.get<Real>("pressure");
+  const Real tau = std::sqrt(1000.0 * radius * radius * radius / sigma);  // [s]
+  Real sum = 0;
+  int samples = 0;
+  while (w.time < kRunTaus * tau) {
+    pipeline.step(w);
+    if (w.time < 0.5 * tau) continue;
+    const Vec3 centre = centreOfMaterial(w, scene.oil);
+    const auto jump = measureDropletPressureJump(
+        w, pressure, {centre, scene.radius, h, scene.oil, scene.radius + 2 * h});
+    sum += jump.jump;
+    ++samples;
+  }
+  REQUIRE(allFinite(w));
+  return {sum / samples, expected, w.stepCount};
+}
+
+void checkLaplace(Real radius, Real sigma) {
+  const LaplaceResult r = runLaplace(radius, sigma);
+  std::printf("Laplace R = %.1f mm, sigma = %.3f N/m: dp = %.2f Pa, 2 sigma / R = %.2f Pa (%+.1f %%), "
+              "%ld steps\n",
+              radius * 1e3, sigma, r.measured, r.expected, 100 * (r.measured / r.expected - 1),
+              r.steps);
+  // 10 %: the issue's acceptance. The sources of error are the diffuse interface (width 2h =
+  // 2R/3 at this resolution: the jump is the stress integral weighted by 1/r over the layer,
+  // about 3 % above 2 sigma / R here, see docs/interface.md) and the residual parasitic
+  // currents; both are below 5 % in the measured cases, so 10 % fails on a wrong factor (a
+  // missing 1/D, a wrong normal or sign), not on noise.
+  CHECK(r.measured == Approx(r.expected).epsilon(0.10));
+}
+
+}  // namespace
+
+TEST_CASE("Laplace pressure of a 3 mm oil droplet, sigma 40 and 20 mN/m",
+          "[validation][interface][laplace]") {
+  checkLaplace(0.003, 0.040);
+  checkLaplace(0.003, 0.020);
+}
+
+TEST_CASE("Laplace pressure of a 2 mm oil droplet, sigma 40 and 20 mN/m",
+          "[validation][interface][laplace]") {
+  checkLaplace(0.002, 0.040);
+  checkLaplace(0.002, 0.020);
+}

@@ -1,0 +1,225 @@
+// Issue 6 (interface part): invariants of the interfacial-tension and wall-adhesion stages, the
+// material-table API and the measurement helpers. Static configurations only (no time stepping).
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+#include "interface_fixtures.h"
+#include "sim/effects/interfacial_tension_hu_adams2006.h"
+#include "sim/effects/wall_adhesion_young.h"
+#include "sim/fluid/density.h"
+#include "sim/measure/sessile_contact_angle.h"
+
+using namespace sim;
+using Catch::Matchers::Contains;
+
+namespace {
+
+// Accelerations of one effect alone on the scene as built (densities by summation).
+void applyAlone(World& w, Effect& effect) {
+  computeDensities(w, w.particles.density);
+  effect.attach(w);
+  for (auto& a : w.particles.a) a.setZero();
+  effect.apply(w, StepContext{1e-4});
+}
+
+testing::DropletScene freeDroplet(Real perR) {
+  testing::DropletSpec s;
+  s.radius = 0.003;
+  s.spacing = s.radius / perR;
+  s.halfWidth = s.radius + 3 * 2 * s.spacing;  // interface (R +- h) more than h from the walls
+  s.sigma = 0.04;
+  s.massExcess = 0;
+  return testing::dropletScene(s);
+}
+
+testing::DropletScene hemisphere() {
+  testing::DropletSpec s;
+  s.radius = 0.003;
+  s.spacing = s.radius / 6;
+  s.halfWidth = 2 * s.radius;
+  s.boxHeight = 1.6 * s.radius;
+  s.sigma = 0.04;
+  s.massExcess = 0;
+  s.sessileStartCos = 0;  // centre on the floor: a hemisphere, 90 deg
+  return testing::dropletScene(s);
+}
+
+// Sum of m a . e_r over particles within `reach` of the vertical axis through the centre,
+// e_r the horizontal radial direction [N].
+Real radialForce(const World& w, const Vec3& centre, Real reach) {
+  Real f = 0;
+  for (Index i = 0; i < w.particles.size(); ++i) {
+    Vec3 r = w.particles.x[i] - centre;
+    r.y() = 0;
+    if (r.norm() == 0 || r.norm() > reach) continue;
+    f += w.particles.mass[i] * w.particles.a[i].dot(r.normalized());
+  }
+  return f;
+}
+
+}  // namespace
+
+TEST_CASE("MaterialTable keeps sigma per pair and contact angles, and rejects bad values",
+          "[unit][interface]") {
+  MaterialTable t;
+  const int oil = t.add(testing::liquid("oil", 970, 1.0));
+  const int aq = t.add(testing::liquid("aqueous", 1000, 1e-3));
+  CHECK(t.interfacialTension(oil, aq) == 0.0);
+  t.setInterfacialTension(aq, oil, 0.04);
+  CHECK(t.interfacialTension(oil, aq) == 0.04);  // symmetric
+  t.setInterfacialTension(oil, aq, 0.035);       // replaces, does not add
+  CHECK(t.interfacialTensions().size() == 1);
+  CHECK(t.interfacialTension(aq, oil) == 0.035);
+  CHECK_THROWS_WITH(t.setInterfacialTension(oil, aq, -0.01), Contains(">= 0 N/m"));
+  CHECK_THROWS_WITH(t.setInterfacialTension(oil, oil, 0.01), Contains("two different"));
+  t.setContactAngle(aq, 3, 18.0);
+  REQUIRE(t.contactAngles().size() == 1);
+  CHECK(t.contactAngles()[0].fluidMaterial == aq);
+  CHECK_THROWS_WITH(t.setContactAngle(oil, 3, 180.0), Contains("measured through material 'oil'"));
+  CHECK_THROWS_AS(t.setContactAngle(7, 3, 30.0), SimError);
+}
+
+TEST_CASE("Capillary time-step limit is Brackbill's sqrt(rho_avg d^3 / (2 pi sigma))",
+          "[unit][interface]") {
+  auto scene = freeDroplet(6);
+  World& w = *scene.world;
+  InterfacialTensionHuAdams2006 tension;
+  tension.attach(w);
+  const Real d = w.particleSpacing();
+  const Real expected = std::sqrt(0.5 * (970.0 + 1000.0) * d * d * d / (2 * std::numbers::pi * 0.04));
+  CHECK(tension.maxTimeStep(w) == Approx(expected).epsilon(1e-12));
+}
+
+TEST_CASE("Interfacial stress on a lattice droplet integrates to 2 sigma / R and conserves "
+          "momentum",
+          "[unit][interface]") {
+  for (const Real perR : {6.0, 8.0}) {
+    auto scene = freeDroplet(perR);
+    World& w = *scene.world;
+    InterfacialTensionHuAdams2006 tension;
+    applyAlone(w, tension);
+    // Pressure jump the force field asks for: dp = -int f_r dr = sum_i -m_i a_i.e_r / (4 pi r_i^2)
+    // (force per volume summed over spherical shells).
+    Real jump = 0, scale = 0;
+    Vec3 momentum = Vec3::Zero();
+    for (Index i = 0; i < w.particles.size(); ++i) {
+      const Vec3 r = w.particles.x[i] - scene.centre;
+      const Vec3 f = w.particles.mass[i] * w.particles.a[i];
+      jump -= f.dot(r.normalized()) / (4 * std::numbers::pi * r.squaredNorm());
+      momentum += f;
+      scale += f.norm();
+    }
+    INFO("d = R/" << perR << ": jump " << jump << " Pa, 2 sigma / R " << 2 * 0.04 / scene.radius);
+    // Measured 0.03 % (R/6) and 0.45 % (R/8) off; 2 % allows the lattice's departure from a
+    // sphere, while a wrong factor in the stress (1/D, sign, |gradC|) is off by 30 % or more.
+    CHECK(jump == Approx(2 * 0.04 / scene.radius).epsilon(0.02));
+    // Every pair term is antisymmetric and no stressed particle is near a wall: sum m a = 0 to
+    // round-off (relative to the sum of |m a|).
+    CHECK(momentum.norm() < 1e-12 * scale);
+  }
+}
+
+TEST_CASE("Wall adhesion exerts Young's line force sigma cos(theta) at the contact line",
+          "[unit][interface]") {
+  // Hemisphere of oil on the floor: the wall stress -sigma cos(theta) (I - m m) delta_w under
+  // the oil ends at the contact line (radius a ~ R) and pulls it outward with 2 pi a sigma
+  // cos(theta) in total.
+  for (const Real theta : {60.0, 90.0, 120.0, 30.0}) {
+    auto scene = hemisphere();
+    World& w = *scene.world;
+    w.materials.setContactAngle(scene.oil, testing::kFloorTag, theta);
+    WallAdhesionYoung adhesion;
+    applyAlone(w, adhesion);
+    const Real h = w.supportRadius();
+    const Real force = radialForce(w, scene.centre, scene.radius + 3 * h);
+    const Real expected = 2 * std::numbers::pi * scene.radius * 0.04 *
+                          std::cos(theta * std::numbers::pi / 180);
+    INFO("theta " << theta << " deg: radial force " << force << " N, expected " << expected);
+    if (theta == 90.0) {
+      CHECK(std::abs(force) < 1e-12);
+    } else {
+      // Measured +20 % at d = R/6 (the layer's discrete divergence at the lattice contact
+      // line; docs/interface.md). 30 % catches a wrong sign or a lost factor 2 in gamma.
+      CHECK(force == Approx(expected).epsilon(0.30));
+    }
+  }
+}
+
+TEST_CASE("A contact angle through aqueous is 180 deg minus the angle through oil",
+          "[unit][interface]") {
+  auto throughOil = hemisphere();
+  auto throughAqueous = hemisphere();
+  throughOil.world->materials.setContactAngle(throughOil.oil, testing::kFloorTag, 60.0);
+  throughAqueous.world->materials.setContactAngle(throughAqueous.aqueous, testing::kFloorTag,
+                                                   120.0);
+  WallAdhesionYoung a, b;
+  applyAlone(*throughOil.world, a);
+  applyAlone(*throughAqueous.world, b);
+  Real maxDiff = 0, maxA = 0;
+  for (Index i = 0; i < throughOil.world->particles.size(); ++i) {
+    maxDiff = std::max(maxDiff,
+                       (throughOil.world->particles.a[i] - throughAqueous.world->particles.a[i]).norm());
+    maxA = std::max(maxA, throughOil.world->particles.a[i].norm());
+  }
+  CHECK(maxA > 0);
+  CHECK(maxDiff <= 1e-12 * maxA);  // cos(180 - t) = -cos(t): identical up to round-off
+}
+
+TEST_CASE("Interface stages are assembled only when the scene calls for them",
+          "[unit][interface]") {
+  auto scene = hemisphere();
+  World& w = *scene.world;
+  PipelineOptions options;
+  options.solver = "wcsph";
+  options.wcsph.speedOfSound = 2;
+  {
+    const Pipeline p = assemblePipeline(w, options);
+    CHECK(p.hasStage("interfacial_tension"));
+    CHECK_FALSE(p.hasStage("wall_adhesion"));  // no contact angle yet
+  }
+  w.materials.setContactAngle(scene.aqueous, testing::kFloorTag, 18.0);
+  {
+    const Pipeline p = assemblePipeline(w, options);
+    CHECK(p.hasStage("wall_adhesion"));
+    CHECK_THAT(p.describe(), Contains("a contact angle is given"));
+  }
+  w.materials.setInterfacialTension(scene.oil, scene.aqueous, 0.0);  // removes the pair
+  {
+    const Pipeline p = assemblePipeline(w, options);
+    CHECK_FALSE(p.hasStage("interfacial_tension"));
+    CHECK_FALSE(p.hasStage("wall_adhesion"));
+  }
+  options.forced["interfacial_tension"] = Force::kOn;
+  Pipeline forced = assemblePipeline(w, options);
+  CHECK_THROWS_WITH(forced.attach(w), Contains("no pair of materials has a tension"));
+}
+
+TEST_CASE("Contact angle on a wall tag that does not exist is an error naming the tag",
+          "[unit][interface]") {
+  auto scene = hemisphere();
+  scene.world->materials.setContactAngle(scene.oil, 42, 60.0);
+  WallAdhesionYoung adhesion;
+  CHECK_THROWS_WITH(adhesion.attach(*scene.world), Contains("wall tag 42"));
+}
+
+TEST_CASE("Sphere fit recovers a sphere and the cap angle from points on it",
+          "[unit][interface]") {
+  // Points on a cap of a sphere of radius 2 centred 1 below the plane y = 0: the cap meets the
+  // plane at acos(-(-1)/2)... theta = acos(-z_c / R) with z_c = -1: 60 deg.
+  std::vector<Vec3> points;
+  const Vec3 c(0.3, -1.0, -0.2);
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 40; ++j) {
+      const Real polar = 0.9 * std::acos(0.5) * (i + 0.5) / 20;  // stays above y = 0
+      const Real az = 2 * std::numbers::pi * j / 40;
+      points.push_back(c + 2 * Vec3(std::sin(polar) * std::cos(az), std::cos(polar),
+                                    std::sin(polar) * std::sin(az)));
+    }
+  const SphereFit fit = fitSphere(points);
+  CHECK((fit.centre - c).norm() < 1e-9);  // exact data: only round-off
+  CHECK(fit.radius == Approx(2.0).epsilon(1e-9));
+  CHECK(fit.rmsResidual < 1e-9);
+  CHECK_THROWS_AS(fitSphere({Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY()}), SimError);
+}
