@@ -102,16 +102,19 @@ Real ViscosityWeiler2018::multiply(const World& world, Real dt, const std::vecto
   const NeighborList& nw = world.wallNeighbors();
   const auto& gradF = world.fluidGradients();
   const auto& gradB = world.wallGradients();
-  return reducer_.sum(p.size(), [&](std::size_t ii) {
-    const Index i = static_cast<Index>(ii);
+  const Index n = static_cast<Index>(p.size());
+  // The pair loop is the cost: a plain static loop so that every thread gets work even when the
+  // particle count is below a few reduction blocks; the dot product is a separate cheap pass.
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
     Vec3 f = Vec3::Zero();  // [N] linear part of the viscous force on i
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
       f += (fluidPair_[k] * gradF[k].dot(in[i] - in[nf.indices[k]])) * gradF[k];
     for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
       f += (wallPair_[k] * gradB[k].dot(in[i])) * gradB[k];
     out[i] = p.mass[i] * in[i] - dt * f;
-    return in[i].dot(out[i]);
-  });
+  }
+  return reducer_.sum(p.size(), [&](std::size_t i) { return in[i].dot(out[i]); });
 }
 
 void ViscosityWeiler2018::computeForces(const World& world, const std::vector<Vec3>& v,
