@@ -51,6 +51,9 @@ void ViscosityWeiler2018::attach(World& world) {
   for (auto* v : {&velocityStar_, &rhs_, &solution_, &residual_, &search_, &product_, &precond_})
     v->assign(n, Vec3::Zero());
   preconditioner_.assign(n, Mat3::Zero());
+  // Size the reduction buffers now, so that apply() allocates nothing.
+  reducer_.sum(n, [](std::size_t) { return 0.0; });
+  reducer_.sumVec(n, [](std::size_t) { return Vec3(Vec3::Zero()); });
   fluidPair_.reserve(2 * world.fluidNeighbors().totalPairs());
   wallPair_.reserve(2 * world.wallNeighbors().totalPairs());
 }
@@ -142,10 +145,10 @@ void ViscosityWeiler2018::apply(World& world, const StepContext& context) {
   auto& p = world.particles;
   const std::size_t n = p.size();
   if (n == 0) return;
-  require(warmStart_ != nullptr && velocityStar_.size() == n,
-          "implicit viscosity: attach() must run before apply() and the particle count must not "
-          "change afterwards (" + std::to_string(velocityStar_.size()) + " attached, " +
-              std::to_string(n) + " now)");
+  if (warmStart_ == nullptr || velocityStar_.size() != n)  // message built only on failure
+    throw SimError("implicit viscosity: attach() must run before apply() and the particle count "
+                   "must not change afterwards (" + std::to_string(velocityStar_.size()) +
+                   " attached, " + std::to_string(n) + " now)");
   const Real dt = context.dt;
   std::copy(p.v.begin(), p.v.end(), velocityStar_.begin());
   assemble(world, dt);
