@@ -157,7 +157,8 @@ void ViscosityWeiler2018::apply(World& world, const StepContext& context) {
 
   // Initial guess: v* plus last step's viscous velocity change at this step's length.
 #pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) solution_[i] = velocityStar_[i] + dt * warm[i];
+  for (std::size_t i = 0; i < n; ++i)
+    solution_[i] = params_.warmStart ? Vec3(velocityStar_[i] + dt * warm[i]) : velocityStar_[i];
   multiply(world, dt, solution_, product_);
   const Vec3 start = reducer_.sumVec(n, [&](std::size_t i) {
     residual_[i] = rhs_[i] - product_[i];

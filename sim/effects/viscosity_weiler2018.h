@@ -48,6 +48,8 @@ struct ImplicitViscosityParameters {
   Real tolerance = 1e-6;
   int maxIterations = 300;
   bool wallFriction = true;  // no-slip walls (false: walls exert no viscous force)
+  // Start CG from v* + dt a_visc(previous step) instead of v* (docs/viscosity.md: iterations).
+  bool warmStart = true;
 };
 
 // Optional wall field: tangential velocity of the wall surface [m/s] (see header comment).
