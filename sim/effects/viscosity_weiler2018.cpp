@@ -8,7 +8,7 @@
 namespace sim {
 namespace {
 
-constexpr Real kDimensionFactor = 2.0 * (3 + 2);  // [1] 2(d+2), d = 3 (Weiler 2018 eq. 11)
+constexpr Real kDimensionFactor = 2.0 * (3 + 2);  // [1] 2(d+2), d = 3 (Weiler 2018, after Monaghan 2005)
 constexpr Real kRegularisation = 0.01;            // [1] 0.01 h^2 keeps 1/|x_ij|^2 finite
 
 // Harmonic mean of two dynamic viscosities [Pa s] (header comment: stress continuity). Written

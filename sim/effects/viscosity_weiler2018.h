@@ -3,7 +3,7 @@
 // silicone oils (1000-5000 cSt) whose explicit viscous step limit 0.125 d^2/nu is far below the
 // CFL step.
 //
-// The viscous acceleration is the Laplacian of the velocity field (Weiler eq. 11, the vector form
+// The viscous acceleration is the Laplacian of the velocity field (Weiler et al.'s velocity Laplacian, the vector form
 // of the second-derivative approximation with the factor 2(d+2), d = 3 dimensions):
 //   a_i = 2(d+2) sum_j m_j mu_ij / (rho_i rho_j) (v_ij . x_ij) / (|x_ij|^2 + 0.01 h^2) gradW_ij
 //       + 2(d+2) sum_b V_b mu_i / rho_i (v_ib . x_ib) / (|x_ib|^2 + 0.01 h^2) gradW_ib   (walls)
@@ -11,7 +11,8 @@
 // symmetric coefficient c_ij = 2(d+2) m_i m_j mu_ij / (rho_i rho_j), so the system is
 //   (M + dt K) v = M v* + dt f_wall,        K = sum over pairs of k_ij x_ij x_ij^T,
 // with k_ij = -c_ij W'(r)/(r (r^2 + 0.01 h^2)) >= 0: M + dt K is symmetric positive definite and
-// conjugate gradients apply (Weiler solve the same system row-scaled by 1/m_i). It is solved
+// conjugate gradients apply (divided row by row by m_i it is v - dt a(v) = v*, symmetric only
+// for equal masses; the m_i-weighted form stays symmetric with several phases). It is solved
 // matrix-free with a block-Jacobi (3x3 per particle) preconditioner, warm-started from the last
 // step's viscous acceleration. Walls are static no-slip particles with Akinci volumes V_b; a wall
 // may carry a tangential surface velocity (a plate sliding in its own plane, a rotating cylinder)

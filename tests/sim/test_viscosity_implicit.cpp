@@ -111,8 +111,8 @@ Real couetteProfile(Real y, Real t, Real H, Real nu) {
 //   -2(d+2)/2 sum_j V dx^2 dy^2 W'(r) / (r (r^2 + 0.01 h^2))      (V = d^3, rest lattice).
 // The sum equals 1 in the continuum limit; at h = 2d it is 0.70: on a cubic lattice the nearest
 // neighbours lie on the axes, so the fourth moments of the kernel are anisotropic (the dx^4 sum is
-// 1.19 instead of 1, the dx^2 dy^2 sum 0.70). This is a property of the operator (Weiler 2018
-// eq. 11, Monaghan 2005), independent of the solver, and computed here from the kernel alone.
+// 1.19 instead of 1, the dx^2 dy^2 sum 0.70). This is a property of the operator (Weiler 2018,
+// Monaghan 2005), independent of the solver, and computed here from the kernel alone.
 Real latticeShearFactor(const Kernel& kernel, Real d) {
   const Real h = kernel.supportRadius();
   const int reach = static_cast<int>(std::ceil(h / d));
