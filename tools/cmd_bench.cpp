@@ -23,10 +23,15 @@
 #include "tools/commands.h"
 
 namespace tools {
+
+int runBenchSolvers(Args args);  // tools/cmd_bench_solvers.cpp
+
 namespace {
 
 constexpr const char* kBenchUsage =
-    "usage: tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
+    "usage: tamponade bench solvers [--quick] [--out DIR]   (the multiphase solver comparison;\n"
+    "                                                         --help for its options)\n"
+    "       tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
     "                              [--solvers dfsph,wcsph] [--out DIR]\n\n"
     "Runs the 3D dam break (water column a x 2a x a, a = 0.1 m, in a 4a long tank) with about\n"
     "the given numbers of particles for a fixed simulated time (default 0.05 s) with each solver,\n"
@@ -211,6 +216,7 @@ int runBench(Args args) {
     std::fputs(kBenchUsage, stdout);
     return 0;
   }
+  if (!args.empty() && args[0] == "solvers") return runBenchSolvers(args.subspan(1));
   if (args.empty() || args[0] != "engine") {
     std::fputs(kBenchUsage, stderr);
     return 2;

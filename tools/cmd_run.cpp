@@ -17,6 +17,7 @@
 
 #include "protocols/format/parse_protocol.h"
 #include "protocols/report/report_format.h"
+#include "protocols/scenario/progress_text.h"
 #include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/run_scenario.h"
 #include "tools/commands.h"
@@ -32,14 +33,21 @@ constexpr const char* kUsage =
     "outputs.folder). Checkpoints go to DIR/checkpoint.h5 every 1024 steps and on Ctrl-C or\n"
     "SIGTERM (after at most 15 more steps); --resume DIR continues such a run, with the same\n"
     "result as an uninterrupted run at the same thread count.\n"
-    "Bad protocols: file:line:column, exit code 2, nothing created. A stopped run exits 1.\n"
-    "(--stop-after-steps N stops as if interrupted at step N: for tests.)\n";
+    "Progress: a bar with ETA on a terminal, a plain line every 10 % (or 30 s) otherwise.\n"
+    "Exit codes: 0 done; 2 bad protocol or usage (file:line:column, nothing created); 1 the run\n"
+    "failed; 130 stopped by Ctrl-C (SIGINT), 143 stopped by SIGTERM (128 + signal number, the\n"
+    "shell convention), each after writing the checkpoint.\n"
+    "(--stop-after-steps N stops as if interrupted at step N and exits 1: for tests.)\n";
 
 // Set by SIGINT/SIGTERM; the run checkpoints and stops at its next checkpointable step.
-// std::atomic<bool> is lock-free here, so storing to it is async-signal-safe.
+// Lock-free atomics, so storing to them is async-signal-safe.
 std::atomic<bool> gStop{false};
-static_assert(std::atomic<bool>::is_always_lock_free);
-extern "C" void onSignal(int) { gStop.store(true); }
+std::atomic<int> gSignal{0};
+static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_always_lock_free);
+extern "C" void onSignal(int signalNumber) {
+  gSignal.store(signalNumber);
+  gStop.store(true);
+}
 
 int usage() {
   std::fputs(kUsage, stderr);
@@ -115,7 +123,7 @@ int runRun(Args args) {
 
     const bool terminal = isatty(fileno(stderr)) != 0;
     const auto start = std::chrono::steady_clock::now();
-    double nextReport = 0.0;  // [1] fraction of the run at which the next plain line is printed
+    protocols::PlainProgressThrottle throttle;
     protocols::RunOptions run;
     run.outputFolder = folder;
     run.resume = !resume.empty();
@@ -125,19 +133,16 @@ int runRun(Args args) {
     std::signal(SIGTERM, onSignal);
     if (options.accuracy)
       run.accuracyOverride = std::string(protocols::kAccuracyPresetNames[static_cast<std::size_t>(*options.accuracy)]);
+    double lastBar = -1.0;  // [s] wall time of the last bar redraw (at most 10 per second)
     run.progress = [&](const protocols::RunProgress& p) {
-      const double done = p.endTime > 0 ? std::min(1.0, p.time / p.endTime) : 1.0;
       const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      const double eta = done > 0 ? elapsed * (1.0 - done) / done : 0.0;
       if (terminal) {
-        const int width = 30, filled = static_cast<int>(done * width);
-        std::fprintf(stderr, "\r[%.*s%*s] %5.1f %%  t = %.4g s  %s  step %ld  ETA %.0f s ", filled,
-                     "##############################", width - filled, "", 100 * done, p.time,
-                     p.posture.c_str(), p.steps, eta);
-      } else if (done >= nextReport) {
-        std::fprintf(stderr, "%5.1f %%  t = %.4g s  %s  step %ld  elapsed %.0f s  ETA %.0f s\n",
-                     100 * done, p.time, p.posture.c_str(), p.steps, elapsed, eta);
-        nextReport += 0.1;
+        if (elapsed - lastBar < 0.1) return;
+        lastBar = elapsed;
+        std::fputs(protocols::renderProgressBar(p, elapsed).c_str(), stderr);
+      } else if (throttle.due(protocols::progressFraction(p), elapsed)) {
+        std::fputs(protocols::renderProgressLine(p, elapsed).c_str(), stderr);
+        std::fflush(stderr);
       }
     };
     const protocols::RunSummary summary = protocols::runScenario(protocol, scenario, run);
@@ -146,7 +151,16 @@ int runRun(Args args) {
       std::printf("run stopped at t = %.6g s (step %ld) with a checkpoint; continue with\n"
                   "  tamponade run --resume %s\n",
                   summary.simulatedTime, summary.steps, folder.string().c_str());
-      return 1;
+      std::fflush(stdout);
+      const int signalNumber = gSignal.load();
+      return signalNumber != 0 ? 128 + signalNumber : 1;
+    }
+    for (std::size_t k = 0; k < scenario.schedule.size(); ++k) {
+      const protocols::ScheduledPosture& posture = scenario.schedule[k];
+      if (posture.untilSteady && posture.endedSteady)
+        std::printf("posture %zu (%s): %s after %.4g s\n", k + 1, posture.label.c_str(),
+                    *posture.endedSteady ? "steady" : "not steady, stopped at its maximum",
+                    posture.duration);
     }
     std::printf("run finished: %ld steps, %zu frames, %.4g s simulated in %.1f s; mean retinal "
                 "coverage %s\noutput: %s\n",

@@ -100,6 +100,15 @@ std::string describeProtocol(const Protocol& p) {
 
   out.add("schedule.gravity", formatQuantity(p.schedule.gravity.value, Dimension::kAcceleration),
           p.schedule.gravity.where);
+  bool anySteady = false;
+  for (const Posture& posture : p.schedule.postures) anySteady = anySteady || posture.untilSteady;
+  if (anySteady) {
+    out.add("schedule.steady_window", formatQuantity(p.schedule.steadyWindow.value, Dimension::kDuration),
+            p.schedule.steadyWindow.where);
+    out.add("schedule.steady_coverage_change",
+            formatQuantity(p.schedule.steadyCoverageChange.value, Dimension::kFraction),
+            p.schedule.steadyCoverageChange.where);
+  }
   double total = 0.0;  // [s]
   for (std::size_t k = 0; k < p.schedule.postures.size(); ++k) {
     const Posture& s = p.schedule.postures[k];

@@ -16,6 +16,8 @@ using Table = TomlValueReader::Table;
 constexpr double kStandardGravity = 9.80665;     // [m/s^2] CGPM 1901
 constexpr double kDefaultSteadyLimit = 600.0;    // [s] upper bound of an "until steady" posture
 constexpr double kDefaultFrameInterval = 1.0;    // [s]
+constexpr double kDefaultSteadyWindow = 0.5;     // [s] steady_state.h explains the choice
+constexpr double kDefaultSteadyCoverageChange = 0.005;  // [1] half a percentage point
 constexpr std::array<std::string_view, 3> kDefaultFields = {"position", "velocity", "material"};
 
 // Reads one protocol; every helper reports into the reader and carries on, so one run of the
@@ -250,9 +252,13 @@ void ProtocolParser::readTamponade(const Table& root, Protocol& p) {
 }
 
 void ProtocolParser::readSchedule(const Table& root, Protocol& p) {
+  p.schedule.steadyWindow = {kDefaultSteadyWindow, defaultAt_};
+  p.schedule.steadyCoverageChange = {kDefaultSteadyCoverageChange, defaultAt_};
   const std::optional<Table> t = reader_.table(root, "schedule");
   if (!t) return;
   p.schedule.gravity = quantityOr(*t, "gravity", kStandardGravity);
+  p.schedule.steadyWindow = quantityOr(*t, "steady_window", kDefaultSteadyWindow);
+  p.schedule.steadyCoverageChange = quantityOr(*t, "steady_coverage_change", kDefaultSteadyCoverageChange);
   const std::vector<Table> postures = reader_.tableArray(*t, "postures");
   const toml::node* node = t->table->get("postures");
   if (postures.empty() && node != nullptr && node->is_array() && node->as_array()->empty())

@@ -120,6 +120,10 @@ struct Posture {
 struct ScheduleSpec {
   Located<double> gravity;  // [m/s^2] magnitude
   std::vector<Posture> postures;
+  // "until steady" postures (protocols/scenario/steady_state.h): the window [s] and the largest
+  // coverage change [1] of any region or break within it.
+  Located<double> steadyWindow;
+  Located<double> steadyCoverageChange;
 };
 
 struct EffectSwitches {

@@ -220,16 +220,24 @@ struct FrameWriter::Impl {
       frameTexts.push_back(formatXdmfFrame(composeXdmf(record), h5FileName));
   }
 
-  // Writes the `written` fields of `fields` into `group` (skipping `skip`'s fields) and returns
-  // their sidecar descriptions.
+  // Writes the `written` fields of `fields` (or those named in `only`, when given and not empty)
+  // into `group`, skipping `skip`'s fields, and returns their sidecar descriptions.
   std::vector<XdmfDataset> writeFields(hid_t group, const std::string& groupPath,
-                                       const sim::FieldRegistry& fields, const GroupRecord* skip) {
+                                       const sim::FieldRegistry& fields, const GroupRecord* skip,
+                                       const std::vector<std::string>* only = nullptr) {
     const Place place{root.file, groupPath};
+    const bool selected = only != nullptr && !only->empty();
+    if (selected)
+      for (const std::string& name : *only)
+        if (!fields.has(name))
+          throw IoError(root.file, groupPath, "no particle field '" + name + "' to write",
+                        "name fields of the engine's registry (outputs.fields)");
     std::vector<XdmfDataset> written;
     const auto opts = datasetOptions();
     for (const auto& field : fields) {
       const sim::FieldInfo& info = field->info();
-      if (!info.written) continue;
+      if (selected ? std::find(only->begin(), only->end(), info.name) == only->end() : !info.written)
+        continue;
       if (skip && std::any_of(skip->datasets.begin(), skip->datasets.end(),
                               [&](const XdmfDataset& d) { return d.name == info.name; }))
         continue;
@@ -472,7 +480,7 @@ std::size_t FrameWriter::writeFrame(double time, std::int64_t step,
       Handle group = hdf5::openOrCreateGroup(frame.get(), g.name, framePlace);
       const std::string groupPath = framePath + "/" + g.name;
       record.groups.push_back(
-          {g.name, s.writeFields(group.get(), groupPath, *g.fields, s.findStatic(g.name))});
+          {g.name, s.writeFields(group.get(), groupPath, *g.fields, s.findStatic(g.name), &g.only)});
       record.info.groups.push_back(g.name);
     }
     hdf5::writeAttribute(frame.get(), "time", time, framePlace);

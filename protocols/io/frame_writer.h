@@ -64,6 +64,9 @@ struct FrameWriterOptions {
 struct RegistryGroup {
   std::string name;
   const sim::FieldRegistry* fields = nullptr;
+  // Fields to write (the protocol's outputs.fields), whatever their `written` flag; empty = every
+  // field marked `written`. A name the registry does not hold is an IoError.
+  std::vector<std::string> only = {};
 };
 
 // A frame as recorded in the file.

@@ -1,5 +1,7 @@
 #include "protocols/scenario/rebuild_report.h"
 
+#include "protocols/scenario/run_scenario.h"
+
 #include <fstream>
 #include <sstream>
 
@@ -73,7 +75,8 @@ void rebuildReport(const std::filesystem::path& folder) {
   const Protocol protocol = loadRunProtocol(folder, options);
   const FrameReader reader(h5);
   const RunInfo info = reader.runInfo();
-  const Scenario s = assembleScenario(protocol, options);
+  Scenario s = assembleScenario(protocol, options);
+  applyRecordedPostureEnds(reader, s);  // "until steady" postures that ended early
   const FieldData walls = reader.readStaticField("wall", sim::field::kPosition);
   if (walls.rows != s.world->walls.size())
     throw IoError(h5.string(), "/static/wall/position",

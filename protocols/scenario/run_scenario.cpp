@@ -1,5 +1,6 @@
 #include "protocols/scenario/run_scenario.h"
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <fstream>
@@ -10,6 +11,8 @@
 #include "protocols/io/frame_writer.h"
 #include "protocols/report/write_report.h"
 #include "protocols/scenario/rebuild_report.h"
+#include "sim/core/reduction.h"
+#include "sim/measure/diagnostics.h"
 
 namespace protocols {
 namespace {
@@ -34,6 +37,20 @@ std::vector<std::string> seriesColumns(const RetinaMap& map) {
 
 }  // namespace
 
+void applyRecordedPostureEnds(const FrameReader& reader, Scenario& s, double upTo) {
+  const std::vector<std::string> names = reader.seriesNames();
+  if (std::find(names.begin(), names.end(), "postures") == names.end()) return;
+  const SeriesData ends = reader.readSeries("postures");
+  const std::vector<double> times = ends.column("time"), index = ends.column("posture"),
+                            steady = ends.column("steady"), start = ends.column("start");
+  for (std::size_t r = 0; r < ends.rows; ++r) {
+    const auto k = static_cast<std::size_t>(index[r]);
+    if (times[r] > upTo || k >= s.schedule.size()) continue;
+    s.schedule[k].endedSteady = steady[r] > 0;
+    if (steady[r] > 0) s.schedule[k].duration = times[r] - start[r];
+  }
+}
+
 RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& options) {
   const auto wallStart = std::chrono::steady_clock::now();
   sim::World& world = *s.world;
@@ -42,6 +59,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   const std::filesystem::path h5 = options.outputFolder / "frames.h5";
   const std::filesystem::path checkpointPath = options.outputFolder / "checkpoint.h5";
   const long sortInterval = world.parameters().zSortInterval;  // [steps]
+  const SteadyCriteria criteria = options.steady ? *options.steady : steadyCriteriaOf(protocol);
 
   const std::vector<std::string> columns = seriesColumns(s.retina);
   std::vector<FrameCoverage> frames;
@@ -53,6 +71,9 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   const double interval = protocol.outputs.frameInterval.value;  // [s]
   double nextFrame = world.time + interval;                      // [s]
   std::size_t firstPosture = 0;
+  double postureStart = 0.0;                // [s] simulated time the current posture began
+  double nextSample = 0.0;                  // [s] next steady-state sample (until steady)
+  std::vector<SteadySample> samples;        // of the current posture, trimmed to one window
 
   std::optional<FrameWriter> writer;
   if (options.resume) {
@@ -64,12 +85,24 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     world.lastTimeStep = state.dt;
     firstPosture = static_cast<std::size_t>(state.integerCounters.at("posture"));
     nextFrame = state.realCounters.at("next_frame");
+    postureStart = state.realCounters.at("posture_start");
+    nextSample = state.realCounters.at("next_sample");
+    const auto count = state.integerCounters.at("steady_samples");
+    for (std::int64_t k = 0; k < count; ++k) {
+      const std::string key = "steady:" + std::to_string(k) + ":";
+      SteadySample restored{state.realCounters.at(key + "time"), state.realCounters.at(key + "energy"), {}};
+      const auto values = state.integerCounters.at(key + "coverages");
+      for (std::int64_t c = 0; c < values; ++c)
+        restored.coverage.push_back(state.realCounters.at(key + "coverage:" + std::to_string(c)));
+      samples.push_back(std::move(restored));
+    }
     for (std::size_t k = 0; k < stageNames.size(); ++k) {
       const auto it = state.realCounters.find("stage:" + stageNames[k]);
       if (it != state.realCounters.end()) pipeline.timers().add(static_cast<int>(k), it->second);
     }
     {
       const FrameReader reader(h5);
+      applyRecordedPostureEnds(reader, s, state.time);
       std::vector<sim::Vec3> x;
       for (const FrameInfo& f : reader.frames()) {
         if (f.step > state.step) continue;
@@ -91,13 +124,16 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     metadata.strings["accuracy_override"] = options.accuracyOverride;
     metadata.strings["solver"] = s.pipelineOptions.solver;
     metadata.numbers["particle_spacing [m]"] = s.accuracy.particleSpacing;
+    metadata.numbers["steady window [s]"] = criteria.window;
+    metadata.numbers["steady kinetic energy per mass [J/kg]"] = criteria.kineticEnergyPerMass;
+    metadata.numbers["steady coverage change [1]"] = criteria.coverageChange;
     writer.emplace(h5, metadata);
     writer->writeStatic("wall", world.walls.fields);
   }
 
   auto record = [&]() {
     if (!frames.empty() && !(world.time > frames.back().time)) return;
-    writer->writeFrame(world.time, world.stepCount, {{"fluid", &world.particles.fields}});
+    writer->writeFrame(world.time, world.stepCount, {{"fluid", &world.particles.fields, s.outputFields}});
     fluidPositions.assign(world.particles.x.begin(), world.particles.x.end());
     fluidMaterials.assign(world.particles.material.begin(), world.particles.material.end());
     lastFractions = measureWallFractions(s, fluidPositions, fluidMaterials);
@@ -122,6 +158,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   // its sort counter privately and a resumed World starts it at 0 (World::initialize), which is
   // what the continuous run's counter is at exactly those steps; with the particle order and
   // every checkpointed field restored, the resumed run repeats the same floating-point sums.
+  // `posture` is the posture the resumed run continues with (the next one if this step ended one).
   auto checkpoint = [&](std::size_t posture) {
     CheckpointState state;
     state.time = world.time;
@@ -129,32 +166,86 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     state.dt = world.lastTimeStep;
     state.integerCounters["posture"] = static_cast<std::int64_t>(posture);
     state.realCounters["next_frame"] = nextFrame;
+    state.realCounters["posture_start"] = postureStart;
+    state.realCounters["next_sample"] = nextSample;
+    state.integerCounters["steady_samples"] = static_cast<std::int64_t>(samples.size());
+    for (std::size_t k = 0; k < samples.size(); ++k) {
+      const std::string key = "steady:" + std::to_string(k) + ":";
+      state.realCounters[key + "time"] = samples[k].time;
+      state.realCounters[key + "energy"] = samples[k].kineticEnergyPerMass;
+      state.integerCounters[key + "coverages"] = static_cast<std::int64_t>(samples[k].coverage.size());
+      for (std::size_t c = 0; c < samples[k].coverage.size(); ++c)
+        state.realCounters[key + "coverage:" + std::to_string(c)] = samples[k].coverage[c];
+    }
     for (const auto& e : pipeline.timers().entries()) state.realCounters["stage:" + e.name] = e.seconds;
     state.groups["fluid"] = &world.particles.fields;
     writer->flush();
     writeCheckpoint(checkpointPath, state);
   };
+  // One steady-state sample: the fluid's kinetic energy per mass and every region's and break's
+  // coverage now.
+  double totalMass = 0.0;  // [kg] constant
+  {
+    sim::DeterministicReducer r;
+    totalMass = r.sum(world.particles.size(), [&](std::size_t i) { return world.particles.mass[i]; });
+  }
+  auto sample = [&]() {
+    fluidPositions.assign(world.particles.x.begin(), world.particles.x.end());
+    fluidMaterials.assign(world.particles.material.begin(), world.particles.material.end());
+    const FrameCoverage c =
+        measureFrameCoverage(s.retina, measureWallFractions(s, fluidPositions, fluidMaterials), world.time);
+    SteadySample out{world.time, sim::kineticEnergy(world) / totalMass, {}};
+    for (const auto& r : c.regions) out.coverage.push_back(r.fraction);
+    for (const auto& b : c.breaks) out.coverage.push_back(b.area.fraction);
+    return out;
+  };
 
-  const double endTime = s.totalDuration();
   if (!options.resume) record();
-  double postureEnd = 0.0;
-  for (std::size_t k = 0; k < firstPosture; ++k) postureEnd += s.schedule[k].duration;
   RunSummary summary;
   for (std::size_t k = firstPosture; k < s.schedule.size() && !summary.stopped; ++k) {
-    const ScheduledPosture& posture = s.schedule[k];
+    ScheduledPosture& posture = s.schedule[k];
     world.gravity = posture.gravity;
-    postureEnd += posture.duration;
-    while (world.time < postureEnd) {
+    const double postureEnd = postureStart + posture.duration;  // [s] at the latest
+    bool ended = !(world.time < postureEnd);
+    // Ends the posture now: a row in "postures" and the next posture's start. A posture that ran
+    // its duration ends on the schedule's clock (its nominal end, so the last step's overshoot
+    // does not accumulate over the schedule, as before "until steady" existed); a steady one ends
+    // now, and its duration in the schedule becomes what was run.
+    auto endPosture = [&](bool steady) {
+      writer->appendSeries("postures", world.time,
+                           {static_cast<double>(k), steady ? 1.0 : 0.0, postureStart},
+                           {"posture", "steady", "start"});
+      if (steady) posture.duration = world.time - postureStart;
+      posture.endedSteady = steady;
+      postureStart = steady ? world.time : postureEnd;
+      nextSample = postureStart;
+      samples.clear();
+      ended = true;
+    };
+    if (ended) endPosture(false);
+    while (!ended) {
       pipeline.step(world);
       if (world.time >= nextFrame) {
         record();
         while (nextFrame <= world.time) nextFrame += interval;
       }
+      const double endTime = s.totalDuration();
       if (options.progress) options.progress({world.time, endTime, world.stepCount, posture.label});
+      bool steady = false;
+      if (posture.untilSteady && world.time >= nextSample) {
+        samples.push_back(sample());
+        while (nextSample <= world.time) nextSample += criteria.sampleInterval;
+        steady = isSteady(samples, postureStart, criteria);
+        // Keep one window: the newest sample at or before the window's start and all after it.
+        std::size_t keep = 0;
+        while (keep + 1 < samples.size() && samples[keep + 1].time <= world.time - criteria.window) ++keep;
+        samples.erase(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(keep));
+      }
+      if (steady || world.time >= postureEnd) endPosture(steady);
       if (world.stepCount % sortInterval != 0) continue;
       const bool stop = (options.stopRequested != nullptr && options.stopRequested->load()) ||
                         (options.stopAfterSteps > 0 && world.stepCount >= options.stopAfterSteps);
-      if (stop || world.stepCount % options.checkpointInterval == 0) checkpoint(k);
+      if (stop || world.stepCount % options.checkpointInterval == 0) checkpoint(ended ? k + 1 : k);
       if (stop) {
         summary.stopped = true;
         break;

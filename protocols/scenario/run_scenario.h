@@ -11,17 +11,21 @@
 // (16 steps), the only steps at which a resumed World is in the same state as the continuous one
 // (run_scenario.cpp). A resumed run is bit-identical to an uninterrupted one at the same thread
 // count (tests/protocols/test_scenario_run.cpp).
-// Not yet: the protocol's `outputs.fields` selection (every registry field marked `written` is
-// written); steady-state detection.
+// Frames hold Scenario::outputFields (the protocol's outputs.fields plus position and material).
 #pragma once
 
 #include <atomic>
 #include <filesystem>
 #include <functional>
+#include <limits>
+#include <optional>
+#include <vector>
 #include <string>
 
 #include "protocols/format/protocol.h"
+#include "protocols/io/frame_reader.h"
 #include "protocols/scenario/scenario.h"
+#include "protocols/scenario/steady_state.h"
 
 namespace protocols {
 
@@ -42,6 +46,7 @@ struct RunOptions {
   long checkpointInterval = 1024; // [steps] a multiple of the Z-sort interval (16)
   std::string accuracyOverride;  // the preset name given on the command line, recorded for
                                  // `tamponade report DIR` ("" = the protocol's own)
+  std::optional<SteadyCriteria> steady;  // "until steady": default steadyCriteriaOf(protocol)
 };
 
 struct RunSummary {
@@ -55,6 +60,13 @@ struct RunSummary {
 
 // Runs `scenario` (built from `protocol`). Throws IoError for output problems, SimError when the
 // simulation fails (e.g. a particle escapes the cavity).
+// Steady postures' durations in the scenario's schedule become what was run, and every ended
+// posture's ScheduledPosture::endedSteady is set (see above).
 RunSummary runScenario(const Protocol& protocol, Scenario& scenario, const RunOptions& options);
+
+// Shortens the durations of `scenario`'s postures that ended steady to what the run's "postures"
+// series recorded (rows at or before `upTo` [s]); a run without that series changes nothing.
+void applyRecordedPostureEnds(const FrameReader& reader, Scenario& scenario,
+                              double upTo = std::numeric_limits<double>::infinity());
 
 }  // namespace protocols

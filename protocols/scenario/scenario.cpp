@@ -14,6 +14,7 @@
 #include "meshing/mesh_measures.h"
 #include "meshing/sample_surface.h"
 #include "meshing/sample_volume.h"
+#include "protocols/format/edit_distance.h"
 #include "protocols/format/protocol_error.h"
 #include "sim/core/error.h"
 
@@ -158,6 +159,30 @@ sim::Vec3 gravityOf(const Posture& posture, double magnitude) {
     return magnitude * sim::Vec3(g[0], g[1], g[2]).normalized();
   }
   return magnitude * anatomy::gravityDirection(anatomy::parsePosture(toString(posture.name.value)));
+}
+
+// outputs.fields against the particle fields the run will have: the World's own and those the
+// pipeline's stages register (attach uses addOrGet, so attaching here and again in the run adds
+// nothing twice). Every unknown name is reported at its place in the file.
+void resolveOutputFields(const Protocol& p, Scenario& s) {
+  sim::Pipeline probe = sim::assemblePipeline(*s.world, s.pipelineOptions);
+  probe.attach(*s.world);
+  std::vector<std::string> names;
+  for (const auto& field : s.world->particles.fields) names.push_back(field->info().name);
+  const std::vector<std::string_view> candidates(names.begin(), names.end());
+  std::vector<Diagnostic> problems;
+  for (const Located<std::string>& f : p.outputs.fields) {
+    if (std::find(names.begin(), names.end(), f.value) != names.end()) continue;
+    const std::string hint = didYouMean(f.value, candidates);
+    problems.push_back({f.where, "outputs.fields: '" + f.value + "' is not a particle field of this scene",
+                        (hint.empty() ? std::string() : hint + " ") + "fields here: " +
+                            joinNames(candidates, true)});
+  }
+  if (!problems.empty()) throw ProtocolError(std::move(problems));
+  for (const char* always : {sim::field::kPosition, sim::field::kMaterial}) s.outputFields.push_back(always);
+  for (const Located<std::string>& f : p.outputs.fields)
+    if (std::find(s.outputFields.begin(), s.outputFields.end(), f.value) == s.outputFields.end())
+      s.outputFields.push_back(f.value);
 }
 
 }  // namespace
@@ -343,6 +368,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   } catch (const sim::SimError& error) {
     fail(p.accuracy.particleSpacing.where, error.what(), "check the accuracy settings");
   }
+  resolveOutputFields(p, s);
   return s;
 }
 

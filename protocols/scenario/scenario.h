@@ -81,8 +81,10 @@ struct FluidPhase {
 struct ScheduledPosture {
   std::string label;
   sim::Vec3 gravity = sim::Vec3::Zero();  // [m/s^2] eye frame
-  double duration = 0.0;                  // [s] (the upper bound when untilSteady)
+  double duration = 0.0;                  // [s] (the upper bound when untilSteady; what was run
+                                          //      once a run ended it steady)
   bool untilSteady = false;
+  std::optional<bool> endedSteady = {};   // set by a run (or from its files): steady before the bound
 };
 
 struct AccuracySettings {
@@ -107,6 +109,10 @@ struct Scenario {
   std::unique_ptr<sim::World> world;  // initialized
   sim::PipelineOptions pipelineOptions;
   std::vector<std::string> notes;     // what was simplified or left out, in words
+  // Fluid fields each frame holds: the protocol's outputs.fields, checked against the registry
+  // once the pipeline's fields are registered, plus position and material, which the coverage
+  // (report, `tamponade report DIR`, resume) is recomputed from.
+  std::vector<std::string> outputFields;
   double fillCompression = 1.0;       // [1] initial mean density / rest density (MassRule)
 
   // Tamponade flags of the world's dynamic particles in their current order, for the coverage
@@ -117,7 +123,8 @@ struct Scenario {
 
 // Throws ProtocolError (file:line:column of the value responsible) when the protocol cannot be
 // made concrete: an anatomy parameter out of its range, a break off the retina, a solver or a
-// forced effect this build does not have, a fill that leaves a phase without particles.
+// forced effect this build does not have, a fill that leaves a phase without particles, an
+// outputs.fields name that is not a particle field of the assembled pipeline (with "did you mean").
 Scenario assembleScenario(const Protocol& protocol, const ScenarioOptions& options = {});
 
 }  // namespace protocols

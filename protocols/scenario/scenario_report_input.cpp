@@ -60,10 +60,19 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
     in.scenario.push_back(fill.str());
     std::ostringstream schedule;
     schedule << "Posture schedule:";
-    for (std::size_t k = 0; k < s.schedule.size(); ++k)
-      schedule << (k == 0 ? " " : ", then ") << s.schedule[k].label << " for "
-               << (s.schedule[k].untilSteady ? "until steady, at most " : "")
-               << formatNumber(s.schedule[k].duration, 4) << " s";
+    for (std::size_t k = 0; k < s.schedule.size(); ++k) {
+      const ScheduledPosture& posture = s.schedule[k];
+      const std::string seconds = formatNumber(posture.duration, 4) + " s";
+      schedule << (k == 0 ? " " : ", then ") << posture.label;
+      if (!posture.untilSteady)
+        schedule << " for " << seconds;
+      else if (!posture.endedSteady)
+        schedule << " until steady, at most " << seconds;
+      else if (*posture.endedSteady)
+        schedule << " until steady (reached after " << seconds << ")";
+      else
+        schedule << " until steady (not reached; stopped at the maximum, " << seconds << ")";
+    }
     schedule << ".";
     in.scenario.push_back(schedule.str());
     if (p.description) in.scenario.push_back(p.description->value);

@@ -38,12 +38,13 @@ void IndsphWang2023::attach(World& world) {
   kappa_ = &f.addOrGet<Real>({"indsph_kappa", "Pa m^3", true, false});
 }
 
-void IndsphWang2023::beginStep(World& world, const StepContext&) {
+void IndsphWang2023::beginStep(World& world, const StepContext& context) {
   auto& p = world.particles;
   const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
   const Index n = static_cast<Index>(p.size());
   computeNumberDensities(world, *numberDensity_);
   // Effects (viscosity, XSPH) read p.density: give them the adapted density m delta (eq. 7),
@@ -53,44 +54,84 @@ void IndsphWang2023::beginStep(World& world, const StepContext&) {
   diagonal_.resize(n);
   predicted_.resize(n);
   increment_.resize(n);
+  increment_.resize(n);
   warmStart_ = *kappa_;  // a rejected attempt must restart from the accepted step
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Vec3 g = Vec3::Zero();
     Real neighbours = 0;
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
-      const Vec3 gradW = kernel.gradW(p.x[i] - p.x[*j]);
-      g += gradW;
-      neighbours += gradW.squaredNorm() / p.mass[*j];
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+      g += gradF[k];
+      neighbours += gradF[k].squaredNorm() / p.mass[nf.indices[k]];
     }
     Vec3 gw = Vec3::Zero();
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      gw += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k];
     g += gw / world.restVolumeOf(i);
     diagonal_[i] = g.squaredNorm() / p.mass[i] + neighbours;
   }
+  stats_.divergenceIterations = 0;
+  if (params_.divergenceSolve && context.dt > 0) solveDivergence(world, context.dt);
+}
+
+Real IndsphWang2023::numberDensityRate(const World& world, Index i) const {
+  const auto& p = world.particles;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
+  Real rate = 0;  // eq. 14
+  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
+    rate += (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k]);
+  Real wallRate = 0;
+  for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+    wallRate += world.walls.volume[nw.indices[k]] * p.v[i].dot(gradB[k]);
+  return rate + wallRate / world.restVolumeOf(i);
+}
+
+// Divergence-free pass in number-density form (the DFSPH divergence solve, Bender & Koschier 2017
+// Algorithm 2, written with eqs. 14 and 17): find kappa^v so that D(delta)/Dt = 0 for the current
+// velocities. From eq. 17 a stiffness kappa acting for dt changes the rate by
+// -dt kappa/delta_i * diagonal_i, so kappa^v_i = delta_i rate_i / (dt diagonal_i). Only
+// compressing particles are corrected (a free surface may expand).
+void IndsphWang2023::solveDivergence(World& world, Real dt) {
+  const Index n = static_cast<Index>(world.particles.size());
+  const auto& delta = *numberDensity_;
+  auto computeRates = [&] {
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) {
+      const bool full = world.fluidNeighbors().end(i) - world.fluidNeighbors().begin(i) >=
+                        params_.minNeighborsForDivergence;
+      predicted_[i] = full ? std::max(numberDensityRate(world, i), Real(0)) : 0.0;
+    }
+    return reducer_.sum(n, [&](std::size_t i) {
+             return predicted_[i] * world.restVolumeOf(static_cast<Index>(i));
+           }) * dt / n;
+  };
+  Real error = computeRates();
+  int iteration = 0;
+  while ((iteration < 1 || error > params_.divergenceTolerance) &&
+         iteration < params_.maxIterations) {
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i)
+      increment_[i] = diagonal_[i] > 0
+                          ? params_.relaxation * delta[i] * predicted_[i] / (dt * diagonal_[i])
+                          : 0.0;
+    applyPressureVelocity(world, increment_, dt);
+    error = computeRates();
+    ++iteration;
+  }
+  stats_.divergenceIterations = iteration;
 }
 
 Real IndsphWang2023::predictNumberDensity(World& world, Real dt) {
-  const auto& p = world.particles;
-  const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
   const auto& delta = *numberDensity_;
-  const Index n = static_cast<Index>(p.size());
+  const Index n = static_cast<Index>(world.particles.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    Real rate = 0;
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-      rate += (p.v[i] - p.v[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
-    Real wallRate = 0;
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      wallRate += walls.volume[*b] * p.v[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
     const Real delta0 = 1.0 / world.restVolumeOf(i);
     // Eq. 15 written with the continuity equation (14); only compression is corrected so that a
     // free surface may expand (as in DFSPH).
-    predicted_[i] = std::max(delta[i] + dt * (rate + wallRate / world.restVolumeOf(i)), delta0);
+    predicted_[i] = std::max(delta[i] + dt * numberDensityRate(world, i), delta0);
   }
   return reducer_.sum(n, [&](std::size_t i) {
            return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
@@ -102,19 +143,21 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
   const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
   const auto& delta = *numberDensity_;
   const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Real ki = kappa[i] / delta[i];
     Vec3 force = Vec3::Zero();  // eq. 19 without the common factor -1
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-      force += (ki + kappa[*j] / delta[*j]) * kernel.gradW(p.x[i] - p.x[*j]);
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+      const Index j = nf.indices[k];
+      force += (ki + kappa[j] / delta[j]) * gradF[k];
+    }
     if (ki != 0.0) {
       Vec3 g = Vec3::Zero();
-      for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-        g += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) g += walls.volume[nw.indices[k]] * gradB[k];
       force += ki * g / world.restVolumeOf(i);
     }
     p.v[i] -= (dt / p.mass[i]) * force;  // eq. 20: the advection velocity is incremented
@@ -157,7 +200,6 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
     ++iteration;
   }
   stats_.densityIterations = iteration;
-  stats_.divergenceIterations = 0;
   stats_.averageCompression = error;
   stats_.maxCompression = DeterministicReducer::max(predicted_.size(), [&](std::size_t i) {
     return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;

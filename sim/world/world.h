@@ -18,10 +18,10 @@ struct WorldParameters {
   KernelKind kernel = KernelKind::kCubicSpline;
   Vec3 gravity = Vec3(0, -9.81, 0);    // [m/s^2] in the simulation (eye) frame; may change in time
   Box domain;                          // [m] every particle stays inside for the whole run
-  Real cflNumber = 0.4;                // [1] dt <= cfl * d / v_max
+  Real cflNumber = 0.15;               // [1] dt <= cfl * d / v_max
   // [1] a step whose pressure-corrected velocities move a particle further than this many
   // spacings is redone with a shorter step (Pipeline::step)
-  Real maxDisplacement = 0.15;
+  Real maxDisplacement = 0.3;
   Real minTimeStep = 1e-6;             // [s]
   Real maxTimeStep = 5e-3;             // [s]
   int zSortInterval = 16;              // [steps] how often particle data are re-sorted in Z-order
