@@ -88,6 +88,18 @@ const std::vector<EffectEntry>& effectRegistry() {
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<XsphMonaghan1989>(o.velocitySmoothing);
        }},
+      {"elasticity", "implicit corotated linear elasticity (Peer et al. 2018), elastic tissue",
+       [](const World& w, const PipelineOptions&) {
+         std::size_t count = 0;
+         for (std::size_t i = 0; i < w.particles.size(); ++i)
+           count += w.materials[w.particles.material[i]].kind == MaterialKind::kElastic;
+         return StageDecision{"elasticity", count > 0, false,
+                              count > 0 ? std::to_string(count) + " particles of elastic materials"
+                                        : "no particle has an elastic material"};
+       },
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<ElasticityPeer2018>(o.elasticity);
+       }},
   };
   return entries;
 }

@@ -18,6 +18,7 @@
 #include "sim/fluid/indsph_wang2023.h"
 #include "sim/fluid/number_density_solenthaler2008.h"
 #include "sim/fluid/wcsph_becker2007.h"
+#include "sim/solid/elasticity_peer2018.h"
 #include "sim/world/pipeline.h"
 
 namespace sim {
@@ -32,6 +33,7 @@ struct PipelineOptions {
   IndsphParameters indsph;
   IisphParameters iisph;
   ImplicitViscosityParameters implicitViscosity;  // wallFriction below overrides its own
+  ElasticityParameters elasticity;
   bool wallFriction = true;              // no-slip viscous walls
   Real velocitySmoothing = 0.05;         // [1] XSPH strength for incompressible solvers (0 = off)
   std::map<std::string, Force> forced;   // effect name -> forced on/off
