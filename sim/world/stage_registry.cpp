@@ -1,14 +1,34 @@
 #include "sim/world/stage_registry.h"
 
+#include <limits>
 #include <sstream>
 
 #include "sim/effects/gravity.h"
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/effects/wall_adhesion_young.h"
 #include "sim/effects/viscosity_monaghan2005.h"
+#include "sim/effects/viscosity_weiler2018.h"
 #include "sim/effects/xsph_monaghan1989.h"
 
 namespace sim {
+namespace {
+
+// Rule of the two viscosity stages: explicit while its limit 0.125 d^2/nu is at least the CFL
+// step, implicit when it would force shorter steps (chooseViscosityTreatment). Forcing one of them
+// on switches the other's automatic choice off, so a fluid never gets viscosity twice.
+StageDecision viscosityDecision(const World& w, const PipelineOptions& o, bool implicitStage) {
+  Real solverLimit = std::numeric_limits<Real>::infinity();
+  for (const auto& s : solverRegistry())
+    if (s.name == o.solver) solverLimit = s.create(w, o)->maxTimeStep(w);
+  const ViscosityTreatment t = chooseViscosityTreatment(w, solverLimit);
+  const std::string name = implicitStage ? "implicit_viscosity" : "viscosity";
+  const auto other = o.forced.find(implicitStage ? "viscosity" : "implicit_viscosity");
+  if (t.viscous && other != o.forced.end() && other->second == Force::kOn)
+    return StageDecision{name, false, false, "the other viscosity stage is forced on instead"};
+  return StageDecision{name, t.viscous && t.implicit == implicitStage, false, t.reason};
+}
+
+}  // namespace
 
 const std::vector<SolverEntry>& solverRegistry() {
   static const std::vector<SolverEntry> entries = {
@@ -46,18 +66,16 @@ const std::vector<EffectEntry>& effectRegistry() {
        },
        [](const World&, const PipelineOptions&) { return std::make_unique<Gravity>(); }},
       {"viscosity", "explicit laminar viscosity (Monaghan 2005), for water-like fluids",
-       [](const World& w, const PipelineOptions&) {
-         Real nuMax = 0;
-         for (const auto& m : w.materials) nuMax = std::max(nuMax, m.kinematicViscosity());
-         std::ostringstream why;
-         if (nuMax > 0)
-           why << "a material has viscosity (max nu = " << nuMax << " m^2/s)";
-         else
-           why << "every material is inviscid";
-         return StageDecision{"viscosity", nuMax > 0, false, why.str()};
-       },
+       [](const World& w, const PipelineOptions& o) { return viscosityDecision(w, o, false); },
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<ViscosityMonaghan2005>(o.wallFriction);
+       }},
+      {"implicit_viscosity", "implicit viscosity (Weiler et al. 2018), for viscous oils",
+       [](const World& w, const PipelineOptions& o) { return viscosityDecision(w, o, true); },
+       [](const World&, const PipelineOptions& o) {
+         ImplicitViscosityParameters p = o.implicitViscosity;
+         p.wallFriction = o.wallFriction;
+         return std::make_unique<ViscosityWeiler2018>(p);
        }},
       {"velocity_smoothing", "XSPH velocity smoothing (Monaghan 1989), numerical damping",
        [](const World&, const PipelineOptions& o) {

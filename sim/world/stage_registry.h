@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/effects/viscosity_weiler2018.h"
 #include "sim/fluid/dfsph_bender2017.h"
 #include "sim/fluid/iisph_ihmsen2013.h"
 #include "sim/fluid/indsph_wang2023.h"
@@ -31,6 +32,7 @@ struct PipelineOptions {
   WcsphParameters wcsph;             // also the number_density solver's speed of sound
   IndsphParameters indsph;
   IisphParameters iisph;
+  ImplicitViscosityParameters implicitViscosity;  // wallFriction below overrides its own
   ElasticityParameters elasticity;
   bool wallFriction = true;              // no-slip viscous walls
   Real velocitySmoothing = 0.05;         // [1] XSPH strength for incompressible solvers (0 = off)

@@ -1,0 +1,57 @@
+// The implicit viscosity stage allocates nothing once attached (issue 6 brief: "allocate in
+// attach()"; STYLE.md point 9). A separate executable, because counting allocations replaces the
+// global operator new for the whole program.
+#include <catch2/catch.hpp>
+
+#include <atomic>
+#include <cstdlib>
+#include <new>
+
+#include "scene_fixtures.h"
+#include "sim/effects/viscosity_weiler2018.h"
+#include "sim/fluid/density.h"
+
+namespace {
+std::atomic<bool> counting{false};
+std::atomic<long> allocations{0};
+}  // namespace
+
+void* operator new(std::size_t size) {
+  if (counting.load(std::memory_order_relaxed)) allocations.fetch_add(1, std::memory_order_relaxed);
+  if (void* p = std::malloc(size == 0 ? 1 : size)) return p;
+  throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+using namespace sim;
+
+TEST_CASE("implicit viscosity allocates nothing after attach()", "[unit][viscosity]") {
+  const Real d = 0.002;  // [m]
+  WorldParameters params;
+  params.particleSpacing = d;
+  params.gravity = Vec3::Zero();
+  params.domain = Box(Vec3::Constant(-0.01), Vec3::Constant(0.03));
+  World w(params);
+  Material oil;
+  oil.name = "oil";
+  oil.restDensity = 970;       // [kg/m^3]
+  oil.dynamicViscosity = 0.97; // [Pa s] 1000 cSt
+  w.materials.add(oil);
+  // a plate under the blob, so that the wall term runs too
+  for (int a = -2; a < 10; ++a)
+    for (int c = -2; c < 10; ++c) w.walls.add(Vec3(a * d, -0.7 * d, c * d), Vec3(0, -1, 0));
+  addFluidBlock(w, Vec3(0, 0.5 * d, 0), Vec3(8 * d, 8.5 * d, 8 * d), d, 0);
+  for (Index i = 0; i < w.particles.size(); ++i)
+    w.particles.v[i] = Vec3(0.01 * std::sin(400.0 * w.particles.x[i].y()), 0, 0);
+  w.initialize();
+  computeDensities(w, w.particles.density);
+  ViscosityWeiler2018 stage;
+  stage.attach(w);
+  counting = true;
+  for (int s = 0; s < 3; ++s) stage.apply(w, StepContext{0.004});
+  counting = false;
+  INFO("CG iterations of the last solve: " << stage.lastIterations());
+  CHECK(stage.lastIterations() > 0);  // it did solve something
+  CHECK(allocations.load() == 0);
+}
