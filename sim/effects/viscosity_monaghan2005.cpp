@@ -13,10 +13,10 @@ Real ViscosityMonaghan2005::maxTimeStep(const World& world) const {
   Real nuMax = 0;
   for (const auto& m : world.materials) nuMax = std::max(nuMax, m.kinematicViscosity());
   if (nuMax <= 0) return std::numeric_limits<Real>::infinity();
-  // Diffusion limit dt <= 0.125 d^2 / nu with the particle spacing d (the smoothing length of the
-  // classic bound, Morris et al. 1997), not the support radius 2d, which would be 4x too large.
+  // Diffusion limit with the particle spacing d (the smoothing length of the classic bound, Morris
+  // et al. 1997), not the support radius 2d, which would be 4x too large.
   const Real d = world.particleSpacing();
-  return 0.125 * d * d / nuMax;
+  return kStableStepFactor * d * d / nuMax;
 }
 
 void ViscosityMonaghan2005::apply(World& world, const StepContext&) {
@@ -24,30 +24,31 @@ void ViscosityMonaghan2005::apply(World& world, const StepContext&) {
   const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
-  const Real h2 = 0.01 * kernel.supportRadius() * kernel.supportRadius();
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
+  const Real h2 = 0.01 * world.supportRadius() * world.supportRadius();
   constexpr Real kFactor = 2.0 * (3 + 2);  // 2(d+2), d = 3
   const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
     Vec3 a = Vec3::Zero();
-    for (const Index* jp = nf.begin(i); jp != nf.end(i); ++jp) {
-      const Index j = *jp;
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+      const Index j = nf.indices[k];
       const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
       const Real mu = 0.5 * (mui + muj);
       if (mu == 0) continue;
       const Vec3 xij = p.x[i] - p.x[j];
       const Real vx = (p.v[i] - p.v[j]).dot(xij);
       a += (p.mass[j] * mu / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
-           kernel.gradW(xij);
+           gradF[k];
     }
     if (wallFriction_ && mui > 0) {
-      for (const Index* b = nw.begin(i); b != nw.end(i); ++b) {
-        const Vec3 xib = p.x[i] - walls.x[*b];
+      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
+        const Index b = nw.indices[k];
+        const Vec3 xib = p.x[i] - walls.x[b];
         const Real vx = p.v[i].dot(xib);
-        a += (walls.volume[*b] * mui / p.density[i] * vx / (xib.squaredNorm() + h2)) *
-             kernel.gradW(xib);
+        a += (walls.volume[b] * mui / p.density[i] * vx / (xib.squaredNorm() + h2)) * gradB[k];
       }
     }
     p.a[i] += kFactor * a;

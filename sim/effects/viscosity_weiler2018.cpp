@@ -1,5 +1,7 @@
 #include "sim/effects/viscosity_weiler2018.h"
 
+#include "sim/effects/viscosity_monaghan2005.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -230,11 +232,11 @@ ViscosityTreatment chooseViscosityTreatment(const World& world, Real solverLimit
   }
   const Real d = world.particleSpacing();
   t.viscous = true;
-  t.explicitLimit = 0.125 * d * d / nuMax;
+  t.explicitLimit = ViscosityMonaghan2005::kStableStepFactor * d * d / nuMax;
   t.advectionStep = advectionTimeStep(world, solverLimit);
   t.implicit = t.explicitLimit < t.advectionStep;
   why.precision(3);
-  why << "max nu = " << nuMax << " m^2/s: explicit viscous limit 0.125 d^2/nu = " << t.explicitLimit
+  why << "max nu = " << nuMax << " m^2/s: explicit viscous limit " << ViscosityMonaghan2005::kStableStepFactor << " d^2/nu = " << t.explicitLimit
       << " s ";
   if (t.implicit)
     why << "< CFL step " << t.advectionStep << " s, so explicit viscosity would take "

@@ -1,6 +1,6 @@
 // Implicit viscosity (Weiler, Koschier, Brand & Bender 2018, "A physically consistent implicit
 // viscosity solver for SPH fluids", Computer Graphics Forum 37(2):145-155), for the viscous
-// silicone oils (1000-5000 cSt) whose explicit viscous step limit 0.125 d^2/nu is far below the
+// silicone oils (1000-5000 cSt) whose explicit viscous step limit (0.08 d^2/nu) is far below the
 // CFL step.
 //
 // The viscous acceleration is the Laplacian of the velocity field (Weiler et al.'s velocity Laplacian, the vector form
@@ -94,13 +94,13 @@ class ViscosityWeiler2018 final : public Effect {
 };
 
 // Which viscosity stage a scene needs: none (every material inviscid), the explicit one
-// (ViscosityMonaghan2005) when its limit 0.125 d^2 / nu_max is at least the step the rest of the
+// (ViscosityMonaghan2005) when its limit 0.08 d^2 / nu_max is at least the step the rest of the
 // pipeline would take, or this implicit one when the explicit limit is below that step (it would
 // force tiny steps; the implicit solve lets the scene run at the CFL step).
 struct ViscosityTreatment {
   bool viscous = false;
   bool implicit = false;
-  Real explicitLimit = 0;    // [s] 0.125 d^2 / nu_max
+  Real explicitLimit = 0;    // [s] ViscosityMonaghan2005::kStableStepFactor d^2 / nu_max
   Real advectionStep = 0;    // [s] the step without a viscous limit (see advectionTimeStep)
   std::string reason;
 };

@@ -102,6 +102,8 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
   const Kernel& kernel = world.kernel;
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
   const Index n = static_cast<Index>(p.size());
   computeDensities(world, p.density);
   // The pipeline may redo correctVelocities with a shorter dt (step rejection); every attempt must
@@ -116,14 +118,14 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   for (Index i = 0; i < n; ++i) {
     Vec3 g = Vec3::Zero();
     Real sumSq = 0;
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
-      const Vec3 gradW = p.mass[*j] * kernel.gradW(p.x[i] - p.x[*j]);
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+      const Index j = nf.indices[k];
+      const Vec3 gradW = p.mass[j] * gradF[k];
       g += gradW;
-      sumSq += gradW.squaredNorm() * p.mass[i] / p.mass[*j];
+      sumSq += gradW.squaredNorm() * p.mass[i] / p.mass[j];
     }
     Vec3 gw = Vec3::Zero();
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      gw += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k];
     g += world.restDensityOf(i) * gw;
     const Real denominator = g.squaredNorm() + sumSq;
     // A full neighbourhood gives a denominator of order (rho/h)^2; a particle with almost no

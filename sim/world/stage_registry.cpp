@@ -13,7 +13,7 @@
 namespace sim {
 namespace {
 
-// Rule of the two viscosity stages: explicit while its limit 0.125 d^2/nu is at least the CFL
+// Rule of the two viscosity stages: explicit while its limit 0.08 d^2/nu is at least the CFL
 // step, implicit when it would force shorter steps (chooseViscosityTreatment). Forcing one of them
 // on switches the other's automatic choice off, so a fluid never gets viscosity twice.
 StageDecision viscosityDecision(const World& w, const PipelineOptions& o, bool implicitStage) {
