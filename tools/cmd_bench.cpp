@@ -221,6 +221,11 @@ int runBench(Args args) {
     std::fputs(kBenchUsage, stderr);
     return 2;
   }
+  for (const std::string_view a : args.subspan(1))
+    if (a == "--help" || a == "-h") {  // `bench engine --help`
+      std::fputs(kBenchUsage, stdout);
+      return 0;
+    }
   BenchOptions options;
   try {
     options = parseBenchOptions(args.subspan(1));
