@@ -185,3 +185,55 @@ TEST_CASE("INDSPH buoyancy: a light blob rises and a heavy blob sinks", "[valida
   else
     CHECK(shift < -0.5 * d);
 }
+
+// Issue 6, validation 6: near-neutral buoyancy, the regime of silicone oil in aqueous (3 % density
+// difference). The pressure solve's compression noise must not drown a 3 % buoyancy: a blob of the
+// aqueous density stays put while 970 kg/m^3 oil rises and 1060 kg/m^3 heavy oil sinks. Both
+// phases are water-like in viscosity here, to isolate buoyancy from viscous drag.
+// [!mayfail], a known open defect (measured 2026-11-22, d = 5 mm): relative to the water the
+// neutral blob moves -0.21 d in 0.3 s, the 970 blob -0.13 d (it sinks), the 1060 blob -0.56 d.
+// Against the neutral run the signs are right (+0.08 d, -0.35 d) but the 3 % signal is smaller
+// than the neutral drift, and 10-20x below the drag-free estimate; without XSPH smoothing
+// +0.24 d / -0.31 d. Buoyancy at 3 % is drowned at this resolution: see the issue 6 note.
+TEST_CASE("INDSPH near-neutral buoyancy: 1000 stays, 970 rises, 1060 sinks",
+          "[validation][solvers][indsph][buoyancy][!mayfail]") {
+  const Real d = 0.005, gap = (testing::kWallGap - 0.5) * d;
+  const Vec3 inner(0.04 + 2 * gap, 0.07, 0.04 + 2 * gap);
+  const Vec3 blobMin(gap + 0.01, gap + 0.02, gap + 0.01), blobMax = blobMin + Vec3::Constant(0.02);
+  constexpr Real kTime = 0.3;  // [s]
+  auto shiftOf = [&](Real blobDensity) {
+    auto t = makeTank(inner, d, 1000.0, blobDensity, [&](World& w) {
+      addFluidBlock(w, Vec3::Constant(gap), Vec3(gap + 0.04, gap + 0.02, gap + 0.04), d, 0);
+      addFluidBlock(w, Vec3(gap, gap + 0.04, gap), Vec3(gap + 0.04, gap + 0.06, gap + 0.04), d, 0);
+      addFluidBlock(w, Vec3(gap, gap + 0.02, gap), Vec3(blobMin.x(), gap + 0.04, gap + 0.04), d, 0);
+      addFluidBlock(w, Vec3(blobMax.x(), gap + 0.02, gap), Vec3(gap + 0.04, gap + 0.04, gap + 0.04), d, 0);
+      addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, gap), Vec3(blobMax.x(), gap + 0.04, blobMin.z()), d, 0);
+      addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, blobMax.z()), Vec3(blobMax.x(), gap + 0.04, gap + 0.04), d, 0);
+      addFluidBlock(w, blobMin, blobMax, d, 1);
+    });
+    World& w = *t.world;
+    PipelineOptions options;
+    options.solver = "indsph";
+    Pipeline pipeline = assemblePipeline(w, options);
+    pipeline.attach(w);
+    // The column settles as a whole in its first ~0.1 s (it starts 1.2 d above the floor); the
+    // blob is measured against the mean height of the surrounding water, which settles the same.
+    const Real start = meanHeight(w, 1) - meanHeight(w, 0);
+    while (w.time < kTime) pipeline.step(w);
+    REQUIRE(allFinite(w));
+    const Real shift = meanHeight(w, 1) - meanHeight(w, 0) - start;
+    std::printf("INDSPH blob %g in 1000: height change relative to the water %.5f m (%.2f d) after "
+                "%.2f s, mean compression %.1e\n",
+                blobDensity, shift, shift / d, w.time, pipeline.solver().stats().averageCompression);
+    return shift;
+  };
+  // Expected magnitude for 3 %: the buoyant acceleration with the added mass of a sphere,
+  // |rho - rho_b| g / (rho_b + rho/2) ~ 0.2 m/s^2, moves the blob up to 0.5 a t^2 ~ 9 mm (1.8 d)
+  // in 0.3 s, less with drag. The neutral blob must drift less than a third of that bound's
+  // smaller half, 0.3 d, and the 3 % blobs must move the right way by more than that: the signal
+  // of a 3 % density difference stands clear of the solver's noise.
+  const Real neutral = shiftOf(1000.0), light = shiftOf(970.0), heavy = shiftOf(1060.0);
+  CHECK(std::abs(neutral) < 0.3 * d);
+  CHECK(light > 0.3 * d);
+  CHECK(heavy < -0.3 * d);
+}
