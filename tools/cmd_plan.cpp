@@ -89,6 +89,23 @@ int runPlan(Args args) {
     std::printf("  initial mean density: %s x rest density (the lattice is expanded to fill the "
                 "cavity in the first ms)\n", protocols::formatNumber(scenario.fillCompression, 3).c_str());
     for (const std::string& note : scenario.notes) std::printf("  note: %s\n", note.c_str());
+    std::printf("\nfluid properties used:\n");
+    for (const protocols::FluidPhase& ph : scenario.phases) {
+      const double nu = ph.dynamicViscosity / ph.density;  // [m^2/s]
+      std::printf("  %-20s density %s kg/m^3, viscosity %s Pa s (%s cSt)\n", ph.material.c_str(),
+                  protocols::formatNumber(ph.density, 4).c_str(),
+                  protocols::formatNumber(ph.dynamicViscosity, 3).c_str(),
+                  protocols::formatNumber(nu * 1e6, 4).c_str());
+    }
+    const protocols::FluidPhase& tamponade = scenario.phases[1];
+    if (tamponade.interfacialTension)
+      std::printf("  interfacial tension %s mN/m (tamponade against aqueous)\n",
+                  protocols::formatNumber(*tamponade.interfacialTension * 1e3, 3).c_str());
+    if (tamponade.contactAngleThroughAqueous)
+      std::printf("  contact angle on the retina %s deg through the aqueous (%s deg through the "
+                  "tamponade)\n",
+                  protocols::formatNumber(*tamponade.contactAngleThroughAqueous, 3).c_str(),
+                  protocols::formatNumber(180.0 - *tamponade.contactAngleThroughAqueous, 3).c_str());
     std::printf("\n%s\n", plan.pipeline.c_str());
     std::printf("memory: %s (particle fields %s, wall fields %s, neighbour lists %s)\n\n",
                 megabytes(plan.totalBytes()).c_str(), megabytes(plan.particleFieldBytes).c_str(),
@@ -100,6 +117,10 @@ int runPlan(Args args) {
                 protocols::formatNumber(plan.calibrationSeconds, 3).c_str(),
                 protocols::formatNumber(plan.secondsPerParticleStep, 3).c_str(),
                 plan.rejectedSteps > 0 ? " (rejected steps included)" : "");
+    std::printf("time-step limits of the stages at the start:");
+    for (const auto& [stage, limit] : plan.stageTimeStepLimits)
+      std::printf(" %s %s s;", stage.c_str(), protocols::formatNumber(limit, 3).c_str());
+    std::printf("%s\n", plan.stageTimeStepLimits.empty() ? " none" : "");
     std::printf("first time step %s s, limited by %s; simulated time %s s\n",
                 protocols::formatNumber(plan.firstTimeStep, 3).c_str(), plan.timeStepLimitedBy.c_str(),
                 protocols::formatNumber(plan.simulatedDuration, 4).c_str());

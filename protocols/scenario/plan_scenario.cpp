@@ -32,6 +32,11 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
 #endif
 
   // Calibration: one warm-up step (first-touch allocations), then the timed steps.
+  const auto addLimit = [&](std::string_view name, double limit) {
+    if (std::isfinite(limit)) plan.stageTimeStepLimits.emplace_back(std::string(name), limit);
+  };
+  addLimit(pipeline.solver().name(), pipeline.solver().maxTimeStep(world));
+  for (const auto& e : pipeline.effects()) addLimit(e->name(), e->maxTimeStep(world));
   const sim::TimeStepInfo first = pipeline.chooseTimeStep(world);
   plan.firstTimeStep = first.dt;
   plan.timeStepLimitedBy = first.limitedBy;

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "protocols/scenario/scenario.h"
@@ -54,6 +55,9 @@ struct ScenarioPlan {
   double secondsPerParticleStep = 0.0;    // [s]
   double firstTimeStep = 0.0;             // [s]
   std::string timeStepLimitedBy;
+  // Every stage's own time-step limit at the start [s] (stages without one are left out), so
+  // users see what each effect costs in steps (e.g. the capillary or elastic-wave limit).
+  std::vector<std::pair<std::string, double>> stageTimeStepLimits;
   long rejectedSteps = 0;
   double simulatedDuration = 0.0;         // [s]
   std::array<PresetEstimate, 3> presets;  // draft, standard, fine

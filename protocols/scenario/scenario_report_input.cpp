@@ -57,6 +57,16 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
          << formatNumber(s.phases[0].density, 4) << " kg/m\u00b3). The "
          << (oil.density < s.phases[0].density ? "oil floats (lighter than aqueous)."
                                                : "tamponade sinks (heavier than aqueous).");
+    fill << " Kinematic viscosity " << formatNumber(oil.dynamicViscosity / oil.density * 1e6, 4)
+         << " cSt (aqueous " << formatNumber(s.phases[0].dynamicViscosity / s.phases[0].density * 1e6, 3)
+         << " cSt).";
+    if (oil.interfacialTension)
+      fill << " Interfacial tension against aqueous " << formatNumber(*oil.interfacialTension * 1e3, 3)
+           << " mN/m.";
+    if (oil.contactAngleThroughAqueous)
+      fill << " Contact angle on the retina " << formatNumber(*oil.contactAngleThroughAqueous, 3)
+           << "\u00b0 through the aqueous (" << formatNumber(180.0 - *oil.contactAngleThroughAqueous, 3)
+           << "\u00b0 through the tamponade).";
     in.scenario.push_back(fill.str());
     std::ostringstream schedule;
     schedule << "Posture schedule:";
