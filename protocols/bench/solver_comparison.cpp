@@ -72,6 +72,8 @@ SolverComparisonRun runSolverComparison(const TwoPhaseDamBreakSpec& spec, double
   long cumulative = 0;
   double gap = 0.0, gapSum = 0.0;  // [d]
   long gapSamples = 0;
+  double ratioSum = 0.0;
+  long ratioSamples = 0;
   double compressionSum = 0.0;     // [1 s] time integral of the average compression
   const auto start = std::chrono::steady_clock::now();
   while (world.time < duration) {
@@ -87,9 +89,14 @@ SolverComparisonRun runSolverComparison(const TwoPhaseDamBreakSpec& spec, double
     const long iterations = stats.densityIterations + stats.divergenceIterations;
     cumulative += iterations;
     if (world.stepCount % kGapEvery == 0 || run.series.empty()) {
-      gap = sim::interfaceGap(world, 1, 0).meanNearestDistance;
+      const sim::InterfaceGap measured = sim::interfaceGap(world, 1, 0);
+      gap = measured.meanNearestDistance;
       gapSum += gap;
       ++gapSamples;
+      if (measured.numberDensityRatio > 0) {
+        ratioSum += measured.numberDensityRatio;
+        ++ratioSamples;
+      }
     }
     run.series.push_back({world.time, world.stepCount, stats.averageCompression, stats.maxCompression,
                           iterations, cumulative, gap});
@@ -114,6 +121,7 @@ SolverComparisonRun runSolverComparison(const TwoPhaseDamBreakSpec& spec, double
   }
   if (gapSamples > 0) run.meanInterfaceGap = gapSum / static_cast<double>(gapSamples);
   run.finalInterfaceGap = gap;
+  if (ratioSamples > 0) run.meanInterfaceDensityRatio = ratioSum / static_cast<double>(ratioSamples);
   return run;
 }
 
@@ -126,7 +134,8 @@ std::string solverComparisonCsv(const std::vector<SolverComparisonRun>& runs) {
   csv.precision(6);
   csv << "solver,density_ratio,particles,stable,failed_at_s,failure,simulated_s,steps,"
          "mean_average_compression,max_compression,mean_iterations,mean_interface_gap_d,"
-         "final_interface_gap_d,peak_kinetic_over_potential,wall_s,wall_per_simulated_s\n";
+         "final_interface_gap_d,interface_density_ratio,peak_kinetic_over_potential,wall_s,"
+         "wall_per_simulated_s\n";
   for (const SolverComparisonRun& r : runs) {
     std::string failure = r.failure;  // CSV-safe: no commas or quotes inside the field
     for (char& c : failure)
@@ -135,7 +144,7 @@ std::string solverComparisonCsv(const std::vector<SolverComparisonRun>& runs) {
         << (r.stable ? "yes" : "no") << ',' << (r.stable ? std::string() : ratioText(r.failedAt)) << ','
         << failure << ',' << r.simulatedTime << ',' << r.steps << ',' << r.meanAverageCompression << ','
         << r.maxCompression << ',' << r.meanIterations << ',' << r.meanInterfaceGap << ','
-        << r.finalInterfaceGap << ',' << r.peakEnergyRatio << ',' << r.wallSeconds << ',' << r.wallPerSimulatedSecond() << '\n';
+        << r.finalInterfaceGap << ',' << r.meanInterfaceDensityRatio << ',' << r.peakEnergyRatio << ',' << r.wallSeconds << ',' << r.wallPerSimulatedSecond() << '\n';
   }
   return csv.str();
 }
@@ -143,16 +152,17 @@ std::string solverComparisonCsv(const std::vector<SolverComparisonRun>& runs) {
 std::string solverComparisonMarkdown(const std::vector<SolverComparisonRun>& runs) {
   std::ostringstream md;
   md << "| solver | ratio | stable (failed at) | mean / max compression | iterations/step | "
-        "interface gap mean / end [d] | peak KE / released PE | wall s per simulated s |\n"
-        "|---|---|---|---|---|---|---|---|\n";
+        "interface gap mean / end [d] | interface density ratio | peak KE / released PE | "
+        "wall s per simulated s |\n"
+        "|---|---|---|---|---|---|---|---|---|\n";
   char line[512];
   for (const SolverComparisonRun& r : runs) {
     const std::string stability =
         r.stable ? "yes" : "no (" + ratioText(std::round(r.failedAt * 1e4) / 1e4) + " s: " + r.failure + ")";
-    std::snprintf(line, sizeof line, "| %s | 1:%s | %s | %.2e / %.2e | %.1f | %.2f / %.2f | %.2g | %.3g |\n",
+    std::snprintf(line, sizeof line, "| %s | 1:%s | %s | %.2e / %.2e | %.1f | %.2f / %.2f | %.3f | %.2g | %.3g |\n",
                   r.solver.c_str(), ratioText(r.densityRatio).c_str(), stability.c_str(),
                   r.meanAverageCompression, r.maxCompression, r.meanIterations, r.meanInterfaceGap,
-                  r.finalInterfaceGap, r.peakEnergyRatio, r.wallPerSimulatedSecond());
+                  r.finalInterfaceGap, r.meanInterfaceDensityRatio, r.peakEnergyRatio, r.wallPerSimulatedSecond());
     md << line;
   }
   return md.str();

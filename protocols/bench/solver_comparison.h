@@ -42,6 +42,9 @@ struct SolverComparisonRun {
   double meanIterations = 0.0;          // per step
   double meanInterfaceGap = 0.0;        // [d] over the samples where it was measured
   double finalInterfaceGap = 0.0;       // [d] at the last measurement
+  // [1] interface / bulk number density (sim::InterfaceGap::numberDensityRatio), mean over the
+  // samples with an interface; below 1 where a gap opens, ~1 without
+  double meanInterfaceDensityRatio = 0.0;
   double peakEnergyRatio = 0.0;         // [1] largest kinetic energy / released potential energy
   double wallSeconds = 0.0;             // [s] time loop only
   std::vector<SolverComparisonSample> series;
