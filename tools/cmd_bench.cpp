@@ -20,6 +20,7 @@
 
 #include "sim/core/error.h"
 #include "sim/scenes/dam_break.h"
+#include "tools/cli_args.h"
 #include "tools/commands.h"
 
 namespace tools {
@@ -38,9 +39,6 @@ constexpr const char* kBenchUsage =
     "and writes DIR/bench_engine.csv and DIR/bench_engine.md (default DIR: .). Prints progress.\n"
     "Threads: OMP_NUM_THREADS. On a shared machine set OMP_WAIT_POLICY=passive.\n";
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 struct BenchOptions {
   std::vector<long> particles{30000, 100000};
@@ -49,27 +47,6 @@ struct BenchOptions {
   std::string out = ".";
 };
 
-std::vector<std::string> splitList(std::string_view text) {
-  std::vector<std::string> items;
-  std::stringstream in{std::string(text)};
-  std::string item;
-  while (std::getline(in, item, ','))
-    if (!item.empty()) items.push_back(item);
-  return items;
-}
-
-double parsePositive(const std::string& text, const char* option) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !(value > 0) || !std::isfinite(value))
-    throw UsageError(std::string(option) + " '" + text + "' must be a positive number");
-  return value;
-}
 
 BenchOptions parseBenchOptions(Args args) {
   BenchOptions o;

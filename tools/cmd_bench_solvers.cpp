@@ -15,6 +15,7 @@
 #include "protocols/bench/solver_comparison.h"
 #include "protocols/io/io_error.h"
 #include "sim/core/error.h"
+#include "tools/cli_args.h"
 #include "tools/commands.h"
 
 namespace tools {
@@ -32,31 +33,7 @@ constexpr const char* kUsage =
     "  --quick: a = 4 cm, d = a/8, depth 4 d (~1000 particles), 0.25 s simulated (a few minutes)\n"
     "Threads: OMP_NUM_THREADS. On a shared machine set OMP_WAIT_POLICY=passive.\n";
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
-std::vector<std::string> splitList(const std::string& text) {
-  std::vector<std::string> items;
-  std::stringstream in(text);
-  std::string item;
-  while (std::getline(in, item, ','))
-    if (!item.empty()) items.push_back(item);
-  return items;
-}
-
-double positive(const std::string& text, const char* option) {
-  std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || !(value > 0) || !std::isfinite(value))
-    throw UsageError(std::string(option) + " '" + text + "' must be a positive number");
-  return value;
-}
 
 }  // namespace
 
@@ -83,11 +60,11 @@ int runBenchSolvers(Args args) {
       if (flag == "--out") {
         out = value;
       } else if (flag == "--time") {
-        time = positive(value, "--time");
+        time = parsePositive(value, "--time");
       } else if (flag == "--ratios") {
         ratios.clear();
         for (const std::string& r : splitList(value)) {
-          const double ratio = positive(r, "--ratios");
+          const double ratio = parsePositive(r, "--ratios");
           if (ratio < 1) throw UsageError("--ratios '" + r + "': give heavy/light >= 1 (75 for 1:75)");
           ratios.push_back(ratio);
         }

@@ -15,6 +15,7 @@
 #include "meshing/sample_surface.h"
 #include "meshing/sample_volume.h"
 #include "meshing/write_point_cloud.h"
+#include "tools/cli_args.h"
 #include "tools/commands.h"
 
 namespace tools {
@@ -34,9 +35,6 @@ constexpr const char* kMeshUsage =
     "--units   units of the file; without it they are guessed from the size (with a warning)\n"
     "--spacing particle spacing with a unit: 0.4mm, 400um, 0.0004m\n";
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 // Strict "<number><unit>" with unit m, mm or um; positive and finite.
 double parseLength(std::string_view text, const char* option) {

@@ -11,6 +11,7 @@
 #include "anatomy/mesh_properties.h"
 #include "anatomy/vitreous_cavity.h"
 #include "meshing/mesh_writer.h"
+#include "tools/cli_args.h"
 #include "tools/commands.h"
 
 namespace tools {
@@ -39,9 +40,6 @@ constexpr const char* kHelp =
     "  --units             units of the written file (default mm)\n"
     "  --out               output file; the extension picks STL (binary), OBJ or PLY\n";
 
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
 
 double parseLength(std::string_view option, std::string_view text) {
   const std::string s(text);
