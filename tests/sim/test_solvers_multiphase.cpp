@@ -66,6 +66,25 @@ Real meanHeight(const World& w, int material) {
   return sum / count;
 }
 
+constexpr Real kBlobSpacing = 0.005;  // [m]
+
+// A 2 cm cube of material 1 (density blobDensity) in the middle of a 4 x 6 x 4 cm column of
+// water (material 0), on a lattice of spacing kBlobSpacing.
+TwoPhaseTank blobInWater(Real blobDensity) {
+  const Real d = kBlobSpacing, gap = (testing::kWallGap - 0.5) * d;
+  const Vec3 inner(0.04 + 2 * gap, 0.07, 0.04 + 2 * gap);
+  const Vec3 blobMin(gap + 0.01, gap + 0.02, gap + 0.01), blobMax = blobMin + Vec3::Constant(0.02);
+  return makeTank(inner, d, 1000.0, blobDensity, [&](World& w) {
+    addFluidBlock(w, Vec3::Constant(gap), Vec3(gap + 0.04, gap + 0.02, gap + 0.04), d, 0);
+    addFluidBlock(w, Vec3(gap, gap + 0.04, gap), Vec3(gap + 0.04, gap + 0.06, gap + 0.04), d, 0);
+    addFluidBlock(w, Vec3(gap, gap + 0.02, gap), Vec3(blobMin.x(), gap + 0.04, gap + 0.04), d, 0);
+    addFluidBlock(w, Vec3(blobMax.x(), gap + 0.02, gap), Vec3(gap + 0.04, gap + 0.04, gap + 0.04), d, 0);
+    addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, gap), Vec3(blobMax.x(), gap + 0.04, blobMin.z()), d, 0);
+    addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, blobMax.z()), Vec3(blobMax.x(), gap + 0.04, gap + 0.04), d, 0);
+    addFluidBlock(w, blobMin, blobMax, d, 1);
+  });
+}
+
 }  // namespace
 
 TEST_CASE("Number density is blind to a 1:10 mass jump that mass-weighted density sees",
@@ -153,19 +172,8 @@ TEST_CASE("INDSPH two-phase dam break stays bounded at density ratios 1:2, 1:10,
 
 TEST_CASE("INDSPH buoyancy: a light blob rises and a heavy blob sinks", "[validation][solvers][indsph]") {
   const Real blobDensity = GENERATE(500.0, 2000.0);
-  const Real d = 0.005, gap = (testing::kWallGap - 0.5) * d;
-  const Vec3 inner(0.04 + 2 * gap, 0.07, 0.04 + 2 * gap);
-  // A 2 cm cube of the blob material in the middle of a 4 x 6 x 4 cm column of water.
-  const Vec3 blobMin(gap + 0.01, gap + 0.02, gap + 0.01), blobMax = blobMin + Vec3::Constant(0.02);
-  auto t = makeTank(inner, d, 1000.0, blobDensity, [&](World& w) {
-    addFluidBlock(w, Vec3::Constant(gap), Vec3(gap + 0.04, gap + 0.02, gap + 0.04), d, 0);
-    addFluidBlock(w, Vec3(gap, gap + 0.04, gap), Vec3(gap + 0.04, gap + 0.06, gap + 0.04), d, 0);
-    addFluidBlock(w, Vec3(gap, gap + 0.02, gap), Vec3(blobMin.x(), gap + 0.04, gap + 0.04), d, 0);
-    addFluidBlock(w, Vec3(blobMax.x(), gap + 0.02, gap), Vec3(gap + 0.04, gap + 0.04, gap + 0.04), d, 0);
-    addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, gap), Vec3(blobMax.x(), gap + 0.04, blobMin.z()), d, 0);
-    addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, blobMax.z()), Vec3(blobMax.x(), gap + 0.04, gap + 0.04), d, 0);
-    addFluidBlock(w, blobMin, blobMax, d, 1);
-  });
+  const Real d = kBlobSpacing;
+  auto t = blobInWater(blobDensity);
   World& w = *t.world;
   PipelineOptions options;
   options.solver = "indsph";
@@ -197,20 +205,10 @@ TEST_CASE("INDSPH buoyancy: a light blob rises and a heavy blob sinks", "[valida
 // +0.24 d / -0.31 d. Buoyancy at 3 % is drowned at this resolution: see the issue 6 note.
 TEST_CASE("INDSPH near-neutral buoyancy: 1000 stays, 970 rises, 1060 sinks",
           "[validation][solvers][indsph][buoyancy][!mayfail]") {
-  const Real d = 0.005, gap = (testing::kWallGap - 0.5) * d;
-  const Vec3 inner(0.04 + 2 * gap, 0.07, 0.04 + 2 * gap);
-  const Vec3 blobMin(gap + 0.01, gap + 0.02, gap + 0.01), blobMax = blobMin + Vec3::Constant(0.02);
+  const Real d = kBlobSpacing;
   constexpr Real kTime = 0.3;  // [s]
   auto shiftOf = [&](Real blobDensity) {
-    auto t = makeTank(inner, d, 1000.0, blobDensity, [&](World& w) {
-      addFluidBlock(w, Vec3::Constant(gap), Vec3(gap + 0.04, gap + 0.02, gap + 0.04), d, 0);
-      addFluidBlock(w, Vec3(gap, gap + 0.04, gap), Vec3(gap + 0.04, gap + 0.06, gap + 0.04), d, 0);
-      addFluidBlock(w, Vec3(gap, gap + 0.02, gap), Vec3(blobMin.x(), gap + 0.04, gap + 0.04), d, 0);
-      addFluidBlock(w, Vec3(blobMax.x(), gap + 0.02, gap), Vec3(gap + 0.04, gap + 0.04, gap + 0.04), d, 0);
-      addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, gap), Vec3(blobMax.x(), gap + 0.04, blobMin.z()), d, 0);
-      addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, blobMax.z()), Vec3(blobMax.x(), gap + 0.04, gap + 0.04), d, 0);
-      addFluidBlock(w, blobMin, blobMax, d, 1);
-    });
+    auto t = blobInWater(blobDensity);
     World& w = *t.world;
     PipelineOptions options;
     options.solver = "indsph";
