@@ -10,6 +10,31 @@ namespace sim {
 
 void computeDensities(World& world, std::vector<Real>& density);
 
+// The kernel sums both density forms are made of: for every dynamic particle i,
+//   fluid_i = weight(i) W_0 + sum_j weight(j) W_ij,   wall_i = sum_b V_b W_ib,
+// and out[i] = combine(i, fluid_i, wall_i). Mass-weighted density (weight = m) and number
+// density (weight = 1, Wang et al. 2023 eq. 6) differ only in weight and combine.
+template <class Weight, class Combine>
+void kernelSums(const World& world, std::vector<Real>& out, Weight weight, Combine combine) {
+  const auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const Real w0 = kernel.W0();
+  const Index n = static_cast<Index>(p.size());
+  out.resize(n);
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Real fluid = weight(i) * w0;
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) fluid += weight(*j) * kernel.W(p.x[i] - p.x[*j]);
+    Real wall = 0;
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      wall += walls.volume[*b] * kernel.W(p.x[i] - walls.x[*b]);
+    out[i] = combine(i, fluid, wall);
+  }
+}
+
 // Number of fluid plus wall neighbours of particle i (used to recognise free-surface particles).
 inline Index neighborCount(const World& world, Index i) {
   return world.fluidNeighbors().count(i) + world.wallNeighbors().count(i);

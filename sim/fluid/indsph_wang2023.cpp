@@ -2,26 +2,14 @@
 
 #include <algorithm>
 
+#include "sim/fluid/density.h"
+
 namespace sim {
 
 void computeNumberDensities(const World& world, std::vector<Real>& delta) {
-  const auto& p = world.particles;
-  const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
-  const Real w0 = kernel.W0();
-  const Index n = static_cast<Index>(p.size());
-  delta.resize(n);
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    Real sum = w0;
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) sum += kernel.W(p.x[i] - p.x[*j]);
-    Real wall = 0;
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      wall += walls.volume[*b] * kernel.W(p.x[i] - walls.x[*b]);
-    delta[i] = sum + wall / world.restVolumeOf(i);
-  }
+  kernelSums(
+      world, delta, [](Index) { return Real(1); },
+      [&](Index i, Real fluid, Real wall) { return fluid + wall / world.restVolumeOf(i); });
 }
 
 IndsphWang2023::IndsphWang2023(const IndsphParameters& parameters) : params_(parameters) {
