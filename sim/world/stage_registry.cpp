@@ -13,6 +13,21 @@
 namespace sim {
 namespace {
 
+// The first interfacial-tension pair whose two materials both have particles in the scene
+// (nullptr if none): interfacial tension and wall wetting act only where two liquids meet.
+const InterfacialTension* presentTensionPair(const World& w) {
+  for (const auto& t : w.materials.interfacialTensions()) {
+    bool hasA = false, hasB = false;
+    for (const auto m : w.particles.material) {
+      hasA = hasA || m == t.materialA;
+      hasB = hasB || m == t.materialB;
+    }
+    if (hasA && hasB) return &t;
+  }
+  return nullptr;
+}
+
+
 // Rule of the two viscosity stages: explicit while its limit 0.08 d^2/nu is at least the CFL
 // step, implicit when it would force shorter steps (chooseViscosityTreatment). Forcing one of them
 // on switches the other's automatic choice off, so a fluid never gets viscosity twice.
@@ -93,15 +108,7 @@ const std::vector<EffectEntry>& effectRegistry() {
       {"wall_adhesion", "contact angle per (fluid, wall): Young wall-interface stress",
        [](const World& w, const PipelineOptions&) {
          // Wetting acts at a contact line: it needs both liquids of the tension pair present.
-         bool bothPhases = false;
-         for (const auto& t : w.materials.interfacialTensions()) {
-           bool hasA = false, hasB = false;
-           for (const auto m : w.particles.material) {
-             hasA = hasA || m == t.materialA;
-             hasB = hasB || m == t.materialB;
-           }
-           bothPhases = bothPhases || (hasA && hasB);
-         }
+         const bool bothPhases = presentTensionPair(w) != nullptr;
          const bool angle = !w.materials.contactAngles().empty();
          const bool on = angle && bothPhases;
          return StageDecision{"wall_adhesion", on, false,
@@ -113,19 +120,11 @@ const std::vector<EffectEntry>& effectRegistry() {
       {"interfacial_tension", "surface stress between two liquids (Hu & Adams 2006)",
        [](const World& w, const PipelineOptions&) {
          std::ostringstream why;
-         bool on = false;
-         for (const auto& t : w.materials.interfacialTensions()) {
-           bool hasA = false, hasB = false;
-           for (const auto m : w.particles.material) {
-             hasA = hasA || m == t.materialA;
-             hasB = hasB || m == t.materialB;
-           }
-           if (hasA && hasB && !on) {
-             on = true;
-             why << "two liquid phases with sigma = " << t.sigma << " N/m ('"
-                 << w.materials[t.materialA].name << "', '" << w.materials[t.materialB].name << "')";
-           }
-         }
+         const InterfacialTension* t = presentTensionPair(w);
+         const bool on = t != nullptr;
+         if (on)
+           why << "two liquid phases with sigma = " << t->sigma << " N/m ('"
+               << w.materials[t->materialA].name << "', '" << w.materials[t->materialB].name << "')";
          if (!on) why << "no two liquid phases with an interfacial tension";
          return StageDecision{"interfacial_tension", on, false, why.str()};
        },
