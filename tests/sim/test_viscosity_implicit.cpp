@@ -132,9 +132,12 @@ Real latticeShearFactor(const Kernel& kernel, Real d) {
 
 // Mean u_x of each fluid layer in the central quarter of the slab (more than 4 d = 2 h from the
 // free side faces, where the flow is that between infinite plates), against the closed form.
-// Returns the largest layer error relative to U.
-Real couetteError(const CouetteScene& s, Real nu, const char* label) {
-  const World& w = *s.world;
+// Mean height and x-velocity of each lattice layer of a Couette scene, over the central half
+// of the plates in x and z (away from the side walls).
+struct LayerMean {
+  Real y = 0, u = 0;  // [m], [m/s]
+};
+std::vector<LayerMean> couetteLayers(const World& w) {
   const Real d = kCouetteSpacing, length = kCouetteWidth * d;
   std::vector<Real> sumU(kCouetteLayers, 0), sumY(kCouetteLayers, 0);
   std::vector<int> count(kCouetteLayers, 0);
@@ -148,10 +151,21 @@ Real couetteError(const CouetteScene& s, Real nu, const char* label) {
     sumY[static_cast<std::size_t>(k)] += x.y();
     ++count[static_cast<std::size_t>(k)];
   }
-  Real worst = 0;
+  std::vector<LayerMean> layers(count.size());
   for (std::size_t k = 0; k < count.size(); ++k) {
     REQUIRE(count[k] > 0);
-    const Real y = sumY[k] / count[k], u = sumU[k] / count[k];
+    layers[k] = {sumY[k] / count[k], sumU[k] / count[k]};
+  }
+  return layers;
+}
+
+// Returns the largest layer error relative to U.
+Real couetteError(const CouetteScene& s, Real nu, const char* label) {
+  const World& w = *s.world;
+  const std::vector<LayerMean> layers = couetteLayers(w);
+  Real worst = 0;
+  for (std::size_t k = 0; k < layers.size(); ++k) {
+    const Real y = layers[k].y, u = layers[k].u;
     const Real expected = couetteProfile(y, w.time, s.height, nu);
     worst = std::max(worst, std::abs(u - expected) / kPlateSpeed);
     std::printf("  %s t=%.3f s layer %2zu y/H %.3f: u/U %.4f, closed form %.4f\n", label, w.time, k,
@@ -518,24 +532,11 @@ TEST_CASE("implicit viscosity: two-layer Couette flow matches the piecewise-line
   // stress, a quarter wave): at t = 0.8 H^2/nu it is at most exp(-7.9) = 4e-4 of U.
   const Real H = s.height;
   while (w.time < 0.8 * H * H / kCouetteViscosity - 1e-9) pipeline.step(w);
-  const Real d = kCouetteSpacing, length = kCouetteWidth * d;
   const Real uInterface = kPlateSpeed / (1 + ratio);  // [m/s]
-  std::vector<Real> sumU(kCouetteLayers, 0), sumY(kCouetteLayers, 0);
-  std::vector<int> count(kCouetteLayers, 0);
-  for (Index i = 0; i < w.particles.size(); ++i) {
-    const Vec3& x = w.particles.x[i];
-    if (std::abs(x.x() - 0.5 * length) > 0.25 * length || std::abs(x.z() - 0.5 * length) > 0.25 * length)
-      continue;
-    const int k = static_cast<int>(std::lround((x.y() - testing::kWallGap * d) / d));
-    if (k < 0 || k >= kCouetteLayers) continue;
-    sumU[static_cast<std::size_t>(k)] += w.particles.v[i].x();
-    sumY[static_cast<std::size_t>(k)] += x.y();
-    ++count[static_cast<std::size_t>(k)];
-  }
+  const std::vector<LayerMean> layers = couetteLayers(w);
   Real worst = 0;
-  for (std::size_t k = 0; k < count.size(); ++k) {
-    REQUIRE(count[k] > 0);
-    const Real y = sumY[k] / count[k], u = sumU[k] / count[k];
+  for (std::size_t k = 0; k < layers.size(); ++k) {
+    const Real y = layers[k].y, u = layers[k].u;
     const Real expected = y < 0.5 * H ? uInterface * y / (0.5 * H)
                                       : uInterface + (kPlateSpeed - uInterface) * (y - 0.5 * H) / (0.5 * H);
     worst = std::max(worst, std::abs(u - expected) / kPlateSpeed);
