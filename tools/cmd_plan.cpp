@@ -89,6 +89,11 @@ int runPlan(Args args) {
     std::printf("  initial mean density: %s x rest density (the lattice is expanded to fill the "
                 "cavity in the first ms)\n", protocols::formatNumber(scenario.fillCompression, 3).c_str());
     for (const std::string& note : scenario.notes) std::printf("  note: %s\n", note.c_str());
+    if (!scenario.tissues.empty()) std::printf("\ntissues (elastic only when it matters, issue 7):\n");
+    for (const protocols::TissueBody& t : scenario.tissues) std::printf("  %s\n", t.describe().c_str());
+    for (const auto& [stage, limit] : plan.stageTimeStepLimits)
+      if (stage == "elasticity")
+        std::printf("  elastic stage time-step limit %s s\n", protocols::formatNumber(limit, 3).c_str());
     std::printf("\nfluid properties used:\n");
     for (const protocols::FluidPhase& ph : scenario.phases) {
       const double nu = ph.dynamicViscosity / ph.density;  // [m^2/s]

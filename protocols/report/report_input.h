@@ -60,6 +60,9 @@ struct ReportInput {
   std::vector<ReportOutline> outlines;
   std::vector<ReportStage> stages;
   std::vector<ReportSetting> accuracy;
+  // Elastic tissue (issue 7), one sentence each: the decision, maximum displacements, the cavity
+  // volume change; one line ("tissue rigid (estimate ...)") when no tissue is elastic.
+  std::vector<std::string> tissue;
 };
 
 }  // namespace protocols

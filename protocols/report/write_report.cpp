@@ -81,6 +81,18 @@ std::string renderReportHtml(const ReportInput& in) {
   }
   s << "</table>\n";
 
+  s << "<h2>Tissue</h2>\n";
+  if (in.tissue.empty()) {
+    s << "<p>no tissue in the protocol: rigid cavity wall</p>\n";
+  } else if (in.tissue.size() == 1) {
+    s << "<p>" << escapeXml(in.tissue.front()) << "</p>\n";
+  } else {
+    s << "<ul>\n";
+    for (const auto& line : in.tissue) s << "<li>" << escapeXml(line) << "</li>\n";
+    s << "</ul>\n<p>Displacements from the rest state; the coverage above is measured on the "
+         "retina where the tissue has carried it (protocols/scenario/tissue_particles.h).</p>\n";
+  }
+
   s << "<h2>Retinal breaks</h2>\n";
   if (in.breaks.empty()) {
     s << "<p>The protocol has no retinal breaks.</p>\n";
@@ -176,7 +188,10 @@ std::string renderSummaryJson(const ReportInput& in) {
       << ", \"covered_at_end\": " << (coveredAtEnd ? "true" : "false") << "}"
       << (b + 1 < in.breaks.size() ? "," : "") << "\n";
   }
-  s << "  ],\n  \"stages\": [\n";
+  s << "  ],\n  \"tissue\": [";
+  for (std::size_t k = 0; k < in.tissue.size(); ++k)
+    s << (k ? ", " : "") << "\"" << escapeJson(in.tissue[k]) << "\"";
+  s << "],\n  \"stages\": [\n";
   for (std::size_t k = 0; k < in.stages.size(); ++k)
     s << "    {\"name\": \"" << escapeJson(in.stages[k].name) << "\", \"active\": "
       << (in.stages[k].active ? "true" : "false") << ", \"seconds\": "

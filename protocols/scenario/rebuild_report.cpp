@@ -2,6 +2,7 @@
 
 #include "protocols/scenario/run_scenario.h"
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -19,7 +20,8 @@ ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& s, cons
   in.frames = r.frames;
   in.summary = summarizeSchedule(r.frames);
   in.mapTime = r.frames.back().time;
-  in.wallPositions.assign(s.world->walls.x.begin(), s.world->walls.x.end());
+  in.wallPositions = s.retinaSamples.restPositions;  // the map is drawn at rest
+  in.tissue = tissueReportLines(s, r.lastTissue, r.frames.back().time);
   in.wallOilFraction = r.lastFractions.oilFraction;
   in.wallWetting = r.lastFractions.wetting;
   in.wallRegions = s.retina.regions;
@@ -34,18 +36,29 @@ ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& s, cons
   return in;
 }
 
-WallOilFractions measureWallFractions(const Scenario& s, const std::vector<sim::Vec3>& x,
-                                      const std::vector<std::int32_t>& material) {
+WallOilFractions measureWallFractions(const Scenario& s, const std::vector<sim::Vec3>& positions,
+                                      const std::vector<std::int32_t>& material,
+                                      const std::vector<std::int32_t>& ids) {
   const double d = s.accuracy.particleSpacing;
   const sim::Kernel kernel(sim::KernelKind::kCubicSpline, coverageSupportRadius(d, 1.2 * d));
-  std::vector<std::uint8_t> flags(x.size());
-  std::vector<double> volumes(x.size());  // [m^3] rest volume m / rho0 of each particle's phase
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const FluidPhase& phase = material[i] == s.phases[1].materialIndex ? s.phases[1] : s.phases[0];
-    flags[i] = phase.isTamponade ? 1 : 0;
-    volumes[i] = phase.particleMass / phase.density;
+  std::vector<sim::Vec3> x;
+  std::vector<std::uint8_t> flags;
+  std::vector<double> volumes;  // [m^3] rest volume m / rho0 of each particle's phase
+  x.reserve(positions.size());
+  flags.reserve(positions.size());
+  volumes.reserve(positions.size());
+  for (std::size_t i = 0; i < positions.size(); ++i) {
+    const bool oil = material[i] == s.phases[1].materialIndex;
+    if (!oil && material[i] != s.phases[0].materialIndex) continue;  // tissue
+    const FluidPhase& phase = oil ? s.phases[1] : s.phases[0];
+    x.push_back(positions[i]);
+    flags.push_back(phase.isTamponade ? 1 : 0);
+    volumes.push_back(phase.particleMass / phase.density);
   }
-  return computeWallOilFractions(s.world->walls.x, {&x, &flags, &volumes}, kernel);
+  const std::vector<sim::Vec3> retina = s.retinaSamples.moves() && !ids.empty()
+                                            ? retinaPositions(s, positions, ids)
+                                            : s.retinaSamples.restPositions;
+  return computeWallOilFractions(retina, {&x, &flags, &volumes}, kernel);
 }
 
 Protocol loadRunProtocol(const std::filesystem::path& folder, ScenarioOptions& options) {
@@ -86,13 +99,24 @@ void rebuildReport(const std::filesystem::path& folder) {
 
   RunResults r;
   std::vector<sim::Vec3> x;
+  std::vector<std::int32_t> ids;
+  const bool tissue = std::find(s.outputFields.begin(), s.outputFields.end(), sim::field::kId) !=
+                          s.outputFields.end() && s.retinaSamples.moves();
   for (const FrameInfo& f : reader.frames()) {
     const FieldData position = reader.readField(f.index, "fluid", sim::field::kPosition);
     const FieldData material = reader.readField(f.index, "fluid", sim::field::kMaterial);
     x.resize(position.rows);
     for (std::size_t i = 0; i < position.rows; ++i)
       x[i] = sim::Vec3(position.real(i, 0), position.real(i, 1), position.real(i, 2));
-    r.lastFractions = measureWallFractions(s, x, material.integers);
+    if (tissue) ids = reader.readField(f.index, "fluid", sim::field::kId).integers;
+    if (!s.tissues.empty()) {
+      if (!tissue) {
+        ids.resize(x.size());
+        for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<std::int32_t>(i);
+      }
+      r.lastTissue = measureTissues(s, x, ids);
+    }
+    r.lastFractions = measureWallFractions(s, x, material.integers, ids);
     r.frames.push_back(measureFrameCoverage(s.retina, r.lastFractions, f.time));
   }
   if (r.frames.empty())

@@ -24,15 +24,20 @@ struct RunResults {
   WallOilFractions lastFractions;               // wall state of the last frame
   std::vector<sim::StageTimers::Entry> timers;  // per-stage wall-clock
   std::vector<sim::StageDecision> decisions;
+  TissueMeasures lastTissue;                    // tissue state of the last frame
 };
 
 ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& scenario,
                                const RunResults& results);
 
-// The coverage of the world's current state (support radius coverageSupportRadius(d, 1.2 d)).
+// The coverage of one state (support radius coverageSupportRadius(d, 1.2 d)) of the dynamic
+// particles: positions and materials (#F); particles of other materials than the two phases
+// (elastic tissue) are left out. `ids` (#F, or empty when no retina sample moves) place the
+// retina samples that move with a tissue (retinaPositions).
 WallOilFractions measureWallFractions(const Scenario& scenario,
-                                      const std::vector<sim::Vec3>& fluidPositions,
-                                      const std::vector<std::int32_t>& fluidMaterials);
+                                      const std::vector<sim::Vec3>& positions,
+                                      const std::vector<std::int32_t>& materials,
+                                      const std::vector<std::int32_t>& ids = {});
 
 // The protocol and scenario options a run in `folder` was made with (from its frames.h5): the
 // original protocol file when its text is unchanged, else the stored copy written to

@@ -65,7 +65,9 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   std::vector<FrameCoverage> frames;
   WallOilFractions lastFractions;
   std::vector<sim::Vec3> fluidPositions;
-  std::vector<std::int32_t> fluidMaterials;
+  std::vector<std::int32_t> fluidMaterials, fluidIds;
+  TissueMeasures lastTissue;  // of the last frame (tissue_particles.h)
+  const bool tissue = !s.tissues.empty();
   std::vector<std::string> stageNames;
   for (const auto& e : pipeline.timers().entries()) stageNames.push_back(e.name);
   const double interval = protocol.outputs.frameInterval.value;  // [s]
@@ -111,7 +113,10 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
         x.resize(position.rows);
         for (std::size_t i = 0; i < position.rows; ++i)
           x[i] = sim::Vec3(position.real(i, 0), position.real(i, 1), position.real(i, 2));
-        lastFractions = measureWallFractions(s, x, material.integers);
+        std::vector<std::int32_t> ids;
+        if (s.retinaSamples.moves()) ids = reader.readField(f.index, "fluid", sim::field::kId).integers;
+        lastFractions = measureWallFractions(s, x, material.integers, ids);
+        if (tissue && !ids.empty()) lastTissue = measureTissues(s, x, ids);
         frames.push_back(measureFrameCoverage(s.retina, lastFractions, f.time));
       }
     }
@@ -133,10 +138,25 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
 
   auto record = [&]() {
     if (!frames.empty() && !(world.time > frames.back().time)) return;
-    writer->writeFrame(world.time, world.stepCount, {{"fluid", &world.particles.fields, s.outputFields}});
     fluidPositions.assign(world.particles.x.begin(), world.particles.x.end());
     fluidMaterials.assign(world.particles.material.begin(), world.particles.material.end());
-    lastFractions = measureWallFractions(s, fluidPositions, fluidMaterials);
+    fluidIds.assign(world.particles.id.begin(), world.particles.id.end());
+    if (world.particles.fields.has(kTissueDisplacementField))
+      updateTissueDisplacement(s, fluidPositions, fluidIds,
+                               world.particles.fields.get<sim::Vec3>(kTissueDisplacementField));
+    writer->writeFrame(world.time, world.stepCount, {{"fluid", &world.particles.fields, s.outputFields}});
+    lastFractions = measureWallFractions(s, fluidPositions, fluidMaterials, fluidIds);
+    if (tissue) {
+      lastTissue = measureTissues(s, fluidPositions, fluidIds);
+      std::vector<double> row = lastTissue.maxDisplacement;
+      std::vector<std::string> names;
+      for (const TissueBody& t : s.tissues) names.push_back(t.name + " max displacement [m]");
+      row.push_back(lastTissue.retinaMaxDisplacement);
+      names.emplace_back("retina max displacement [m]");
+      row.push_back(lastTissue.cavityVolumeChange);
+      names.emplace_back("cavity volume change [m^3]");
+      writer->appendSeries("tissue", world.time, row, names);
+    }
     frames.push_back(measureFrameCoverage(s.retina, lastFractions, world.time));
     std::vector<double> row;
     for (const auto& r : frames.back().regions) row.push_back(r.fraction);
@@ -192,8 +212,9 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   auto sample = [&]() {
     fluidPositions.assign(world.particles.x.begin(), world.particles.x.end());
     fluidMaterials.assign(world.particles.material.begin(), world.particles.material.end());
-    const FrameCoverage c =
-        measureFrameCoverage(s.retina, measureWallFractions(s, fluidPositions, fluidMaterials), world.time);
+    fluidIds.assign(world.particles.id.begin(), world.particles.id.end());
+    const FrameCoverage c = measureFrameCoverage(
+        s.retina, measureWallFractions(s, fluidPositions, fluidMaterials, fluidIds), world.time);
     SteadySample out{world.time, sim::kineticEnergy(world) / totalMass, {}};
     for (const auto& r : c.regions) out.coverage.push_back(r.fraction);
     for (const auto& b : c.breaks) out.coverage.push_back(b.area.fraction);
@@ -264,7 +285,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   writer->close();
 
   // Report.
-  RunResults results{frames, lastFractions, pipeline.timers().entries(), pipeline.decisions()};
+  RunResults results{frames, lastFractions, pipeline.timers().entries(), pipeline.decisions(), lastTissue};
   const ReportInput in = makeRunReportInput(protocol, s, results);
   if (protocol.outputs.report.value) writeReport(in, options.outputFolder);
 

@@ -76,9 +76,6 @@ void buildCavity(const Protocol& p, Scenario& s) {
   const meshing::MeshMeasures measures = meshing::measureMesh(s.cavity);
   s.cavityVolume = measures.signedVolume;
   s.cavityArea = measures.area;
-  if (e.sclera || e.orbitalFat)
-    s.notes.push_back("tissues (sclera, orbital fat) are not simulated yet (issue 7): the wall is "
-                      "rigid");
 }
 
 // Wall particles, regions, breaks.
@@ -185,6 +182,8 @@ void resolveOutputFields(const Protocol& p, Scenario& s) {
   }
   if (!problems.empty()) throw ProtocolError(std::move(problems));
   for (const char* always : {sim::field::kPosition, sim::field::kMaterial}) s.outputFields.push_back(always);
+  if (s.retinaSamples.moves() || s.world->particles.fields.has(kTissueDisplacementField))
+    for (const char* tissue : {sim::field::kId, kTissueDisplacementField}) s.outputFields.push_back(tissue);
   for (const Located<std::string>& f : p.outputs.fields)
     if (std::find(s.outputFields.begin(), s.outputFields.end(), f.value) == s.outputFields.end())
       s.outputFields.push_back(f.value);
@@ -246,7 +245,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   wp.maxTimeStep = s.accuracy.maxTimeStep;
   Eigen::AlignedBox3d bounds;
   for (const auto& v : s.cavity.vertices) bounds.extend(v);
-  const double pad = 4.0 * wp.supportRadiusFactor * d;  // [m] walls sit on the surface
+  const double pad = 4.0 * wp.supportRadiusFactor * d + tissueDomainPadding(p, d);  // [m]
   wp.domain = sim::Box(bounds.min() - sim::Vec3::Constant(pad), bounds.max() + sim::Vec3::Constant(pad));
   s.world = std::make_unique<sim::World>(wp);
   s.world->gravity = wp.gravity;
@@ -263,6 +262,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   }
 
   buildWalls(p, s, options.wallSpacingFactor * d);
+  recordRetinaSamples(s);  // the coverage's sample points (tissue_particles.h)
 
   // Interface physics data (issue 6): the stage rules switch interfacial tension and wall
   // adhesion on when both phases are present (sim::effectRegistry()).
@@ -339,6 +339,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     s.world->particles.add(x, sim::Vec3::Zero(), oil.particleMass, oil.materialIndex);
   if (aqueous.count == 0 || oil.count == 0)
     s.notes.push_back("one fluid only: no oil/aqueous interface");
+  addTissues(p, s);  // elastic sclera / orbital fat replace the wall they cover (issue 7)
 
   // Pipeline options: solver by name, effects forced by the protocol.
   s.pipelineOptions.solver = std::string(toString(p.solver.value));

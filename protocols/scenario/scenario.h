@@ -16,8 +16,8 @@
 //     PipelineOptions (solver by name, effects forced as the protocol says). While the default
 //     multiphase solver (issue 6) is missing from the build, a protocol that names no solver
 //     runs with "wcsph", with a note; one that names a missing solver is an error.
-// Tissues (sclera, orbital fat) are not assembled: elastic walls are issue 7. A protocol that
-// asks for them gets a note in Scenario::notes, and the wall stays rigid.
+// Tissues (sclera, orbital fat): decided elastic or rigid and, when elastic, sampled as elastic
+// particles that replace the wall they cover (protocols/scenario/tissue_particles.h).
 #pragma once
 
 #include <memory>
@@ -30,6 +30,7 @@
 #include "meshing/triangle_mesh.h"
 #include "protocols/coverage/frame_coverage.h"
 #include "protocols/format/protocol.h"
+#include "protocols/scenario/tissue_particles.h"
 #include "sim/world/stage_registry.h"
 #include "sim/world/world.h"
 
@@ -106,7 +107,9 @@ struct Scenario {
   double cavityVolume = 0.0;          // [m^3]
   double cavityArea = 0.0;            // [m^2]
   std::vector<anatomy::RetinalBreak> breaks;
-  RetinaMap retina;                   // per wall particle (wall index order of world->walls)
+  RetinaMap retina;                   // per retina sample (the walls as first sampled)
+  RetinaSamples retinaSamples;        // where the coverage is measured (may move with a tissue)
+  std::vector<TissueBody> tissues;    // the protocol's sclera / orbital fat, decided
   std::vector<FluidPhase> phases;     // [0] aqueous, [1] tamponade (a phase may have 0 particles)
   std::vector<ScheduledPosture> schedule;
   AccuracySettings accuracy;

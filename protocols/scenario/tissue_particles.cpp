@@ -1,0 +1,414 @@
+#include "protocols/scenario/tissue_particles.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <optional>
+#include <sstream>
+
+#include "anatomy/anatomy_error.h"
+#include "anatomy/material_library.h"
+#include "anatomy/orbital_fat.h"
+#include "anatomy/sclera_shell.h"
+#include "meshing/mesh_error.h"
+#include "meshing/mesh_query.h"
+#include "meshing/sample_shell.h"
+#include "meshing/sample_volume.h"
+#include "protocols/format/protocol_error.h"
+#include "protocols/report/report_format.h"
+#include "protocols/scenario/scenario.h"
+#include "sim/core/error.h"
+#include "sim/solid/fixed_particles.h"
+
+namespace protocols {
+namespace {
+
+[[noreturn]] void fail(const SourceLocation& where, const std::string& what, const std::string& fix) {
+  throw ProtocolError({Diagnostic{where, what, fix}});
+}
+
+std::string mm(double metres) { return formatNumber(metres * 1e3, 3) + " mm"; }
+
+// The tissue's material values: library, then the protocol's overrides.
+TissueBody tissueFromSpec(const TissueSpec& spec, const std::string& name) {
+  const anatomy::MaterialRecord& r = anatomy::MaterialLibrary::builtin().find(spec.material.value);
+  TissueBody t;
+  t.name = name;
+  t.material = spec.material.value;
+  t.youngsModulus = spec.youngsModulus ? spec.youngsModulus->value : r.youngsModulus->value;
+  t.poissonRatio = spec.poissonRatio ? spec.poissonRatio->value : r.poissonRatio->value;
+  t.density = spec.density ? spec.density->value : r.density->value;
+  return t;
+}
+
+sim::TissueChoice choiceOf(TissueMode mode) {
+  switch (mode) {
+    case TissueMode::kElastic: return sim::TissueChoice::kElastic;
+    case TissueMode::kRigid: return sim::TissueChoice::kRigid;
+    case TissueMode::kAuto: break;
+  }
+  return sim::TissueChoice::kAuto;
+}
+
+// The largest pressure the scene can put on its wall [Pa]: hydrostatic over the cavity's largest
+// extent with the heavier phase, plus the interface's capillary pressure 2 sigma / R.
+double sceneLoadPressure(const Protocol& p, const Scenario& s, double radius) {
+  Eigen::AlignedBox3d bounds;
+  for (const auto& v : s.cavity.vertices) bounds.extend(v);
+  const double height = (bounds.max() - bounds.min()).maxCoeff();  // [m]
+  const double rho = std::max(s.phases[0].density, s.phases[1].density);
+  const double sigma = s.phases[1].interfacialTension.value_or(0.0);
+  return rho * p.schedule.gravity.value * height + 2.0 * sigma / radius;
+}
+
+sim::Material elasticMaterial(const TissueBody& t) {
+  sim::Material m;
+  m.name = t.material;
+  m.kind = sim::MaterialKind::kElastic;
+  m.restDensity = t.density;
+  m.youngsModulus = t.simulatedModulus;
+  m.poissonRatio = t.poissonRatio;
+  return m;
+}
+
+void addParticles(Scenario& s, TissueBody& t, const std::vector<sim::Vec3>& points,
+                  const std::vector<char>& anchored, double d) {
+  sim::DynamicParticles& particles = s.world->particles;
+  // Written to the frames (the per-particle displacement map), recomputed before each frame.
+  particles.fields.addOrGet<sim::Vec3>({kTissueDisplacementField, "m", false, true});
+  t.materialIndex = s.world->materials.add(elasticMaterial(t));
+  t.firstId = static_cast<std::int32_t>(particles.size());
+  t.count = points.size();
+  t.restPositions = points;
+  const double mass = t.density * d * d * d;  // [kg] one lattice cube
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const std::size_t i = particles.size();
+    particles.add(points[k], sim::Vec3::Zero(), mass, t.materialIndex);
+    if (anchored[k]) {
+      sim::setFixed(particles, i);
+      ++t.anchored;
+    }
+  }
+}
+
+}  // namespace
+
+std::string TissueBody::describe() const {
+  std::ostringstream s;
+  s << name << " (E " << formatNumber(youngsModulus * 1e-3, 4) << " kPa, t " << mm(thickness)
+    << ", load " << formatNumber(loadPressure, 3) << " Pa): "
+    << (decision.elastic ? "elastic" : "rigid") << ", " << decision.reason;
+  if (decision.elastic && count > 0) {
+    s << "; " << count << " particles, " << anchored << " anchored";
+    if (simulatedModulus != youngsModulus)
+      s << "; layer thickened to " << mm(layerThickness) << " (2 particle layers), E scaled to "
+        << formatNumber(simulatedModulus * 1e-3, 4) << " kPa to keep the membrane stiffness E t";
+  }
+  return s.str();
+}
+
+bool RetinaSamples::moves() const {
+  return std::any_of(followsId.begin(), followsId.end(), [](std::int32_t id) { return id >= 0; });
+}
+
+double tissueDomainPadding(const Protocol& p, double d) {
+  double pad = 0.0;  // [m]
+  if (p.eye.sclera || p.eye.orbitalFat) pad += std::max(1.5e-3, kMinTissueLayerSpacings * d) + d;
+  if (p.eye.orbitalFat) pad += anatomy::OrbitalFatParameters{}.thickness + d;
+  return pad;
+}
+
+void recordRetinaSamples(Scenario& s) {
+  const std::size_t n = s.retina.areas.size();
+  const sim::WallParticles& walls = s.world->walls;
+  s.retinaSamples.restPositions.assign(walls.x.begin(), walls.x.begin() + static_cast<std::ptrdiff_t>(n));
+  s.retinaSamples.normals.assign(walls.normal.begin(), walls.normal.begin() + static_cast<std::ptrdiff_t>(n));
+  s.retinaSamples.followsId.assign(n, -1);
+}
+
+void addTissues(const Protocol& p, Scenario& s) {
+  const EyeSpec& e = p.eye;
+  if (!e.sclera && !e.orbitalFat) return;
+  const double d = s.accuracy.particleSpacing;  // [m]
+  const double radius = std::cbrt(3.0 * s.cavityVolume / (4.0 * std::numbers::pi));  // [m]
+  const double load = sceneLoadPressure(p, s, radius);                               // [Pa]
+
+  // Imported meshes have no anatomy to place a sclera or a fat pad on.
+  if (!s.eye) {
+    for (const std::optional<TissueSpec>* spec : {&e.sclera, &e.orbitalFat}) {
+      if (!*spec) continue;
+      const TissueSpec& t = **spec;
+      const std::string name = spec == &e.sclera ? "sclera" : "orbital fat";
+      if (t.mode.value == TissueMode::kElastic)
+        fail(t.mode.where, "mode = \"elastic\" for the " + name + ", but an imported mesh cavity has "
+                           "no anatomy to sample the " + name + " from",
+             "use a parametric eye (kind = \"emmetropic\", \"myopic\" or \"staphyloma\") or set "
+             "mode = \"rigid\"");
+      s.notes.push_back(name + ": not sampled on an imported mesh cavity (no anatomy); rigid wall");
+    }
+    return;
+  }
+
+  // The sclera's anatomy (also the fat's inner face).
+  anatomy::ScleraThicknessProfile profile;
+  if (e.sclera && e.sclera->thickness) {
+    const double t = e.sclera->thickness->value;
+    profile = {t, t, t, t, t};
+  }
+  std::optional<anatomy::ScleraShell> shell;
+  try {
+    shell.emplace(*s.eye, profile);
+  } catch (const anatomy::AnatomyError& error) {
+    fail(e.sclera->thickness->where, error.what(), "give a scleral thickness of at most 1.5 mm");
+  }
+  const double thinnest = std::min({profile.limbus, profile.oraSerrata, profile.equator,
+                                    profile.midEquatorPole, profile.posteriorPole});  // [m]
+  const anatomy::OrbitalFatParameters fatParameters;
+  const auto decide = [&](TissueBody& t, const TissueSpec& spec) {
+    t.loadPressure = load;
+    try {
+      t.estimatedDisplacement = sim::estimateTissueDeformation(load, radius, t.thickness, t.youngsModulus);
+      t.decision = sim::decideElastic(t.estimatedDisplacement, d, choiceOf(spec.mode.value));
+    } catch (const sim::SimError& error) {
+      fail(spec.youngsModulus ? spec.youngsModulus->where : spec.where, error.what(),
+           "give a positive Young's modulus");
+    }
+  };
+
+  std::optional<std::size_t> scleraIndex;
+  std::vector<double> scleraLayer;  // [m] sampled thickness per retina sample (0 on the cap)
+  if (e.sclera) {
+    TissueBody t = tissueFromSpec(*e.sclera, "sclera");
+    t.thickness = thinnest;
+    decide(t, *e.sclera);
+    if (t.decision.elastic) {
+      // Layer thickness: anatomical, at least kMinTissueLayerSpacings d (see the header).
+      const double minLayer = kMinTissueLayerSpacings * d;  // [m]
+      const auto layerAt = [&](const sim::Vec3& q) {
+        const double anatomical = shell->thicknessAt(q);
+        return anatomical > 0.0 ? std::max(anatomical, minLayer) : 0.0;
+      };
+      double area = 0.0, tArea = 0.0, layerArea = 0.0;
+      for (std::size_t w = 0; w < s.retinaSamples.restPositions.size(); ++w) {
+        const double anatomical = shell->thicknessAt(s.retinaSamples.restPositions[w]);
+        if (anatomical <= 0.0) continue;
+        area += s.retina.areas[w];
+        tArea += s.retina.areas[w] * anatomical;
+        layerArea += s.retina.areas[w] * std::max(anatomical, minLayer);
+      }
+      t.layerThickness = area > 0.0 ? layerArea / area : minLayer;
+      t.simulatedModulus = area > 0.0 ? t.youngsModulus * tArea / layerArea : t.youngsModulus;
+      meshing::ShellSamplingOptions o;
+      o.spacing = d;
+      o.thickness = layerAt;
+      meshing::ShellSamples samples;
+      try {
+        samples = meshing::sampleShell(s.cavity, o);
+      } catch (const meshing::MeshError& error) {
+        fail(e.sclera->where, error.what(), "check the sclera's thickness");
+      }
+      if (samples.points.empty())
+        fail(e.sclera->where, "the sclera gets no particle at spacing " + mm(d),
+             "use a finer accuracy preset or mode = \"rigid\"");
+      std::vector<char> anchored(samples.points.size(), 0);
+      if (e.sclera->anchoring.value == Anchoring::kOuterSurface) anchored = samples.isOuter;
+      addParticles(s, t, samples.points, anchored, d);
+      if (t.simulatedModulus != t.youngsModulus)
+        s.notes.push_back("sclera thinner than " + formatNumber(kMinTissueLayerSpacings, 2) +
+                          " particle spacings: sampled as a " + mm(t.layerThickness) +
+                          " layer with E scaled to keep E t (bending stiffness and mass per area "
+                          "over-estimated)");
+      if (t.anchored == 0)
+        s.notes.push_back("sclera: no particle anchored (anchoring = \"none\"): only the fluid and "
+                          "the fat hold it");
+      scleraLayer.resize(s.retinaSamples.restPositions.size());
+      for (std::size_t w = 0; w < scleraLayer.size(); ++w)
+        scleraLayer[w] = layerAt(s.retinaSamples.restPositions[w]);
+    }
+    scleraIndex = s.tissues.size();
+    s.tissues.push_back(std::move(t));
+  }
+
+  if (e.orbitalFat) {
+    TissueBody t = tissueFromSpec(*e.orbitalFat, "orbital fat");
+    t.thickness = fatParameters.thickness;
+    decide(t, *e.orbitalFat);
+    // The fat touches the fluid only through the sclera: behind a rigid (or absent) sclera it
+    // cannot change the cavity, so "auto" keeps it rigid whatever its own estimate.
+    const bool scleraElastic = scleraIndex && s.tissues[*scleraIndex].decision.elastic;
+    if (!scleraElastic && e.orbitalFat->mode.value == TissueMode::kAuto && t.decision.elastic) {
+      t.decision.elastic = false;
+      t.decision.reason = "behind a rigid sclera the fat cannot change the cavity, treated as "
+                          "rigid (alone: " + t.decision.reason + ")";
+    }
+    if (t.decision.elastic) {
+      t.layerThickness = t.thickness;
+      t.simulatedModulus = t.youngsModulus;
+      const anatomy::OrbitalFat fat = anatomy::makeOrbitalFat(*shell, fatParameters);
+      meshing::VolumeSamplingOptions o;
+      o.spacing = d;
+      o.wallGap = 0.5 * d;
+      const std::vector<sim::Vec3> lattice = meshing::sampleVolume(fat.mesh, o);
+      // Keep the points outside the sampled sclera layer; anchor the back-face layer.
+      const meshing::MeshQuery cavity(s.cavity);
+      const bool scleraSampled = !scleraLayer.empty();
+      const double minLayer = kMinTissueLayerSpacings * d;
+      std::vector<sim::Vec3> points;
+      std::vector<char> anchored;
+      for (const sim::Vec3& x : lattice) {
+        const sim::Vec3 q = cavity.closestPoint(x);
+        const double r = (x - q).norm();  // [m] from the cavity wall
+        const double anatomical = shell->thicknessAt(q);
+        if (scleraSampled && r < std::max(anatomical, minLayer) + 0.5 * d) continue;
+        points.push_back(x);
+        anchored.push_back(e.orbitalFat->anchoring.value == Anchoring::kBackFace &&
+                           r > anatomical + fatParameters.thickness - d);
+      }
+      if (points.empty())
+        fail(e.orbitalFat->where, "the orbital fat gets no particle at spacing " + mm(d),
+             "use a finer accuracy preset or mode = \"rigid\"");
+      addParticles(s, t, points, anchored, d);
+      if (!scleraSampled)
+        s.notes.push_back("orbital fat elastic behind a rigid sclera: it cannot change the cavity");
+    }
+    s.tissues.push_back(std::move(t));
+  }
+
+  // Walls over elastic sclera are replaced by it; their retina samples follow the nearest sclera
+  // particle (brute force: W x N_sclera distance checks, ~1e8 at the standard preset, < 1 s).
+  if (scleraIndex && s.tissues[*scleraIndex].decision.elastic) {
+    const TissueBody& sclera = s.tissues[*scleraIndex];
+    RetinaSamples& r = s.retinaSamples;
+    const long n = static_cast<long>(r.restPositions.size());
+#pragma omp parallel for schedule(static)
+    for (long w = 0; w < n; ++w) {
+      const auto k = static_cast<std::size_t>(w);
+      if (scleraLayer[k] <= 0.0) continue;
+      double best = 1e300;
+      std::size_t nearest = 0;
+      for (std::size_t j = 0; j < sclera.count; ++j) {
+        const double dist = (sclera.restPositions[j] - r.restPositions[k]).squaredNorm();
+        if (dist < best) best = dist, nearest = j;
+      }
+      r.followsId[k] = sclera.firstId + static_cast<std::int32_t>(nearest);
+    }
+    sim::WallParticles& walls = s.world->walls;
+    std::vector<sim::Index> keep;
+    for (std::size_t w = 0; w < walls.size(); ++w)
+      if (shell->thicknessAt(walls.x[w]) <= 0.0) keep.push_back(static_cast<sim::Index>(w));
+    walls.fields.permute(keep);
+    walls.fields.resize(keep.size());
+  }
+}
+
+std::vector<sim::Vec3> retinaPositions(const Scenario& s, const std::vector<sim::Vec3>& x,
+                                       const std::vector<std::int32_t>& ids) {
+  const RetinaSamples& r = s.retinaSamples;
+  std::vector<sim::Vec3> out = r.restPositions;
+  if (!r.moves()) return out;
+  std::vector<std::size_t> indexOfId(x.size());
+  for (std::size_t i = 0; i < ids.size(); ++i)
+    if (ids[i] >= 0 && static_cast<std::size_t>(ids[i]) < indexOfId.size())
+      indexOfId[static_cast<std::size_t>(ids[i])] = i;
+  for (const TissueBody& t : s.tissues) {
+    if (t.count == 0) continue;
+    for (std::size_t w = 0; w < out.size(); ++w) {
+      const std::int32_t id = r.followsId[w];
+      if (id < t.firstId || id >= t.firstId + static_cast<std::int32_t>(t.count)) continue;
+      const sim::Vec3 u = x[indexOfId[static_cast<std::size_t>(id)]] -
+                          t.restPositions[static_cast<std::size_t>(id - t.firstId)];
+      out[w] += u;
+    }
+  }
+  return out;
+}
+
+void updateTissueDisplacement(const Scenario& s, const std::vector<sim::Vec3>& x,
+                              const std::vector<std::int32_t>& ids, std::vector<sim::Vec3>& out) {
+  out.assign(x.size(), sim::Vec3::Zero());
+  for (const TissueBody& t : s.tissues)
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (ids[i] >= t.firstId && ids[i] < t.firstId + static_cast<std::int32_t>(t.count))
+        out[i] = x[i] - t.restPositions[static_cast<std::size_t>(ids[i] - t.firstId)];
+}
+
+TissueMeasures measureTissues(const Scenario& s, const std::vector<sim::Vec3>& x,
+                              const std::vector<std::int32_t>& ids) {
+  TissueMeasures m;
+  m.maxDisplacement.assign(s.tissues.size(), 0.0);
+  std::vector<sim::Vec3> u;
+  updateTissueDisplacement(s, x, ids, u);
+  for (std::size_t k = 0; k < s.tissues.size(); ++k) {
+    const TissueBody& t = s.tissues[k];
+    for (std::size_t i = 0; i < x.size(); ++i)
+      if (ids[i] >= t.firstId && ids[i] < t.firstId + static_cast<std::int32_t>(t.count))
+        m.maxDisplacement[k] = std::max(m.maxDisplacement[k], u[i].norm());
+  }
+  const std::vector<sim::Vec3> now = retinaPositions(s, x, ids);
+  const RetinaSamples& r = s.retinaSamples;
+  std::vector<double> area(kReportedRegions.size(), 0.0), outward(kReportedRegions.size(), 0.0);
+  for (std::size_t w = 0; w < now.size(); ++w) {
+    const sim::Vec3 uw = now[w] - r.restPositions[w];
+    const double normal = r.normals[w].dot(uw);  // [m] outward
+    m.retinaMaxDisplacement = std::max(m.retinaMaxDisplacement, uw.norm());
+    m.cavityVolumeChange += s.retina.areas[w] * normal;
+    for (std::size_t k = 0; k < kReportedRegions.size(); ++k)
+      if ((s.retina.regions[w] & kReportedRegions[k].bit) != 0) {
+        area[k] += s.retina.areas[w];
+        outward[k] += s.retina.areas[w] * normal;
+      }
+  }
+  m.regionMeanOutward.resize(kReportedRegions.size());
+  for (std::size_t k = 0; k < area.size(); ++k)
+    m.regionMeanOutward[k] = area[k] > 0.0 ? outward[k] / area[k] : 0.0;
+  return m;
+}
+
+std::vector<std::string> tissueReportLines(const Scenario& s, const TissueMeasures& last,
+                                           double lastTime) {
+  std::vector<std::string> lines;
+  const double d = s.accuracy.particleSpacing;
+  if (s.tissues.empty()) return {"no tissue in the protocol: rigid cavity wall"};
+  const bool anyElastic =
+      std::any_of(s.tissues.begin(), s.tissues.end(), [](const TissueBody& t) { return t.decision.elastic; });
+  if (!anyElastic) {
+    std::ostringstream line;
+    line << "tissue rigid (";
+    for (std::size_t k = 0; k < s.tissues.size(); ++k) {
+      const TissueBody& t = s.tissues[k];
+      line << (k ? "; " : "") << t.name << " estimate " << mm(t.estimatedDisplacement) << " = "
+           << formatNumber(t.estimatedDisplacement / d, 3) << " d"
+           << (t.decision.forced ? ", forced rigid" : "");
+    }
+    line << (std::any_of(s.tissues.begin(), s.tissues.end(),
+                         [](const TissueBody& t) { return t.decision.forced; })
+                 ? ")"
+                 : " < " + formatNumber(sim::kElasticDisplacementFraction, 2) + " d)");
+    return {line.str()};
+  }
+  const std::string at = " at t = " + formatNumber(lastTime, 4) + " s";
+  for (std::size_t k = 0; k < s.tissues.size(); ++k) {
+    const TissueBody& t = s.tissues[k];
+    if (!t.decision.elastic) {
+      lines.push_back(t.name + ": rigid (estimate " + mm(t.estimatedDisplacement) + " = " +
+                      formatNumber(t.estimatedDisplacement / d, 3) + " d)");
+      continue;
+    }
+    const double u = k < last.maxDisplacement.size() ? last.maxDisplacement[k] : 0.0;
+    lines.push_back(t.name + ": elastic, maximum displacement " + mm(u) + " = " +
+                    formatNumber(u / d, 3) + " d" + at + " (estimate " +
+                    mm(t.estimatedDisplacement) + ")");
+  }
+  lines.push_back("retina maximum displacement " + mm(last.retinaMaxDisplacement) + at);
+  lines.push_back("cavity volume change " + formatNumber(last.cavityVolumeChange * 1e9, 3) +
+                  " uL = " + formatNumber(100.0 * last.cavityVolumeChange / s.cavityVolume, 3) + " %" + at);
+  std::ostringstream regions;
+  regions << "mean outward retina displacement by region:";
+  for (std::size_t k = 0; k < kReportedRegions.size() && k < last.regionMeanOutward.size(); ++k)
+    regions << (k ? ";" : "") << " " << kReportedRegions[k].name << " "
+            << formatNumber(last.regionMeanOutward[k] * 1e6, 3) << " um";
+  lines.push_back(regions.str());
+  return lines;
+}
+
+}  // namespace protocols

@@ -1,0 +1,122 @@
+// Tissues of a scenario (issue 7): the sclera around the cavity wall and the orbital fat behind
+// the globe, each decided elastic or rigid before the run and, when elastic, sampled as dynamic
+// particles of an elastic material that replace the rigid cavity wall they cover.
+//
+// Decision (DESIGN.md principle 1, sim/solid/tissue_deformation.h): the thin-shell estimate
+// u = p R^2 / (2 E t) under the largest load the scene can apply, p = rho_max g H + 2 sigma / R
+// (hydrostatic over the cavity's largest extent H, the heavier phase; capillary pressure of the
+// oil/aqueous interface at the cavity's equivalent-sphere radius R), compared with 0.1 d, unless
+// the protocol's `mode` forces elastic or rigid. The sclera is estimated at its thinnest
+// anatomical thickness (or the protocol's uniform one), the fat at its layer thickness: both err
+// towards "elastic".
+//
+// Rigid: nothing changes (the cavity wall particles stay, no tissue particles).
+// Elastic sclera: meshing::sampleShell on the fluid's lattice (same origin and spacing d, so the
+//   tissue's inner layer continues the fluid's lattice) between d/2 and the local thickness; its
+//   outermost layer (ShellSamples::isOuter) anchored with sim::setFixed when anchoring is
+//   "outer_surface". The cavity wall particles over the sclera (all but the lens/IOL cap, which
+//   has no sclera) are removed: the fluid touches the tissue directly (the INDSPH paper's set-up).
+//   A sclera thinner than kMinTissueLayerSpacings d cannot be resolved (the elasticity needs
+//   two layers for its quadratic gradients, docs/elasticity.md), so the particle layer is
+//   thickened to that and Young's modulus scaled by t / t_layer (area-weighted means over the
+//   wall): the membrane stiffness E t, which sets a pressurised shell's displacement, is kept; the
+//   bending stiffness and the areal mass are over-estimated (noted in Scenario::notes).
+// Elastic fat: lattice points inside anatomy::makeOrbitalFat's cup at least d/2 from its faces
+//   and outside the sampled sclera layer; the back-face layer (within d of the cup's outer face)
+//   anchored when anchoring is "back_face".
+//
+// Coverage on a moving retina: the retina samples (RetinaMap order, the cavity wall samples of
+// assembly) stay the points the coverage is measured at. A sample over elastic sclera follows the
+// sclera particle nearest to it at rest (x = X + u of that particle, by particle id, which
+// survives the engine's re-sorting); the others stay put. So coverage is still reported on the
+// retinal surface, now where the tissue has carried it.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "protocols/format/protocol.h"
+#include "sim/core/types.h"
+#include "sim/solid/tissue_deformation.h"
+
+namespace protocols {
+
+struct Scenario;
+
+// [1] thinnest sampled tissue layer in particle spacings: d/2 gap + two lattice layers.
+inline constexpr double kMinTissueLayerSpacings = 2.5;
+
+struct TissueBody {
+  std::string name;                  // "sclera" or "orbital fat"
+  std::string material;              // material library name
+  double youngsModulus = 0.0;        // [Pa] the tissue's (library, or the protocol's override)
+  double poissonRatio = 0.0;         // [1]
+  double density = 0.0;              // [kg/m^3]
+  double thickness = 0.0;            // [m] used in the estimate
+  double loadPressure = 0.0;         // [Pa] used in the estimate
+  double estimatedDisplacement = 0.0;  // [m]
+  sim::TissueDecision decision;
+  // Elastic only.
+  double layerThickness = 0.0;       // [m] mean sampled layer (>= kMinTissueLayerSpacings d)
+  double simulatedModulus = 0.0;     // [Pa] E (t / t_layer when thickened)
+  int materialIndex = -1;            // in world.materials
+  std::int32_t firstId = 0;          // particle ids firstId .. firstId + count - 1
+  std::size_t count = 0;
+  std::size_t anchored = 0;
+  std::vector<sim::Vec3> restPositions;  // [m] by id - firstId
+  std::string describe() const;      // one line for `tamponade plan` and notes
+};
+
+// The retina samples the coverage is measured at (RetinaMap order), #W.
+struct RetinaSamples {
+  std::vector<sim::Vec3> restPositions;  // [m]
+  std::vector<sim::Vec3> normals;        // [1] outward (into the wall)
+  std::vector<std::int32_t> followsId;   // tissue particle id the sample moves with, -1 = fixed
+  bool moves() const;
+};
+
+// Extra room [m] the World's domain needs around the cavity for the protocol's tissues.
+double tissueDomainPadding(const Protocol& protocol, double particleSpacing);
+
+// Records the retina samples from the world's walls (call right after the walls are built: the
+// first RetinaMap::areas.size() wall particles are the samples).
+void recordRetinaSamples(Scenario& scenario);
+
+// Decides each tissue of the protocol and adds the elastic ones (materials, particles, anchors;
+// removes the wall particles they replace). Call after the fluids are added and before
+// World::initialize. Throws ProtocolError at the value responsible: a forced elastic tissue the
+// scene cannot sample (imported mesh: no anatomy), a thickness the anatomy rejects, a tissue that
+// gets no particle at this spacing.
+void addTissues(const Protocol& protocol, Scenario& scenario);
+
+struct TissueMeasures {
+  std::vector<double> maxDisplacement;  // [m] per Scenario::tissues entry (0 when rigid)
+  double retinaMaxDisplacement = 0.0;   // [m] largest movement of a retina sample
+  // [m^3] cavity volume change, sum_w A_w n_w . u_w over the retina samples (first order in u;
+  // the divergence theorem on the wall, A_w the samples' areas).
+  double cavityVolumeChange = 0.0;
+  // [m] area-weighted mean outward displacement per reported region (kReportedRegions order).
+  std::vector<double> regionMeanOutward;
+};
+
+// Current retina sample positions from the dynamic particles' positions and ids (#F each; any
+// order). With no moving sample it returns the rest positions.
+std::vector<sim::Vec3> retinaPositions(const Scenario& scenario, const std::vector<sim::Vec3>& x,
+                                       const std::vector<std::int32_t>& ids);
+
+TissueMeasures measureTissues(const Scenario& scenario, const std::vector<sim::Vec3>& x,
+                              const std::vector<std::int32_t>& ids);
+
+// Per dynamic particle displacement from its rest position [m] (zero for fluid), #F, in the
+// arrays' order; written to the frames as the "tissue_displacement" field.
+inline constexpr const char* kTissueDisplacementField = "tissue_displacement";
+void updateTissueDisplacement(const Scenario& scenario, const std::vector<sim::Vec3>& x,
+                              const std::vector<std::int32_t>& ids, std::vector<sim::Vec3>& out);
+
+// The report's tissue lines: one ("tissue rigid (estimate ... < 0.1 d)") when no tissue is
+// elastic, else per tissue its maximum displacement, the retina's, and the cavity volume change.
+std::vector<std::string> tissueReportLines(const Scenario& scenario, const TissueMeasures& last,
+                                           double lastTime);
+
+}  // namespace protocols
