@@ -263,6 +263,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
 
   buildWalls(p, s, options.wallSpacingFactor * d);
   recordRetinaSamples(s);  // the coverage's sample points (tissue_particles.h)
+  addTissues(p, s);        // elastic sclera / orbital fat replace the wall they cover (issue 7)
 
   // Interface physics data (issue 6): the stage rules switch interfacial tension and wall
   // adhesion on when both phases are present (sim::effectRegistry()).
@@ -339,7 +340,6 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     s.world->particles.add(x, sim::Vec3::Zero(), oil.particleMass, oil.materialIndex);
   if (aqueous.count == 0 || oil.count == 0)
     s.notes.push_back("one fluid only: no oil/aqueous interface");
-  addTissues(p, s);  // elastic sclera / orbital fat replace the wall they cover (issue 7)
 
   // Pipeline options: solver by name, effects forced by the protocol.
   s.pipelineOptions.solver = std::string(toString(p.solver.value));

@@ -298,6 +298,9 @@ void addTissues(const Protocol& p, Scenario& s) {
       if (shell->thicknessAt(walls.x[w]) <= 0.0) keep.push_back(static_cast<sim::Index>(w));
     walls.fields.permute(keep);
     walls.fields.resize(keep.size());
+    if (s.phases[1].contactAngleThroughAqueous)
+      s.notes.push_back("the retina over the elastic sclera has no wall adhesion (contact angle): "
+                        "the engine applies it to wall particles only");
   }
 }
 

@@ -84,8 +84,8 @@ double tissueDomainPadding(const Protocol& protocol, double particleSpacing);
 void recordRetinaSamples(Scenario& scenario);
 
 // Decides each tissue of the protocol and adds the elastic ones (materials, particles, anchors;
-// removes the wall particles they replace). Call after the fluids are added and before
-// World::initialize. Throws ProtocolError at the value responsible: a forced elastic tissue the
+// removes the wall particles they replace). Call right after recordRetinaSamples (before the
+// wall tags are given contact angles, and before World::initialize). Throws ProtocolError at the value responsible: a forced elastic tissue the
 // scene cannot sample (imported mesh: no anatomy), a thickness the anatomy rejects, a tissue that
 // gets no particle at this spacing.
 void addTissues(const Protocol& protocol, Scenario& scenario);
