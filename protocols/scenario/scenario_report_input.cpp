@@ -31,6 +31,13 @@ std::vector<sim::Vec3> ringAroundPole(const anatomy::Eye& eye, double radius) {
 
 std::string millimetres(double metres) { return formatNumber(metres * 1e3, 3) + " mm"; }
 
+std::string tissueCounts(const Scenario& s) {
+  std::string text;
+  for (const TissueBody& t : s.tissues)
+    if (t.count > 0) text += ", " + std::to_string(t.count) + " " + t.name;
+  return text;
+}
+
 }  // namespace
 
 ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
@@ -149,7 +156,7 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
        "CFL 0.4 and the stages' limits choose the step inside these bounds"},
       {"particles", std::to_string(s.phases[0].count) + " aqueous, " +
                         std::to_string(s.phases[1].count) + " tamponade, " +
-                        std::to_string(s.world->walls.size()) + " wall",
+                        std::to_string(s.world->walls.size()) + " wall" + tissueCounts(s),
        "fluid started at " + formatNumber(s.fillCompression, 3) +
            " x rest density so that it fills the cavity (protocols/scenario/scenario.h MassRule)"},
   };
