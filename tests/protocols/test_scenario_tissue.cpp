@@ -10,6 +10,8 @@
 
 #include "protocols/format/parse_protocol.h"
 #include "protocols/format/protocol_error.h"
+#include "protocols/io/frame_reader.h"
+#include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/run_scenario.h"
 #include "protocols/scenario/scenario.h"
 #include "sim/solid/fixed_particles.h"
@@ -179,6 +181,8 @@ struct PaperRun {
   Scenario scenario;
   RunSummary summary;
   std::string report;
+  std::string summaryJson, rebuiltSummaryJson;  // summary.json of the run, and from `report DIR`
+  std::vector<std::string> series;              // series names in frames.h5
 };
 
 const PaperRun& paperRun() {
@@ -196,6 +200,10 @@ const PaperRun& paperRun() {
     options.outputFolder = out;
     r.summary = runScenario(r.protocol, r.scenario, options);
     r.report = protocols_test::readText(out / "report.html");
+    r.summaryJson = protocols_test::readText(out / "summary.json");
+    r.series = FrameReader(out / "frames.h5").seriesNames();
+    rebuildReport(out);  // recomputes coverage and tissue measures from the frames' ids
+    r.rebuiltSummaryJson = protocols_test::readText(out / "summary.json");
     fs::remove_all(out);
     return r;
   }();
@@ -219,6 +227,10 @@ TEST_CASE("tissue: a few steps of the paper's 10 kPa experiment stay finite and 
   CHECK(run.report.find("orbital fat: elastic, maximum displacement ") != std::string::npos);
   CHECK(run.report.find("retina maximum displacement ") != std::string::npos);
   CHECK(run.report.find("cavity volume change ") != std::string::npos);
+  CHECK(run.summaryJson.find("\"tissue\": [\"sclera: elastic") != std::string::npos);
+  CHECK(std::find(run.series.begin(), run.series.end(), "tissue") != run.series.end());
+  // `tamponade report DIR` rebuilds the same coverage and tissue lines from the files.
+  CHECK(run.rebuiltSummaryJson == run.summaryJson);
   const TissueMeasures m = measureTissues(s, particles.x, particles.id);
   INFO("after " << run.summary.steps << " steps: sclera " << m.maxDisplacement[0] << " m, fat "
                 << m.maxDisplacement[1] << " m, retina " << m.retinaMaxDisplacement
