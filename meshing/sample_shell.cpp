@@ -23,59 +23,56 @@ ShellSamples sampleShell(const TriangleMesh& mesh, const ShellSamplingOptions& o
   if (!(d > 0) || !std::isfinite(d))
     throw MeshError("shell sampling", "spacing must be positive and finite", "give e.g. 0.4 mm");
   if (!options.thickness)
-    throw MeshError("shell sampling", "no thickness given", "give a constant or a thickness function");
+    throw MeshError("shell sampling", "no thickness given",
+                    "give a constant or a thickness function");
   const double gap = options.innerGap < 0 ? 0.5 * d : options.innerGap;  // [unit]
   // Largest thickness, for the lattice box.
   double tMax = 0;  // [unit]
   auto probe = [&](const Vec3& q) {
     const double t = options.thickness(q);
     if (!(t >= 0) || !std::isfinite(t))
-      throw MeshError("shell sampling", "thickness function gave " + std::to_string(t) + " at a surface point",
+      throw MeshError("shell sampling",
+                      "thickness function gave " + std::to_string(t) + " at a surface point",
                       "return a finite thickness >= 0");
     tMax = std::max(tMax, t);
   };
   for (const Vec3& v : mesh.vertices) probe(v);
   for (const Triangle& f : mesh.faces)
     probe((mesh.vertices[static_cast<size_t>(f[0])] + mesh.vertices[static_cast<size_t>(f[1])] +
-           mesh.vertices[static_cast<size_t>(f[2])]) / 3.0);
+           mesh.vertices[static_cast<size_t>(f[2])]) /
+          3.0);
 
   const MeshQuery query(mesh);
   const MeshMeasures m = measureMesh(mesh);
   const Vec3 grow = Vec3::Constant(tMax + d);
-  const detail::LatticeBox box(m.boundsMin - grow, m.boundsMax + grow, d, options.latticeOrigin, "shell sampling");
+  const detail::LatticeBox box(m.boundsMin - grow, m.boundsMax + grow, d, options.latticeOrigin,
+                               "shell sampling");
   // Per column: inside points are skipped by the crossing parity; outside, the distance is
   // 1-Lipschitz, so a point farther than tMax from the wall rules out the next
   // floor((r - tMax) / d) points up the column without queries. (Measured: faster here than
   // ball queries, which pay off only deep inside round cavities, see sampleVolume.)
   std::vector<ShellSamples> perColumn(box.columns());
-#pragma omp parallel
-  {
-    std::vector<double> crossings;
-    std::vector<char> inside;
-#pragma omp for schedule(dynamic, 16)
-    for (long long cl = 0; cl < static_cast<long long>(box.columns()); ++cl) {
-      const size_t c = static_cast<size_t>(cl);
-      detail::insideColumn(box, query, c, crossings, inside);
-      double farUpTo = -std::numeric_limits<double>::infinity();  // [unit] z up to which points are > tMax away
-      for (size_t k = 0; k < inside.size(); ++k) {
-        if (inside[k]) continue;
-        const Vec3 p = box.point(box.index(c, k));
-        if (p.z() <= farUpTo) continue;
-        const Vec3 q = query.closestPoint(p);
-        const double r = (p - q).norm();  // [unit]
-        if (r > tMax) {
-          farUpTo = p.z() + (r - tMax);
-          continue;
-        }
-        if (r < gap) continue;
-        const double t = options.thickness(q);
-        if (r > t) continue;
-        perColumn[c].points.push_back(p);
-        perColumn[c].depth.push_back(r);
-        perColumn[c].isOuter.push_back(r > t - d);
+  detail::forEachColumn(box, query, [&](size_t c, const std::vector<char>& inside) {
+    // [unit] z up to which points are > tMax away
+    double farUpTo = -std::numeric_limits<double>::infinity();
+    for (size_t k = 0; k < inside.size(); ++k) {
+      if (inside[k]) continue;
+      const Vec3 p = box.point(box.index(c, k));
+      if (p.z() <= farUpTo) continue;
+      const Vec3 q = query.closestPoint(p);
+      const double r = (p - q).norm();  // [unit]
+      if (r > tMax) {
+        farUpTo = p.z() + (r - tMax);
+        continue;
       }
+      if (r < gap) continue;
+      const double t = options.thickness(q);
+      if (r > t) continue;
+      perColumn[c].points.push_back(p);
+      perColumn[c].depth.push_back(r);
+      perColumn[c].isOuter.push_back(r > t - d);
     }
-  }
+  });
   ShellSamples out;
   for (const ShellSamples& column : perColumn) {
     out.points.insert(out.points.end(), column.points.begin(), column.points.end());

@@ -10,6 +10,7 @@
 #include "protocols/report/report_format.h"
 #include "protocols/scenario/plan_scenario.h"
 #include "sim/core/error.h"
+#include "tools/accuracy_option.h"
 #include "tools/commands.h"
 
 namespace tools {
@@ -50,12 +51,8 @@ int runPlan(Args args) {
   protocols::ScenarioOptions options;
   for (std::size_t k = 0; k < args.size(); ++k) {
     if (args[k] == "--accuracy" && k + 1 < args.size()) {
-      options.accuracy = protocols::accuracyPresetFromName(args[k + 1]);
-      if (!options.accuracy) {
-        std::fprintf(stderr, "tamponade plan: unknown accuracy '%s' (use draft, standard or fine)\n",
-                     std::string(args[k + 1]).c_str());
-        return 2;
-      }
+      options.accuracy = tools::parseAccuracyOption("plan", args[k + 1]);
+      if (!options.accuracy) return 2;
       ++k;
     } else if (!args[k].starts_with("-") && file.empty()) {
       file = std::string(args[k]);

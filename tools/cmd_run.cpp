@@ -20,6 +20,7 @@
 #include "protocols/scenario/progress_text.h"
 #include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/run_scenario.h"
+#include "tools/accuracy_option.h"
 #include "tools/commands.h"
 
 namespace tools {
@@ -84,12 +85,8 @@ int runRun(Args args) {
         return 2;
       }
     } else if (args[k] == "--accuracy" && hasValue) {
-      options.accuracy = protocols::accuracyPresetFromName(args[k + 1]);
-      if (!options.accuracy) {
-        std::fprintf(stderr, "tamponade run: unknown accuracy '%s' (use draft, standard or fine)\n",
-                     std::string(args[k + 1]).c_str());
-        return 2;
-      }
+      options.accuracy = tools::parseAccuracyOption("run", args[k + 1]);
+      if (!options.accuracy) return 2;
       ++k;
     } else if (!args[k].starts_with("-") && file.empty()) {
       file = std::string(args[k]);

@@ -5,27 +5,11 @@
 #include <cstring>
 
 #include "protocols/io/io_error.h"
+#include "protocols/io/xml_escape.h"
 
 namespace protocols {
 
 namespace {
-
-// XML attribute/text escaping for names that come from the field registry or the file system.
-std::string escapeXml(const std::string& text) {
-  std::string out;
-  out.reserve(text.size());
-  for (char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      case '\'': out += "&apos;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // Shortest text that reads back as the same double (%.17g round-trips every IEEE double).
 std::string exactNumber(double value) {

@@ -5,14 +5,14 @@
 #include <string>
 #include <string_view>
 
+#include "protocols/io/xml_escape.h"  // escapeXml, used with these by every report writer
+
 namespace protocols {
 
 // "83.3 %" (one decimal); the report prints every coverage fraction this way.
 std::string formatPercent(double fraction);
 // "%.*g"-style with `digits` significant digits, e.g. formatNumber(0.000812, 3) = "0.000812".
 std::string formatNumber(double value, int digits = 4);
-// Escapes & < > " ' for HTML/XML text and attribute values.
-std::string escapeXml(std::string_view text);
 // Escapes a string for a JSON string literal (without the quotes).
 std::string escapeJson(std::string_view text);
 

@@ -137,7 +137,7 @@ bool decode(const std::string& raw, std::string& out) {
     else if (entity == "gt") out += '>';
     else if (entity == "quot") out += '"';
     else if (entity == "apos") out += '\'';
-    else if (entity.size() > 1 && entity[0] == '#') out += '?';
+    else if (entity.size() > 1 && entity[0] == '#') out += static_cast<char>(std::stoi(entity.substr(1)));
     else return false;
     i = end;
   }
