@@ -375,18 +375,22 @@ std::vector<std::string> tissueReportLines(const Scenario& s, const TissueMeasur
   const bool anyElastic =
       std::any_of(s.tissues.begin(), s.tissues.end(), [](const TissueBody& t) { return t.decision.elastic; });
   if (!anyElastic) {
+    // Each tissue with why it is rigid: below the threshold, forced, or behind a rigid sclera.
     std::ostringstream line;
     line << "tissue rigid (";
     for (std::size_t k = 0; k < s.tissues.size(); ++k) {
       const TissueBody& t = s.tissues[k];
+      const double ratio = t.estimatedDisplacement / d;  // [1]
       line << (k ? "; " : "") << t.name << " estimate " << mm(t.estimatedDisplacement) << " = "
-           << formatNumber(t.estimatedDisplacement / d, 3) << " d"
-           << (t.decision.forced ? ", forced rigid" : "");
+           << formatNumber(ratio, 3) << " d";
+      if (t.decision.forced)
+        line << ", forced rigid";
+      else if (ratio < sim::kElasticDisplacementFraction)
+        line << " < " << formatNumber(sim::kElasticDisplacementFraction, 2) << " d";
+      else
+        line << ", behind the rigid sclera";
     }
-    line << (std::any_of(s.tissues.begin(), s.tissues.end(),
-                         [](const TissueBody& t) { return t.decision.forced; })
-                 ? ")"
-                 : " < " + formatNumber(sim::kElasticDisplacementFraction, 2) + " d)");
+    line << ")";
     return {line.str()};
   }
   const std::string at = " at t = " + formatNumber(lastTime, 4) + " s";

@@ -74,7 +74,8 @@ TEST_CASE("tissue: the physiological sclera is rigid by the rule and changes not
   const std::vector<std::string> lines = tissueReportLines(s, {}, 0.0);
   REQUIRE(lines.size() == 1);
   CHECK(lines[0].rfind("tissue rigid (sclera estimate ", 0) == 0);
-  CHECK(lines[0].find("< 0.1 d)") != std::string::npos);
+  CHECK(lines[0].find(" d < 0.1 d; orbital fat estimate ") != std::string::npos);
+  CHECK(lines[0].find(" d, behind the rigid sclera)") != std::string::npos);
 }
 
 TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elastic particles",
