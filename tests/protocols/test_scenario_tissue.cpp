@@ -282,20 +282,20 @@ TEST_CASE("tissue: bad input is reported at its place with exit code 2", "[unit]
   const fs::path mesh = fs::path(TAMPONADE_SOURCE_DIR) / "data" / "meshes" / "emmetropic_al23.58mm.stl";
   const std::vector<Case> cases = {
       {"zero modulus", paperWith("youngs_modulus = \"10 kPa\"", "youngs_modulus = \"0 kPa\""), "validate",
-       "eye.sclera.youngs_modulus", ":24:18"},
+       "eye.sclera.youngs_modulus", ":25:18"},
       {"negative modulus", paperWith("youngs_modulus = \"1 kPa\"", "youngs_modulus = \"-1 kPa\""), "validate",
-       "eye.orbital_fat.youngs_modulus", ":30:18"},
+       "eye.orbital_fat.youngs_modulus", ":31:18"},
       {"poisson 0.5", paperWith("mode = \"elastic\"\nanchoring = \"outer", "poisson_ratio = 0.5\nmode = \"elastic\"\nanchoring = \"outer"),
-       "validate", "eye.sclera.poisson_ratio", ":25:17"},
+       "validate", "eye.sclera.poisson_ratio", ":26:17"},
       {"poisson negative", paperWith("mode = \"elastic\"\nanchoring = \"back", "poisson_ratio = -0.1\nmode = \"elastic\"\nanchoring = \"back"),
-       "validate", "eye.orbital_fat.poisson_ratio", ":31:17"},
+       "validate", "eye.orbital_fat.poisson_ratio", ":32:17"},
       {"sclera thicker than the anatomy allows", paperWith("mode = \"elastic\"\nanchoring = \"outer", "thickness = \"2 mm\"\nmode = \"elastic\"\nanchoring = \"outer"),
-       "plan", "sclera thickness", ":25:13"},
+       "plan", "sclera thickness", ":26:13"},
       {"forced elastic sclera on an imported mesh",
        paperWith("kind = \"staphyloma\"          # the paper's MRI eye is myopic with an irregular posterior wall\n"
                  "side = \"OD\"\naxial_length = \"26 mm\"\nstaphyloma_depth = \"1.5 mm\"\nstaphyloma_width = \"8 mm\"",
                  "kind = \"mesh\"\nside = \"OD\"\nmesh = \"" + mesh.string() + "\"\nmesh_units = \"mm\""),
-       "plan", "mode = \"elastic\" for the sclera, but an imported mesh cavity has no anatomy", ":24:8"},
+       "plan", "mode = \"elastic\" for the sclera, but an imported mesh cavity has no anatomy", ":25:8"},
   };
   for (const Case& c : cases) {
     const fs::path file = dir / "bad.toml";
