@@ -150,6 +150,12 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
       out.offsets[i + 1] = static_cast<Index>(m - first);
     }
     buf.count = m;
+    // Hysteresis: when less than 1/16 headroom is left, grow to 1.5x this build's size, so that
+    // lists that drift from step to step (a fluid settling, a splash) reuse the buffers instead
+    // of reallocating at every small growth.
+    if (buf.indices.capacity() < m + m / 16 + 1024) buf.indices.reserve(m + m / 2 + 1024);
+    if (kernel && buf.gradients.capacity() < m + m / 16 + 1024)
+      buf.gradients.reserve(m + m / 2 + 1024);
 #pragma omp barrier
 #pragma omp single
     {
