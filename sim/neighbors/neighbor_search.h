@@ -11,8 +11,9 @@
 // into place. The result does not depend on the thread count (each point's neighbours come in
 // stencil order, inside a cell in index order). Static wall particles are binned once. Dynamic
 // particle data are periodically reordered by the Z-order (Morton) index of their cell
-// (zOrder()), which keeps neighbours close in memory. Buffers only grow (with 25 % headroom), so
-// a running simulation does not allocate.
+// (zOrder()), which keeps neighbours close in memory. Buffers only grow (per-thread
+// buffers to 1.5x when less than 1/16 headroom is left, lists by 25 %), so a running simulation
+// whose pair count drifts slowly does not allocate. Memory: about 2.5x the lists themselves.
 #pragma once
 
 #include <cstdint>
