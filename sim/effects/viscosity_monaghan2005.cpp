@@ -19,26 +19,38 @@ Real ViscosityMonaghan2005::maxTimeStep(const World& world) const {
   return kStableStepFactor * d * d / nuMax;
 }
 
-void ViscosityMonaghan2005::apply(World& world, const StepContext&) {
+void ViscosityMonaghan2005::apply(World& world, const StepContext& context) {
+  if (smoothing_ > 0)
+    applyImpl<true>(world, context);
+  else
+    applyImpl<false>(world, context);
+}
+
+template <bool kSmoothing>
+void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) {
   auto& p = world.particles;
   const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
   const auto& gradF = world.fluidGradients();
   const auto& gradB = world.wallGradients();
+  const Kernel& kernel = world.kernel;
   const Real h2 = 0.01 * world.supportRadius() * world.supportRadius();
   constexpr Real kFactor = 2.0 * (3 + 2);  // 2(d+2), d = 3
+  const Real smoothingScale = kSmoothing ? smoothing_ / context.dt : 0.0;  // XSPH eps/dt [1/s]
   const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
     Vec3 a = Vec3::Zero();
+    Vec3 smooth = Vec3::Zero();
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
       const Index j = nf.indices[k];
+      const Vec3 xij = p.x[i] - p.x[j];
+      if constexpr (kSmoothing) smooth += XsphMonaghan1989::pairTerm(p, kernel, i, j, xij);
       const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
       const Real mu = 0.5 * (mui + muj);
       if (mu == 0) continue;
-      const Vec3 xij = p.x[i] - p.x[j];
       const Real vx = (p.v[i] - p.v[j]).dot(xij);
       a += (p.mass[j] * mu / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
            gradF[k];
@@ -52,6 +64,7 @@ void ViscosityMonaghan2005::apply(World& world, const StepContext&) {
       }
     }
     p.a[i] += kFactor * a;
+    if constexpr (kSmoothing) p.a[i] += smoothingScale * smooth;
   }
 }
 

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "sim/effects/effect.h"
+#include "sim/effects/xsph_monaghan1989.h"
 
 namespace sim {
 
@@ -24,9 +25,21 @@ class ViscosityMonaghan2005 final : public Effect {
   void attach(World& world) override;
   void apply(World& world, const StepContext& context) override;
   Real maxTimeStep(const World& world) const override;
+  // Computes XSPH velocity smoothing (Monaghan 1989) in this stage's neighbour loop, one pass
+  // over the pairs instead of two, and switches the separate stage off. Only valid when `xsph`
+  // is the next explicit stage (Pipeline::attach checks): the two accelerations are then added
+  // in the same order as by the two stages, so the result is bit-identical.
+  void absorbSmoothing(XsphMonaghan1989& xsph) {
+    smoothing_ = xsph.strength();
+    xsph.setFused(true);
+  }
 
  private:
+  template <bool kSmoothing>
+  void applyImpl(World& world, const StepContext& context);
+
   bool wallFriction_;
+  Real smoothing_ = 0;  // [1] XSPH eps computed here (0: none)
   std::vector<Real> viscosityOfMaterial_;  // [Pa s]
 };
 

@@ -18,7 +18,14 @@ class XsphMonaghan1989 final : public Effect {
     require(strength >= 0 && strength <= 0.5, "XSPH strength must be in [0, 0.5]");
   }
   std::string_view name() const override { return "velocity_smoothing"; }
+  Real strength() const { return strength_; }
+  // Set by Pipeline::attach when the explicit viscosity stage directly before this one computes
+  // the smoothing in its own neighbour loop (ViscosityMonaghan2005::absorbSmoothing); apply() then
+  // does nothing.
+  void setFused(bool fused) { fused_ = fused; }
+  bool fused() const { return fused_; }
   void apply(World& world, const StepContext& context) override {
+    if (fused_) return;
     auto& p = world.particles;
     const NeighborList& nf = world.fluidNeighbors();
     const Kernel& kernel = world.kernel;
@@ -28,14 +35,19 @@ class XsphMonaghan1989 final : public Effect {
     for (Index i = 0; i < n; ++i) {
       Vec3 a = Vec3::Zero();
       for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-        a += (2.0 * p.mass[*j] / (p.density[i] + p.density[*j]) * kernel.W(p.x[i] - p.x[*j])) *
-             (p.v[*j] - p.v[i]);
+        a += pairTerm(p, kernel, i, *j, p.x[i] - p.x[*j]);
       p.a[i] += scale * a;
     }
+  }
+  // One pair's term of the sum (before the factor eps/dt); xij = x_i - x_j.
+  static Vec3 pairTerm(const DynamicParticles& p, const Kernel& kernel, Index i, Index j,
+                       const Vec3& xij) {
+    return (2.0 * p.mass[j] / (p.density[i] + p.density[j]) * kernel.W(xij)) * (p.v[j] - p.v[i]);
   }
 
  private:
   Real strength_;  // [1] eps
+  bool fused_ = false;
 };
 
 }  // namespace sim

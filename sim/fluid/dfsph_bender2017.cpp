@@ -32,13 +32,19 @@ void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real
   const auto& gradB = world.wallGradients();
   const auto& rho = p.density;
   const Index n = static_cast<Index>(p.size());
+  // k_j / rho_j once per particle instead of once per pair (a division per pair saved; the same
+  // quotient, so bit-identical).
+  auto& scaled = kappaOverRho_;
+  scaled.resize(n);
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) scaled[i] = kappa[i] / rho[i];
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    const Real ki = kappa[i] / rho[i];
+    const Real ki = scaled[i];
     Vec3 dv = Vec3::Zero();
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
       const Index j = nf.indices[k];
-      dv += p.mass[j] * (ki + kappa[j] / rho[j]) * gradF[k];
+      dv += p.mass[j] * (ki + scaled[j]) * gradF[k];
     }
     if (ki != 0.0) {
       Vec3 g = Vec3::Zero();
@@ -113,7 +119,16 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   predicted_.resize(n);
   kappa_.resize(n);
 
-  // Stiffness factor alpha_i (derivation in docs/solvers.md).
+  stats_.divergenceIterations = 0;
+  const Real dt = context.dt;
+  const bool divergence = params_.divergenceSolve && dt > 0;
+  // kappaDivergence_ holds last step's accumulated stiffness (a pressure per density, m^2/s^2),
+  // not stiffness * dt: the pressure is what persists from step to step when dt changes.
+  auto& warm = *kappaDivergence_;
+
+  // Stiffness factor alpha_i (derivation in docs/solvers.md). The same pass also computes the
+  // divergence solve's first density rate and warm start (below), which only need this
+  // particle's own values: one sweep over the pairs instead of two (bit-identical).
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Vec3 g = Vec3::Zero();
@@ -133,25 +148,19 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
     const Real h = kernel.supportRadius();
     const Real typical = p.density[i] * p.density[i] / (h * h);
     (*factor_)[i] = denominator > 1e-6 * typical ? p.density[i] / denominator : 0.0;
-  }
-
-  stats_.divergenceIterations = 0;
-  const Real dt = context.dt;
-  if (!params_.divergenceSolve || dt <= 0) return;
-
-  // Divergence-free solve (Bender 2017, Algorithm 2): makes Drho/Dt = 0 for the current velocities.
-  // Warm start only where the fluid is still compressing: re-applying last step's pressure to a
-  // particle that is now expanding would push it apart further and inject energy (the same
-  // condition SPlisHSPlasH applies).
-  // kappaDivergence_ holds last step's accumulated stiffness (a pressure per density, m^2/s^2),
-  // not stiffness * dt: the pressure is what persists from step to step when dt changes.
-  auto& warm = *kappaDivergence_;
-  computeDensityRate(world);
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
+    if (!divergence) continue;
+    // Warm start only where the fluid is still compressing: re-applying last step's pressure to
+    // a particle that is now expanding would push it apart further and inject energy (the same
+    // condition SPlisHSPlasH applies). Same values as computeDensityRate().
+    predicted_[i] = neighborCount(world, i) < params_.minNeighborsForDivergence
+                        ? 0.0
+                        : std::max(densityRate(world, i), Real(0));
     kappa_[i] = predicted_[i] > 0 ? params_.warmStartFactor * warm[i] : 0.0;
     warm[i] = kappa_[i];
   }
+  if (!divergence) return;
+
+  // Divergence-free solve (Bender 2017, Algorithm 2): makes Drho/Dt = 0 for the current velocities.
   if (params_.warmStartFactor > 0) applyPressureVelocity(world, kappa_, dt);
   Real error = computeDensityRate(world) * dt;
   int iteration = 0;

@@ -60,6 +60,7 @@ class DfsphBender2017 final : public PressureSolver {
   std::vector<Real> predicted_;               // rho* or Drho/Dt per particle (scratch)
   std::vector<Real> kappa_;                   // this iteration's k_i (scratch)
   std::vector<Real> densityWarmStart_;        // [m^2/s^2] last accepted step's kappa (scratch)
+  std::vector<Real> kappaOverRho_;            // [m^5/(kg s^2)] k_i / rho_i (scratch)
   Real divergenceDt_ = 0;                     // [s] dt the divergence solve used this step
   DeterministicReducer reducer_;
 };

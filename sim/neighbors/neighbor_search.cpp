@@ -1,5 +1,7 @@
 #include "sim/neighbors/neighbor_search.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -63,71 +65,146 @@ void NeighborSearch::bin(const std::vector<Vec3>& x, CellBins& bins, bool dynami
   std::partial_sum(bins.cellStart.begin(), bins.cellStart.end(), bins.cellStart.begin());
   bins.sorted.resize(n);
   counts_.assign(bins.cellStart.begin(), bins.cellStart.end() - 1);
-  for (std::size_t i = 0; i < n; ++i)
-    bins.sorted[counts_[static_cast<std::size_t>(bins.cellOf[i])]++] = static_cast<Index>(i);
+  bins.sortedX.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const Index k = counts_[static_cast<std::size_t>(bins.cellOf[i])]++;
+    bins.sorted[k] = static_cast<Index>(i);
+    bins.sortedX[k] = x[i];
+  }
 }
 
+namespace {
+
+// Grows `v` to at least `n` elements with 25 % headroom, so that a list whose size drifts from
+// step to step stops reallocating after the first few steps.
+template <class T>
+void growTo(std::vector<T>& v, std::size_t n) {
+  if (v.size() >= n) return;
+  if (v.capacity() < n) v.reserve(n + n / 4);
+  v.resize(n);
+}
+
+}  // namespace
+
 void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbins,
-                               const std::vector<Vec3>& px, const CellBins& pbins, bool skipSelf,
-                               NeighborList& out) {
+                               const CellBins& pbins, bool skipSelf, const Kernel* kernel,
+                               NeighborList& out, std::vector<Vec3>& grad) {
   const std::size_t n = qx.size();
   const Real r2 = radius_ * radius_;
   out.offsets.resize(n + 1);
   out.offsets[0] = 0;
-  const std::int64_t dx = 1, dy = dims_.x(), dz = static_cast<std::int64_t>(dims_.x()) * dims_.y();
+  const std::int64_t dy = dims_.x(), dz = static_cast<std::int64_t>(dims_.x()) * dims_.y();
+  const int maxThreads = omp_get_max_threads();
+  if (static_cast<int>(threadBuffers_.size()) < maxThreads)
+    threadBuffers_.resize(static_cast<std::size_t>(maxThreads));
+  const Index* sorted = pbins.sorted.data();
+  const Vec3* sortedX = pbins.sortedX.data();
+  const Index* cellStart = pbins.cellStart.data();
 
-  // Visits the candidate points of the 27 cells around query i in a fixed order.
-  auto forCandidates = [&](std::size_t i, auto&& visit) {
-    const std::int64_t c = qbins.cellOf[i];
-    const std::int64_t cz = c / dz, cy = (c % dz) / dy, cx = c % dy;
-    for (int oz = -1; oz <= 1; ++oz) {
-      if (cz + oz < 0 || cz + oz >= dims_.z()) continue;
-      for (int oy = -1; oy <= 1; ++oy) {
-        if (cy + oy < 0 || cy + oy >= dims_.y()) continue;
-        // The three cells along x are contiguous in the linear index: one range.
-        const std::int64_t lo = std::max<std::int64_t>(cx - 1, 0);
-        const std::int64_t hi = std::min<std::int64_t>(cx + 1, dims_.x() - 1);
-        const std::int64_t base = (cz + oz) * dz + (cy + oy) * dy;
-        const Index b = pbins.cellStart[static_cast<std::size_t>(base + lo * dx)];
-        const Index e = pbins.cellStart[static_cast<std::size_t>(base + hi * dx) + 1];
-        for (Index k = b; k < e; ++k) {
-          const Index j = pbins.sorted[k];
-          if (skipSelf && j == i) continue;
-          if ((qx[i] - px[j]).squaredNorm() < r2) visit(j);
+#pragma omp parallel
+  {
+    const std::size_t threads = static_cast<std::size_t>(omp_get_num_threads());
+    const std::size_t t = static_cast<std::size_t>(omp_get_thread_num());
+    ThreadBuffer& buf = threadBuffers_[t];
+    // A contiguous block of query points per thread (as schedule(static)).
+    const std::size_t lo = n * t / threads, hi = n * (t + 1) / threads;
+    std::size_t m = 0;
+    for (std::size_t i = lo; i < hi; ++i) {
+      const std::int64_t c = qbins.cellOf[i];
+      const std::int64_t cz = c / dz, cy = (c % dz) / dy, cx = c % dy;
+      const std::int64_t xlo = std::max<std::int64_t>(cx - 1, 0);
+      const std::int64_t xhi = std::min<std::int64_t>(cx + 1, dims_.x() - 1);
+      const std::int64_t zlo = std::max<std::int64_t>(cz - 1, 0);
+      const std::int64_t zhi = std::min<std::int64_t>(cz + 1, dims_.z() - 1);
+      const std::int64_t ylo = std::max<std::int64_t>(cy - 1, 0);
+      const std::int64_t yhi = std::min<std::int64_t>(cy + 1, dims_.y() - 1);
+      // Room for every candidate, so that the scan can store each one and advance only on a hit
+      // (no unpredictable branch per candidate).
+      std::size_t candidates = 0;
+      for (std::int64_t z = zlo; z <= zhi; ++z)
+        for (std::int64_t y = ylo; y <= yhi; ++y) {
+          const std::int64_t base = z * dz + y * dy;
+          candidates += cellStart[base + xhi + 1] - cellStart[base + xlo];
         }
+      growTo(buf.indices, m + candidates);
+      Index* slot = buf.indices.data();
+      const Vec3 xi = qx[i];
+      const Index self = skipSelf ? static_cast<Index>(i) : ~Index{0};
+      const std::size_t first = m;
+      // Stencil order: z, then y, then the three x-adjacent cells, one contiguous range.
+      for (std::int64_t z = zlo; z <= zhi; ++z)
+        for (std::int64_t y = ylo; y <= yhi; ++y) {
+          const std::int64_t base = z * dz + y * dy;
+          const Index b = cellStart[base + xlo], e = cellStart[base + xhi + 1];
+          for (Index k = b; k < e; ++k) {
+            slot[m] = k;  // sorted slot for now; replaced by the point index below
+            m += static_cast<std::size_t>((xi - sortedX[k]).squaredNorm() < r2) &
+                 static_cast<std::size_t>(sorted[k] != self);
+          }
+        }
+      if (kernel) {
+        growTo(buf.gradients, m);
+        for (std::size_t a = first; a < m; ++a) buf.gradients[a] = kernel->gradW(xi - sortedX[slot[a]]);
       }
+      for (std::size_t a = first; a < m; ++a) slot[a] = sorted[slot[a]];
+      out.offsets[i + 1] = static_cast<Index>(m - first);
     }
-  };
-
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    Index count = 0;
-    forCandidates(i, [&](Index) { ++count; });
-    out.offsets[i + 1] = count;
-  }
-  for (std::size_t i = 0; i < n; ++i) out.offsets[i + 1] += out.offsets[i];
-  out.indices.resize(out.offsets[n]);
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    Index k = out.offsets[i];
-    forCandidates(i, [&](Index j) { out.indices[k++] = j; });
+    buf.count = m;
+    // Hysteresis: when less than 1/16 headroom is left, grow to 1.5x this build's size, so that
+    // lists that drift from step to step (a fluid settling, a splash) reuse the buffers instead
+    // of reallocating at every small growth.
+    if (buf.indices.capacity() < m + m / 16 + 1024) buf.indices.reserve(m + m / 2 + 1024);
+    if (kernel && buf.gradients.capacity() < m + m / 16 + 1024)
+      buf.gradients.reserve(m + m / 2 + 1024);
+#pragma omp barrier
+#pragma omp single
+    {
+      std::size_t total = 0;
+      for (std::size_t k = 0; k < threads; ++k) {
+        threadBuffers_[k].offset = total;
+        total += threadBuffers_[k].count;
+      }
+      growTo(out.indices, total);
+      out.indices.resize(total);
+      if (kernel) {
+        growTo(grad, total);
+        grad.resize(total);
+      }
+    }  // implicit barrier
+    Index running = static_cast<Index>(buf.offset);
+    for (std::size_t i = lo; i < hi; ++i) {
+      running += out.offsets[i + 1];
+      out.offsets[i + 1] = running;
+    }
+    std::copy(buf.indices.begin(), buf.indices.begin() + static_cast<std::ptrdiff_t>(m),
+              out.indices.begin() + static_cast<std::ptrdiff_t>(buf.offset));
+    if (kernel)
+      std::copy(buf.gradients.begin(), buf.gradients.begin() + static_cast<std::ptrdiff_t>(m),
+                grad.begin() + static_cast<std::ptrdiff_t>(buf.offset));
   }
 }
 
 void NeighborSearch::setStatic(const std::vector<Vec3>& staticX) {
   staticX_ = staticX;
   bin(staticX_, staticBins_, false);
-  buildList(staticX_, staticBins_, staticX_, staticBins_, true, ss_);
+  buildList(staticX_, staticBins_, staticBins_, true, nullptr, ss_, noGrad_);
 }
 
-void NeighborSearch::update(const std::vector<Vec3>& dynamicX) {
+void NeighborSearch::update(const std::vector<Vec3>& dynamicX) { updateImpl(dynamicX, nullptr); }
+
+void NeighborSearch::update(const std::vector<Vec3>& dynamicX, const Kernel& kernel) {
+  updateImpl(dynamicX, &kernel);
+}
+
+void NeighborSearch::updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel) {
   bin(dynamicX, dynamicBins_, true);
-  buildList(dynamicX, dynamicBins_, dynamicX, dynamicBins_, true, dd_);
+  buildList(dynamicX, dynamicBins_, dynamicBins_, true, kernel, dd_, ddGrad_);
   if (staticX_.empty()) {
     ds_.offsets.assign(dynamicX.size() + 1, 0);
     ds_.indices.clear();
+    dsGrad_.clear();
   } else {
-    buildList(dynamicX, dynamicBins_, staticX_, staticBins_, false, ds_);
+    buildList(dynamicX, dynamicBins_, staticBins_, false, kernel, ds_, dsGrad_);
   }
 }
 
@@ -143,8 +220,10 @@ void NeighborSearch::zOrder(const std::vector<Vec3>& x, std::vector<Index>& newT
   }
   newToOld.resize(n);
   std::iota(newToOld.begin(), newToOld.end(), Index{0});
-  std::stable_sort(newToOld.begin(), newToOld.end(),
-                   [&](Index a, Index b) { return code[a] < code[b]; });
+  // Ties broken by index: the same order as a stable sort, without its temporary buffer (an
+  // allocation every zSortInterval steps).
+  std::sort(newToOld.begin(), newToOld.end(),
+            [&](Index a, Index b) { return code[a] < code[b] || (code[a] == code[b] && a < b); });
 }
 
 }  // namespace sim

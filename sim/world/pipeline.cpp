@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sim/core/reduction.h"
+#include "sim/effects/viscosity_monaghan2005.h"
 
 namespace sim {
 namespace {
@@ -39,6 +40,10 @@ void Pipeline::attach(World& world) {
   require(world.initialized(), "World::initialize() must run before Pipeline::attach()");
   solver_->attach(world);
   for (auto& e : effects_) e->attach(world);
+  // XSPH directly after the explicit viscosity runs inside its neighbour loop (bit-identical).
+  for (std::size_t k = 0; k + 1 < effects_.size(); ++k)
+    if (auto* v = dynamic_cast<ViscosityMonaghan2005*>(effects_[k].get()))
+      if (auto* x = dynamic_cast<XsphMonaghan1989*>(effects_[k + 1].get())) v->absorbSmoothing(*x);
   attached_ = true;
 }
 

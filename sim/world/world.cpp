@@ -73,23 +73,8 @@ void World::updateNeighbors() {
     particles.fields.permute(permutation_);
     updatesSinceSort_ = 0;
   }
-  search_->update(particles.x);
-  computeKernelGradients();
-}
-
-void World::computeKernelGradients() {
-  const NeighborList& nf = search_->dynamicDynamic();
-  const NeighborList& nw = search_->dynamicStatic();
-  fluidGradW_.resize(nf.indices.size());
-  wallGradW_.resize(nw.indices.size());
-  const Index n = static_cast<Index>(particles.size());
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
-      fluidGradW_[k] = kernel.gradW(particles.x[i] - particles.x[nf.indices[k]]);
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
-      wallGradW_[k] = kernel.gradW(particles.x[i] - walls.x[nw.indices[k]]);
-  }
+  // The lists and the per-pair kernel gradients come from one pass (NeighborSearch::update).
+  search_->update(particles.x, kernel);
 }
 
 }  // namespace sim

@@ -66,18 +66,16 @@ class World {
   // Kernel gradients gradW(x_i - x_j) aligned with the neighbour lists: entry k belongs to the
   // pair (i, indices[k]). Computed once per neighbour update, they save the iterative solvers a
   // square root and a division per pair and iteration (positions do not change during a solve).
-  const std::vector<Vec3>& fluidGradients() const { return fluidGradW_; }
-  const std::vector<Vec3>& wallGradients() const { return wallGradW_; }
+  const std::vector<Vec3>& fluidGradients() const { return search_->dynamicDynamicGradients(); }
+  const std::vector<Vec3>& wallGradients() const { return search_->dynamicStaticGradients(); }
   const NeighborSearch& search() const { return *search_; }
 
  private:
   void computeWallVolumes();
-  void computeKernelGradients();
 
   WorldParameters parameters_;
   std::unique_ptr<NeighborSearch> search_;
   std::vector<Index> permutation_;
-  std::vector<Vec3> fluidGradW_, wallGradW_;  // [1/m^4]
   long updatesSinceSort_ = 0;
   bool initialized_ = false;
 };
