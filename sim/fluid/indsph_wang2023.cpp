@@ -72,12 +72,8 @@ void IndsphWang2023::prepareStaticWalls(const World& world) {
       t.pair[slot] = k;
     }
   t.walls.clear();
-  for (Index b = 0; b < nb; ++b)
-    if (t.offsets[b + 1] > t.offsets[b]) t.walls.push_back(b);
-  const Index active = static_cast<Index>(t.walls.size());
 #pragma omp parallel for schedule(static)
-  for (Index a = 0; a < active; ++a) {
-    const Index b = t.walls[a];
+  for (Index b = 0; b < nb; ++b) {
     Real delta = 0, diagonal = 0;
     for (Index s = t.offsets[b]; s < t.offsets[b + 1]; ++s) {
       const Index j = t.dynamic[s];
@@ -86,8 +82,11 @@ void IndsphWang2023::prepareStaticWalls(const World& world) {
       diagonal += c * c * gradB[t.pair[s]].squaredNorm() / p.mass[j];
     }
     wallDensity_[b] = wallStaticDensity_[b] + delta;
-    wallDiagonal_[b] = diagonal;
+    // Small-diagonal guard (IndsphParameters::minWallDynamicFraction): not an unknown.
+    wallDiagonal_[b] = delta >= params_.minWallDynamicFraction * wallDensity_[b] ? diagonal : 0.0;
   }
+  for (Index b = 0; b < nb; ++b)
+    if (wallDiagonal_[b] > 0) t.walls.push_back(b);
 }
 
 Real IndsphWang2023::predictWallNumberDensity(const World& world, Real dt) {
