@@ -265,9 +265,9 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
   std::vector<Real>* wallStep = staticWalls_ ? &wallIncrement_ : nullptr;
   // Mean compression over every unknown: fluid particles and active static wall particles.
   auto predictAll = [&] {
-    const Real fluid = predictNumberDensity(world, dt) * n;
-    const Real wall = staticWalls_ ? predictWallNumberDensity(world, dt) : 0.0;
-    return (fluid + wall) / (n + active);
+    const Real fluid = predictNumberDensity(world, dt);
+    if (!staticWalls_) return fluid;  // single-layer walls: unchanged (bit-identical) path
+    return (fluid * n + predictWallNumberDensity(world, dt)) / (n + active);
   };
 
   predictNumberDensity(world, dt);
