@@ -268,28 +268,30 @@ TEST_CASE("INDSPH with layered walls: 1:75 two-phase dam break stays out of the 
   // the whole column height.
   const Real energyBound = heavyMass * 9.81 * 0.03;
   Real maxKinetic = 0, worstCompression = 0, worstWall = 0;
-  bool finite = true, inside = true;
-  auto insideTank = [&] {
-    for (const Vec3& x : w.particles.x)
-      if ((x.array() < spec.innerMin.array()).any() || (x.array() > spec.innerMax.array()).any())
-        return false;
-    return true;
-  };
-  while (w.time < 1.0 && finite && inside) {
+  Real deepest = -1;  // [d] furthest any particle got beyond an inner face (negative: inside)
+  bool finite = true;
+  while (w.time < 1.0 && finite) {
     pipeline.step(w);
     finite = allFinite(w);
-    inside = insideTank();
+    for (const Vec3& x : w.particles.x)
+      deepest = std::max({deepest, (spec.innerMin - x).maxCoeff() / d, (x - spec.innerMax).maxCoeff() / d});
     maxKinetic = std::max(maxKinetic, kineticEnergy(w));
     worstCompression = std::max(worstCompression, pipeline.solver().stats().maxCompression);
     const auto& pb = w.walls.fields.get<Real>("wall_pressure");
     for (Real p : pb) worstWall = std::max(worstWall, p);
   }
   std::printf("layered 1:%g dam break: t %.3f s, KE max %.3g J (bound %.3g), max compression "
-              "%.2e, largest wall pressure %.0f Pa, %ld rejected steps\n",
-              ratio, w.time, maxKinetic, energyBound, worstCompression, worstWall,
+              "%.2e, deepest %.3f d beyond a face, largest wall pressure %.0f Pa, %ld rejected "
+              "steps\n",
+              ratio, w.time, maxKinetic, energyBound, worstCompression, deepest, worstWall,
               pipeline.rejectedSteps());
   CHECK(finite);
-  CHECK(inside);  // no particle ever inside the wall slab (beyond the inner faces)
+  // No particle in the wall slab. The fluid rests d/2 from a face, a particle that got between the
+  // wall particles (the "permeable lattice" failure) sits at or beyond their centre plane d/2
+  // past the face. An impact may press the first fluid row a little past the face before the wall
+  // pressure stops it (compression <= 5 % below means overlaps of ~2 % of d); d/4, halfway to the
+  // surface layer's centres, separates the two.
+  CHECK(deepest < 0.25);
   CHECK(maxKinetic < energyBound);
   // As in the single-layer test: 5 % is where the linearised prediction stops being valid.
   CHECK(worstCompression < 0.05);
