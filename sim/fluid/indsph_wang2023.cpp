@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "sim/boundary/wall_layers.h"
 #include "sim/fluid/density.h"
 
 namespace sim {
@@ -24,6 +25,91 @@ void IndsphWang2023::attach(World& world) {
   numberDensity_ = &f.addOrGet<Real>({"number_density", "1/m^3", false, true});
   pressure_ = &f.addOrGet<Real>({"pressure", "Pa", false, true});
   kappa_ = &f.addOrGet<Real>({"indsph_kappa", "Pa m^3", true, false});
+  staticWalls_ = hasLayeredWalls(world.walls);
+  if (!staticWalls_) return;
+  auto& wf = world.walls.fields;
+  wallKappa_ = &wf.addOrGet<Real>({"indsph_wall_kappa", "Pa m^3", true, false});
+  wallPressure_ = &wf.addOrGet<Real>({"wall_pressure", "Pa", false, true});
+  // The wall-wall part of delta_b never changes (walls do not move): computed once.
+  const auto& walls = world.walls;
+  const NeighborList& ss = world.search().staticStatic();
+  const Index nb = static_cast<Index>(walls.size());
+  wallStaticDensity_.assign(nb, 0.0);
+  const Real w0 = world.kernel.W0();
+#pragma omp parallel for schedule(static)
+  for (Index b = 0; b < nb; ++b) {
+    Real sum = walls.volume[b] * w0;
+    for (const Index* c = ss.begin(b); c != ss.end(b); ++c)
+      sum += walls.volume[*c] * world.kernel.W(walls.x[b] - walls.x[*c]);
+    wallStaticDensity_[b] = sum / walls.volume[b];
+  }
+  wallDensity_.assign(nb, 0.0);
+  wallDiagonal_.assign(nb, 0.0);
+  wallPredicted_.assign(nb, 0.0);
+  wallIncrement_.assign(nb, 0.0);
+}
+
+void IndsphWang2023::prepareStaticWalls(const World& world) {
+  const auto& walls = world.walls;
+  const auto& p = world.particles;
+  const NeighborList& nw = world.wallNeighbors();
+  const auto& gradB = world.wallGradients();
+  const Index nb = static_cast<Index>(walls.size());
+  const Index n = static_cast<Index>(p.size());
+  // Transpose of the dynamic -> wall lists, filled in dynamic-index order (deterministic).
+  auto& t = wallPairs_;
+  t.offsets.assign(nb + 1, 0);
+  for (Index k = 0; k < static_cast<Index>(nw.indices.size()); ++k) ++t.offsets[nw.indices[k] + 1];
+  for (Index b = 0; b < nb; ++b) t.offsets[b + 1] += t.offsets[b];
+  t.dynamic.resize(nw.indices.size());
+  t.pair.resize(nw.indices.size());
+  std::vector<Index>& cursor = t.walls;  // reused as the fill cursor, then as the active list
+  cursor.assign(t.offsets.begin(), t.offsets.end() - 1);
+  for (Index i = 0; i < n; ++i)
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
+      const Index slot = cursor[nw.indices[k]]++;
+      t.dynamic[slot] = i;
+      t.pair[slot] = k;
+    }
+  t.walls.clear();
+#pragma omp parallel for schedule(static)
+  for (Index b = 0; b < nb; ++b) {
+    Real delta = 0, diagonal = 0;
+    for (Index s = t.offsets[b]; s < t.offsets[b + 1]; ++s) {
+      const Index j = t.dynamic[s];
+      const Real c = world.restVolumeOf(j) / walls.volume[b];  // V0_j / V_b
+      delta += c * world.kernel.W(p.x[j] - walls.x[b]);
+      diagonal += c * c * gradB[t.pair[s]].squaredNorm() / p.mass[j];
+    }
+    wallDensity_[b] = wallStaticDensity_[b] + delta;
+    // Small-diagonal guard (IndsphParameters::minWallDynamicFraction): not an unknown.
+    wallDiagonal_[b] = delta >= params_.minWallDynamicFraction * wallDensity_[b] ? diagonal : 0.0;
+  }
+  for (Index b = 0; b < nb; ++b)
+    if (wallDiagonal_[b] > 0) t.walls.push_back(b);
+}
+
+Real IndsphWang2023::predictWallNumberDensity(const World& world, Real dt) {
+  const auto& walls = world.walls;
+  const auto& p = world.particles;
+  const auto& gradB = world.wallGradients();
+  const auto& t = wallPairs_;
+  const Index active = static_cast<Index>(t.walls.size());
+#pragma omp parallel for schedule(static)
+  for (Index a = 0; a < active; ++a) {
+    const Index b = t.walls[a];
+    Real rate = 0;  // eq. 14 with v_b = 0: sum_j (V0_j/V_b) (0 - v_j).gradW_bj, gradW_bj = -gradB
+    for (Index s = t.offsets[b]; s < t.offsets[b + 1]; ++s) {
+      const Index j = t.dynamic[s];
+      rate += world.restVolumeOf(j) * p.v[j].dot(gradB[t.pair[s]]);
+    }
+    wallPredicted_[b] =
+        std::max(wallDensity_[b] + dt * rate / walls.volume[b], 1.0 / walls.volume[b]);
+  }
+  return reducer_.sum(t.walls.size(), [&](std::size_t a) {
+    const Index b = t.walls[a];
+    return wallPredicted_[b] * walls.volume[b] - 1.0;
+  });
 }
 
 void IndsphWang2023::beginStep(World& world, const StepContext& context) {
@@ -56,6 +142,10 @@ void IndsphWang2023::beginStep(World& world, const StepContext& context) {
     for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k];
     g += gw / world.restVolumeOf(i);
     diagonal_[i] = g.squaredNorm() / p.mass[i] + neighbours;
+  }
+  if (staticWalls_) {
+    prepareStaticWalls(world);
+    wallWarmStart_ = *wallKappa_;
   }
   stats_.divergenceIterations = 0;
   if (params_.divergenceSolve && context.dt > 0) solveDivergence(world, context.dt);
@@ -126,7 +216,8 @@ Real IndsphWang2023::predictNumberDensity(World& world, Real dt) {
          }) / n;
 }
 
-void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt) {
+void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt,
+                                           const std::vector<Real>* wallKappa) {
   auto& p = world.particles;
   const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
@@ -143,10 +234,22 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
       const Index j = nf.indices[k];
       force += (ki + kappa[j] / delta[j]) * gradF[k];
     }
-    if (ki != 0.0) {
+    // The fluid particle's own stiffness acts on its wall neighbours through its own number
+    // density (eq. 19's first term runs over all neighbours, static ones included). With layered
+    // walls the wall particles' own stiffnesses kappa_b add the second term (eq. 19 with j = b):
+    // the wall pushes back with the pressure its own compression demands instead of a pressure
+    // copied ("mirrored") from the fluid particle, which is what makes a lattice wall impermeable.
+    const Real v0 = world.restVolumeOf(i);
+    if (wallKappa) {
+      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
+        const Index b = nw.indices[k];
+        const Real kb = (*wallKappa)[b] != 0.0 ? (*wallKappa)[b] / wallDensity_[b] : 0.0;
+        force += (ki * walls.volume[b] / v0 + kb * v0 / walls.volume[b]) * gradB[k];
+      }
+    } else if (ki != 0.0) {
       Vec3 g = Vec3::Zero();
       for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) g += walls.volume[nw.indices[k]] * gradB[k];
-      force += ki * g / world.restVolumeOf(i);
+      force += ki * g / v0;
     }
     p.v[i] -= (dt / p.mass[i]) * force;  // eq. 20: the advection velocity is incremented
   }
@@ -157,8 +260,18 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
   const Real dt = context.dt;
   auto& kappa = *kappa_;
   const auto& delta = *numberDensity_;
+  const auto& walls = world.walls;
+  const Index active = staticWalls_ ? static_cast<Index>(wallPairs_.walls.size()) : 0;
+  std::vector<Real>* wallStep = staticWalls_ ? &wallIncrement_ : nullptr;
+  // Mean compression over every unknown: fluid particles and active static wall particles.
+  auto predictAll = [&] {
+    const Real fluid = predictNumberDensity(world, dt);
+    if (!staticWalls_) return fluid;  // single-layer walls: unchanged (bit-identical) path
+    return (fluid * n + predictWallNumberDensity(world, dt)) / (n + active);
+  };
 
   predictNumberDensity(world, dt);
+  if (staticWalls_) predictWallNumberDensity(world, dt);
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     increment_[i] = predicted_[i] * world.restVolumeOf(i) > 1.0
@@ -166,9 +279,21 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
                         : 0.0;
     kappa[i] = increment_[i];
   }
-  if (params_.warmStartFactor > 0) applyPressureVelocity(world, increment_, dt);
+  if (staticWalls_) {
+    std::fill(wallKappa_->begin(), wallKappa_->end(), 0.0);
+    std::fill(wallIncrement_.begin(), wallIncrement_.end(), 0.0);
+#pragma omp parallel for schedule(static)
+    for (Index a = 0; a < active; ++a) {
+      const Index b = wallPairs_.walls[a];
+      wallIncrement_[b] = wallPredicted_[b] * walls.volume[b] > 1.0
+                              ? params_.warmStartFactor * wallWarmStart_[b]
+                              : 0.0;
+      (*wallKappa_)[b] = wallIncrement_[b];
+    }
+  }
+  if (params_.warmStartFactor > 0) applyPressureVelocity(world, increment_, dt, wallStep);
 
-  Real error = predictNumberDensity(world, dt);
+  Real error = predictAll();
   int iteration = 0;
   const Real invDt2 = 1.0 / (dt * dt);
   while ((iteration < params_.minIterations || error > params_.tolerance) &&
@@ -183,8 +308,21 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
                                        : 0.0;
       kappa[i] += increment_[i];
     }
-    applyPressureVelocity(world, increment_, dt);
-    error = predictNumberDensity(world, dt);
+    if (staticWalls_) {
+#pragma omp parallel for schedule(static)
+      for (Index a = 0; a < active; ++a) {
+        const Index b = wallPairs_.walls[a];
+        // Eq. 21: only the dynamic neighbours move, so the diagonal is d_j^{p_b} alone.
+        wallIncrement_[b] = wallDiagonal_[b] > 0
+                                ? params_.relaxation * wallDensity_[b] *
+                                      (wallPredicted_[b] - 1.0 / walls.volume[b]) * invDt2 /
+                                      wallDiagonal_[b]
+                                : 0.0;
+        (*wallKappa_)[b] += wallIncrement_[b];
+      }
+    }
+    applyPressureVelocity(world, increment_, dt, wallStep);
+    error = predictAll();
     ++iteration;
   }
   stats_.densityIterations = iteration;
@@ -196,6 +334,11 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
   // p_j/delta_j^2) gradW_ij written with kappa = p/delta.
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) (*pressure_)[i] = kappa[i] * delta[i];
+  if (staticWalls_) {
+    const Index nb = static_cast<Index>(walls.size());
+#pragma omp parallel for schedule(static)
+    for (Index b = 0; b < nb; ++b) (*wallPressure_)[b] = (*wallKappa_)[b] * wallDensity_[b];
+  }
 }
 
 }  // namespace sim

@@ -12,10 +12,20 @@
 // with G_i = sum_j gradW_ij + sum_b (V_b/V0_i) gradW_ib and delta0_i = 1/V0_i = rho0_i/m_i
 // (eq. 16). The output pressure is p_i = kappa_i delta_i.
 //
-// Walls are Akinci 2012 surface particles acting with the fluid particle's own stiffness
-// (pressure mirroring), not the paper's static particles with their own kappa (eq. 21): eq. 21
-// needs a wall sampled as a volume at the fluid's spacing, with a rest number density; a single
-// surface layer with Akinci volumes has none (its wall-only sum already equals the rest value).
+// Walls, two models chosen by the scene:
+// - single-layer Akinci 2012 surface particles (no "wall_layer" field): a wall neighbour only
+//   enters the fluid particle's own constraint (its number density and G_i), i.e. p_b = 0 in the
+//   symmetric pair force. Such a layer has no rest number density of its own (its wall-only sum
+//   already equals the rest value), so it cannot be an unknown of the solve.
+// - layered walls (sim/boundary/wall_layers.h, volumes V_b known): the paper's static particles
+//   (section 4.3, eq. 21). Each wall particle b with dynamic neighbours is an unknown kappa_b:
+//     delta_b   = (1/V_b) (V_b W_0 + sum_c V_c W_bc + sum_j V0_j W_bj)    (eq. 6 with volumes)
+//     delta*_b  = delta_b + dt sum_j (V0_j/V_b) v_j.gradW_jb            (eq. 15 with v_b = 0)
+//     kappa_b   = omega delta_b (delta*_b - 1/V_b) / (dt^2 sum_j (V0_j/V_b)^2 |gradW_bj|^2/m_j)
+//                                                    (eq. 21: d_b^{p_b} = 0, static b cannot move)
+//     dv_j      = -dt/m_j kappa_b/delta_b (V0_j/V_b) gradW_jb               (eqs. 12, 19)
+//   A fluid particle that gets between wall particles compresses them and is pushed out by their
+//   own pressure, which a lattice wall with mirrored or zero wall pressure cannot do.
 // Optionally a divergence-free pass in the same number-density form precedes each step.
 #pragma once
 
@@ -43,6 +53,23 @@ struct IndsphParameters {
   bool divergenceSolve = true;
   Real divergenceTolerance = 1e-3;  // [1] stop when mean dt (D delta/Dt)/delta0 falls below
   int minNeighborsForDivergence = 20;  // particles with fewer (free surface) are left alone
+  // [1] Layered walls: a wall particle is an unknown of the solve only when its dynamic
+  // neighbours make up at least this fraction of its number density (small-diagonal guard, as in
+  // IISPH). A wall particle whose only dynamic neighbour sits at the edge of the support
+  // (r > 1.5 d for the cubic spline at h = 2d) has a near-zero diagonal: a 3e-5 lattice-sum
+  // excess then read as kappa_b of up to 5e5 Pa (for a negligible force) on the 1:75 dam break.
+  // A particle intruding past the surface layer contributes W(d) d^3 = 8 % and stays covered;
+  // the fluid particle's own constraint still sees every wall particle.
+  Real minWallDynamicFraction = 0.01;
+};
+
+// Layered-wall (eq. 21) state: wall particles with dynamic neighbours and their pairs, the
+// transpose of World::wallNeighbors() (rebuilt each step: the lists change with the fluid).
+struct StaticWallPairs {
+  std::vector<Index> walls;    // wall indices with at least one dynamic neighbour (ascending)
+  std::vector<Index> offsets;  // CSR into dynamic/pair, one row per wall particle (size walls+1)
+  std::vector<Index> dynamic;  // dynamic neighbour j
+  std::vector<Index> pair;     // index k of the pair (j, b) in World::wallNeighbors()/wallGradients()
 };
 
 class IndsphWang2023 final : public PressureSolver {
@@ -57,7 +84,12 @@ class IndsphWang2023 final : public PressureSolver {
   Real predictNumberDensity(World& world, Real dt);  // fills predicted_, returns mean compression
   Real numberDensityRate(const World& world, Index i) const;  // D delta_i / Dt, eq. 14 [1/(m^3 s)]
   void solveDivergence(World& world, Real dt);
-  void applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt);
+  // Applies the velocity change of the fluid stiffnesses `kappa` and, when given, of the wall
+  // stiffnesses `wallKappa` (layered walls, indexed like world.walls).
+  void applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt,
+                             const std::vector<Real>* wallKappa = nullptr);
+  void prepareStaticWalls(const World& world);  // eq. 21 set-up: pairs, delta_b, diagonal
+  Real predictWallNumberDensity(const World& world, Real dt);  // returns summed compression
 
   IndsphParameters params_;
   std::vector<Real>* numberDensity_ = nullptr;  // [1/m^3] delta_i (output)
@@ -68,6 +100,18 @@ class IndsphWang2023 final : public PressureSolver {
   std::vector<Real> increment_;                 // [Pa m^3] this iteration's kappa (scratch)
   std::vector<Real> warmStart_;                 // [Pa m^3] last accepted step's kappa (scratch)
   DeterministicReducer reducer_;
+
+  // Layered walls only (allocated by attach() when the scene has them; DESIGN principle 1).
+  bool staticWalls_ = false;
+  std::vector<Real>* wallKappa_ = nullptr;     // [Pa m^3] kappa_b, warm start (wall field)
+  std::vector<Real>* wallPressure_ = nullptr;  // [Pa] p_b = kappa_b delta_b (wall field, output)
+  StaticWallPairs wallPairs_;
+  std::vector<Real> wallStaticDensity_;        // [1/m^3] W_0 + sum_c (V_c/V_b) W_bc, fixed
+  std::vector<Real> wallDensity_;              // [1/m^3] delta_b (per wall)
+  std::vector<Real> wallDiagonal_;             // [m^-8 kg^-1] sum_j (V0_j/V_b)^2 |gradW|^2/m_j
+  std::vector<Real> wallPredicted_;            // [1/m^3] delta*_b (scratch)
+  std::vector<Real> wallIncrement_;            // [Pa m^3] (scratch, per wall)
+  std::vector<Real> wallWarmStart_;            // [Pa m^3] (scratch)
 };
 
 // Number density with Akinci wall terms (eq. 6), shared with the explicit number-density solver.

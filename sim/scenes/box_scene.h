@@ -4,6 +4,7 @@
 // on its own.
 #pragma once
 
+#include "sim/boundary/wall_layers.h"
 #include "sim/world/world.h"
 
 namespace sim {
@@ -22,6 +23,13 @@ Box tankDomain(const TankSpec& tank, Real spacing);
 // clamped pressure solvers: a particle between lattice wall particles sees rest density and
 // no force; a single surface layer is a density barrier. See docs/solvers.md.)
 void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag = 0);
+// Layered walls (sim/boundary/wall_layers.h): the tank's walls as `layers.count` layers of a
+// lattice continuing the fluid lattice of addFluidBlock (cell centres at d/2, 3d/2, ... behind
+// each inner face, edges and corners filled), each particle of volume d^3 (the lattice cell; the
+// tank size is rounded to whole cells per axis as above) and its layer index: 0 for the layer
+// touching the tank's inside (faces, edges and corners), k for the cells k spacings further out.
+// These are the static particles of Wang et al. 2023 eq. 21.
+void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag, const WallLayers& layers);
 // Fills [min, max] with particles on a lattice of spacing d (cell-centred: first at min + d/2),
 // mass rho0 d^3 of material `materialIndex`. Returns the number added.
 std::size_t addFluidBlock(World& world, const Vec3& min, const Vec3& max, Real spacing,
