@@ -124,6 +124,9 @@ struct CavitySpec {
   Vec3 gravity = Vec3::Zero(); // [m/s^2]
   Vec3 oilAxis = Vec3::UnitY();// the oil starts beyond a plane normal to this axis...
   Real oilOffset = 0;          // [m] ...at this signed distance from the centre
+  // [m] > 0: the oil starts instead as the column of this radius about oilAxis (it touches the
+  // wall at both poles; under gravity it must rise and spread into a layer)
+  Real oilColumnRadius = 0;
 };
 
 struct CavityScene {
@@ -172,7 +175,8 @@ inline CavityScene cavityScene(const CavitySpec& s) {
       const Real y = 1 - 2 * (k + 0.5) / static_cast<Real>(count);
       const Real rho = std::sqrt(1 - y * y), phi = golden * static_cast<Real>(k);
       const Vec3 x = r * Vec3(rho * std::cos(phi), y, rho * std::sin(phi));
-      const bool isOil = x.dot(axis) > s.oilOffset;
+      const bool isOil = s.oilColumnRadius > 0 ? (x - x.dot(axis) * axis).norm() < s.oilColumnRadius
+                                               : x.dot(axis) > s.oilOffset;
       const int mat = isOil ? out.oil : out.aqueous;
       w.particles.add(x, Vec3::Zero(), w.materials[mat].restDensity * v * (1 + s.massExcess), mat);
       volume += v;
@@ -238,6 +242,8 @@ struct CavityState {
   Real shepardCoverage = 0;  // [1] phi >= 0.5
   Real dry = 0;              // [1] no fluid within h
   Real angle = 0;            // [deg] through the oil, from the fitted sphere and the cavity
+  Vec3 axis = Vec3::Zero();  // [1] direction of the area centroid of the oil-covered wall (the
+                             // cap's axis; zero if nothing is covered)
 };
 inline CavityState measureCavity(const CavityScene& scene, Real rs) {
   const World& w = *scene.world;
@@ -250,10 +256,14 @@ inline CavityState measureCavity(const CavityScene& scene, Real rs) {
     for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
       if ((w.particles.x[i] - w.walls.x[*b]).norm() < w.supportRadius()) wet[*b] = 1;
   Real oilNear = 0, oilShepard = 0, dry = 0, total = 0;
+  Vec3 axisSum = Vec3::Zero();
   for (std::size_t b = 0; b < phi.size(); ++b) {
     const Real a = scene.wallArea[b];
     total += a;
-    if (nearest[b] == scene.oil) oilNear += a;
+    if (nearest[b] == scene.oil) {
+      oilNear += a;
+      axisSum += a * w.walls.x[b];
+    }
     if (phi[b] >= 0.5) oilShepard += a;
     if (!wet[b]) dry += a;
   }
@@ -261,6 +271,7 @@ inline CavityState measureCavity(const CavityScene& scene, Real rs) {
   out.coverage = oilNear / total;
   out.shepardCoverage = oilShepard / total;
   out.dry = dry / total;
+  if (axisSum.norm() > 0) out.axis = axisSum.normalized();
   std::vector<Vec3> points = interfacePairMidpoints(w, scene.oil);
   const Real inner = rs - 2 * w.particleSpacing();
   std::erase_if(points, [inner](const Vec3& x) { return x.norm() > inner; });
