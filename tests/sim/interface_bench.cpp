@@ -2,7 +2,7 @@
 //   sim_interface_bench oscillation [R_mm] [d_per_R] [periods]  l = 2 oscillation vs Lamb
 //   sim_interface_bench sessile THETA_DEG [t_end_s]    sessile droplet contact angle
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
-//                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1]
+//                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
 //                                      equilibrium tamponade shape in a spherical cavity
 // Results and wall times go to stdout; docs/interface.md records the measured numbers.
 #include <chrono>
@@ -190,7 +190,7 @@ int sessile(Real theta, Real tEnd, Real startCos) {
 // cavity; mode "lens": sigma 0.04 N/m, contact angle THETA through oil, no gravity; mode "flat":
 // no tension, gravity -y, oil density `oilDensity`.
 int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDensity, Real mu,
-           Real sigma, bool friction) {
+           Real sigma, bool friction, const char* solver) {
   testing::CavitySpec s;
   s.cavityRadius = 0.003;
   s.spacing = s.cavityRadius / perR;
@@ -205,7 +205,7 @@ int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDe
   }
   s.massExcess = 0.02;
   PipelineOptions options;
-  options.solver = "wcsph";
+  options.solver = solver;
   options.wallFriction = friction;
   options.wcsph.artificialViscosity = 0.1;
   s.sigma = sigma;
@@ -313,11 +313,11 @@ int main(int argc, char** argv) {
                   argc > 3 ? std::atof(argv[3]) : 0.1, argc > 4 ? std::atof(argv[4]) : 8,
                   argc > 5 ? std::atof(argv[5]) : 0, argc > 6 ? std::atof(argv[6]) : 700,
                   argc > 7 ? std::atof(argv[7]) : 0.005, argc > 8 ? std::atof(argv[8]) : 0.04,
-                  argc > 9 && std::atoi(argv[9]) != 0);
+                  argc > 9 && std::atoi(argv[9]) != 0, argc > 10 ? argv[10] : "wcsph");
   std::fprintf(stderr,
                "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods]\n"
                "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n"
                "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
-               "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction]\n");
+               "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;
 }
