@@ -278,9 +278,10 @@ TEST_CASE("INDSPH neutral buoyancy: a blob of the water's density moves with its
 }
 
 // [!mayfail], a known open defect: against the neutral blob (the control, same settling flow) the
-// 970 blob rises only +0.07 d and the 1060 blob sinks -0.33 d in 0.3 s, against 1.8 d without
-// drag: the 3 % buoyancy is damped 5-25x and asymmetrically at this resolution (2 cm blob, d = 5
-// mm; without XSPH +0.24 d / -0.31 d against the mean water height). See docs/interface.md.
+// 970 blob rises only +0.07 d and the 1060 blob sinks -0.33 d in 0.3 s, against 1.8 d / 3.4 d
+// without drag. Cause measured (docs/interface.md, validation 6): the XSPH velocity smoothing
+// blends velocities across phases and damps the blob's relative motion; with it off the signal
+// is +0.23 d / -0.28 d here and +0.86 d / -1.74 d (of d = 2.5 mm) at d = 2.5 mm.
 TEST_CASE("INDSPH near-neutral buoyancy: 970 rises and 1060 sinks against the neutral blob",
           "[validation][solvers][indsph][buoyancy][!mayfail]") {
   const Real d = kBlobSpacing;
