@@ -39,23 +39,27 @@ SphereFit fitSphere(const std::vector<Vec3>& points) {
   return fit;
 }
 
-CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& wall,
-                     Real excludeNearWall) {
+std::vector<Vec3> interfacePairMidpoints(const World& world, int material) {
   const auto& p = world.particles;
   const NeighborList& nf = world.fluidNeighbors();
   const Real maxPair = 1.5 * world.particleSpacing();
-  const Vec3 n = wall.normal.normalized();
   std::vector<Vec3> points;
   for (Index i = 0; i < p.size(); ++i) {
-    if (p.material[i] != dropletMaterial) continue;
+    if (p.material[i] != material) continue;
     for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
-      if (p.material[*j] == dropletMaterial) continue;
+      if (p.material[*j] == material) continue;
       if ((p.x[i] - p.x[*j]).norm() > maxPair) continue;
-      const Vec3 mid = 0.5 * (p.x[i] + p.x[*j]);
-      if ((mid - wall.point).dot(n) < excludeNearWall) continue;
-      points.push_back(mid);
+      points.push_back(0.5 * (p.x[i] + p.x[*j]));
     }
   }
+  return points;
+}
+
+CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& wall,
+                     Real excludeNearWall) {
+  const Vec3 n = wall.normal.normalized();
+  std::vector<Vec3> points = interfacePairMidpoints(world, dropletMaterial);
+  std::erase_if(points, [&](const Vec3& x) { return (x - wall.point).dot(n) < excludeNearWall; });
   require(points.size() >= 4, "sessile cap fit: fewer than 4 interface points above the wall");
   CapFit out;
   out.sphere = fitSphere(points);

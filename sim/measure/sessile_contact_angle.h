@@ -22,6 +22,10 @@ struct SphereFit {
 // Algebraic least-squares sphere through >= 4 points (throws SimError if degenerate).
 SphereFit fitSphere(const std::vector<Vec3>& points);
 
+// Midpoints of the neighbouring pairs (material, any other fluid material) closer than 1.5 d:
+// samples of the sharp interface, which lies between the two phases' particles [m].
+std::vector<Vec3> interfacePairMidpoints(const World& world, int material);
+
 struct WallPlane {
   Vec3 point = Vec3::Zero();   // [m] a point on the wall surface
   Vec3 normal = Vec3::UnitY(); // [1] unit normal pointing into the fluid

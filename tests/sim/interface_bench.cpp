@@ -1,6 +1,9 @@
 // Longer interface validations (issue 6) that are too costly for CI, run by hand:
 //   sim_interface_bench oscillation [R_mm] [d_per_R] [periods]  l = 2 oscillation vs Lamb
 //   sim_interface_bench sessile THETA_DEG [t_end_s]    sessile droplet contact angle
+//   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
+//                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
+//                                      equilibrium tamponade shape in a spherical cavity
 // Results and wall times go to stdout; docs/interface.md records the measured numbers.
 #include <chrono>
 #include <cmath>
@@ -16,6 +19,7 @@
 #include "interface_fixtures.h"
 #include "sim/measure/droplet_pressure_jump.h"
 #include "sim/measure/sessile_contact_angle.h"
+#include "sim/measure/wall_nearest_material.h"
 
 using namespace sim;
 
@@ -180,6 +184,121 @@ int sessile(Real theta, Real tEnd, Real startCos) {
   return 0;
 }
 
+
+// Validation 5 (tests/sim/interface_cavity.cpp runs the same scenes for the CI): the oil starts
+// as a flat cut of volume fraction 0.3 (tilted by `tiltDeg` from the +y axis) in a spherical
+// cavity; mode "lens": sigma 0.04 N/m, contact angle THETA through oil, no gravity; mode "flat":
+// no tension, gravity -y, oil density `oilDensity`.
+int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDensity, Real mu,
+           Real sigma, bool friction, const char* solver) {
+  testing::CavitySpec s;
+  s.cavityRadius = 0.003;
+  s.spacing = s.cavityRadius / perR;
+  const Real v = 0.3;
+  s.oilOffset = s.cavityRadius * (1 - 2 * testing::flatCoverage(v));
+  const Real tilt = tiltDeg * std::numbers::pi / 180;
+  s.oilAxis = Vec3(std::sin(tilt), std::cos(tilt), 0);
+  // tilt < 0: a vertical column of the same volume fraction, 1 - (1 - a^2)^(3/2) = v
+  if (tiltDeg < 0) {
+    s.oilAxis = Vec3::UnitY();
+    s.oilColumnRadius = s.cavityRadius * std::sqrt(1 - std::pow(1 - v, 2.0 / 3.0));
+  }
+  s.massExcess = 0.02;
+  PipelineOptions options;
+  options.solver = solver;
+  options.wallFriction = friction;
+  options.wcsph.artificialViscosity = 0.1;
+  s.sigma = sigma;
+  s.viscosity = mu;
+  if (lens) {
+    options.wcsph.speedOfSound = 2;
+  } else {
+    s.gravity = Vec3(0, -9.81, 0);
+    s.oilDensity = oilDensity;
+    options.wcsph.speedOfSound = 3;
+  }
+  auto scene = testing::cavityScene(s);
+  World& w = *scene.world;
+  if (lens) w.materials.setContactAngle(scene.oil, 0, theta);
+  Pipeline pipeline = assemblePipeline(w, options);
+  pipeline.attach(w);
+  const Real expected = lens ? testing::lensCoverage(scene.oilVolumeFraction, theta).coverage
+                             : testing::flatCoverage(scene.oilVolumeFraction);
+  std::printf("cavity %s: Rs %.1f mm, d = Rs/%.0f, %zu fluid + %zu wall particles, oil fraction "
+              "%.4f, closed-form coverage %.4f (flat start %.4f)\n",
+              lens ? "lens" : "flat", s.cavityRadius * 1e3, perR, w.particles.size(),
+              w.walls.size(), scene.oilVolumeFraction, expected,
+              testing::flatCoverage(scene.oilVolumeFraction));
+  const auto t0 = std::chrono::steady_clock::now();
+  Real next = 0;
+  while (w.time < tEnd) {
+    pipeline.step(w);
+    if (w.time >= next) {
+      const auto m = testing::measureCavity(scene, s.cavityRadius);
+      const Vec3 c = centreOfMaterial(w, scene.oil);
+      std::printf("  t = %.4f s  coverage %.4f (Shepard %.4f, dry %.4f)  angle %.1f deg  oil centre "
+                  "(%.2f %.2f %.2f) mm  wall %.1f s\n",
+                  w.time, m.coverage, m.shepardCoverage, m.dry, m.angle, c.x() * 1e3, c.y() * 1e3,
+                  c.z() * 1e3, seconds(t0));
+      std::fflush(stdout);
+      next += tEnd / 20;
+    }
+  }
+  // The bulk interface against hydrostatics: mean height of the interface points within Rs/2 of
+  // the axis, relative to the centre of volume of all the fluid, over the radius of a sphere of
+  // the fluid's rest volume; a flat interface of oil fraction v sits at 1 - 2 flatCoverage(v).
+  {
+    Real ySum = 0;
+    int count = 0;
+    for (const Vec3& x : interfacePairMidpoints(w, scene.oil))
+      if (std::hypot(x.x(), x.z()) < 0.5 * s.cavityRadius) {
+        ySum += x.y();
+        ++count;
+      }
+    Vec3 centre = Vec3::Zero();
+    Real volume = 0;
+    for (Index i = 0; i < w.particles.size(); ++i) {
+      centre += w.restVolumeOf(i) * w.particles.x[i];
+      volume += w.restVolumeOf(i);
+    }
+    centre /= volume;
+    const Real rEff = std::cbrt(3 * volume / (4 * std::numbers::pi));
+    std::printf("bulk interface at y = %.3f mm (%d points), fluid centre y = %.3f mm, R_eff = %.3f "
+                "mm: (y - c) / R_eff = %.3f, hydrostatics %.3f\n",
+                count ? ySum / count * 1e3 : 0.0, count, centre.y() * 1e3, rEff * 1e3,
+                count ? (ySum / count - centre.y()) / rEff : 0.0,
+                1 - 2 * testing::flatCoverage(scene.oilVolumeFraction));
+  }
+  // Where the contact line lies on the wall: histogram of nearest-oil wall particles by height.
+  {
+    const std::vector<int> nearest = wallNearestMaterial(w);
+    const int bins = static_cast<int>(2 * perR);
+    std::vector<int> oilWall(bins, 0), allWall(bins, 0);
+    for (std::size_t b = 0; b < nearest.size(); ++b) {
+      const int k = std::clamp(
+          static_cast<int>((w.walls.x[b].y() + s.cavityRadius) / s.spacing), 0, bins - 1);
+      ++allWall[k];
+      if (nearest[b] == scene.oil) ++oilWall[k];
+    }
+    for (int k = bins - 1; k >= 0; --k)
+      std::printf("  wall y = %+.2f mm: %3d of %3d nearest oil\n",
+                  (-s.cavityRadius + (k + 0.5) * s.spacing) * 1e3, oilWall[k], allWall[k]);
+  }
+  // Final layering: oil and aqueous particle counts and mean density per slab of height d along y.
+  const int slabs = static_cast<int>(2 * perR);
+  std::vector<int> oilCount(slabs, 0), aqueousCount(slabs, 0);
+  for (Index i = 0; i < w.particles.size(); ++i) {
+    const int k = std::clamp(
+        static_cast<int>((w.particles.x[i].y() + s.cavityRadius) / s.spacing), 0, slabs - 1);
+    (w.particles.material[i] == scene.oil ? oilCount : aqueousCount)[k]++;
+  }
+  for (int k = slabs - 1; k >= 0; --k)
+    std::printf("  y = %+.2f mm: %4d oil %4d aqueous\n",
+                (-s.cavityRadius + (k + 0.5) * s.spacing) * 1e3, oilCount[k], aqueousCount[k]);
+  std::printf("%ld steps, wall %.1f s\n", w.stepCount, seconds(t0));
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -189,8 +308,16 @@ int main(int argc, char** argv) {
   if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0)
     return sessile(std::atof(argv[2]), argc > 3 ? std::atof(argv[3]) : 0.05,
                    argc > 4 ? std::atof(argv[4]) : 0.0);
+  if (argc >= 3 && std::strcmp(argv[1], "cavity") == 0)
+    return cavity(std::strcmp(argv[2], "flat") != 0, std::atof(argv[2]),
+                  argc > 3 ? std::atof(argv[3]) : 0.1, argc > 4 ? std::atof(argv[4]) : 8,
+                  argc > 5 ? std::atof(argv[5]) : 0, argc > 6 ? std::atof(argv[6]) : 700,
+                  argc > 7 ? std::atof(argv[7]) : 0.005, argc > 8 ? std::atof(argv[8]) : 0.04,
+                  argc > 9 && std::atoi(argv[9]) != 0, argc > 10 ? argv[10] : "wcsph");
   std::fprintf(stderr,
                "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods]\n"
-               "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n");
+               "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n"
+               "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
+               "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;
 }

@@ -2,11 +2,18 @@
 // gravity, and a sessile droplet on the floor of such a box.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <utility>
+#include <vector>
 
 #include "scene_fixtures.h"
+#include "sim/measure/droplet_pressure_jump.h"
+#include "sim/measure/sessile_contact_angle.h"
+#include "sim/measure/wall_nearest_material.h"
+#include "sim/measure/wall_phase_fraction.h"
 
 namespace sim::testing {
 
@@ -98,6 +105,188 @@ inline DropletScene dropletScene(const DropletSpec& s) {
       }
   out.radius = std::cbrt(3.0 * oilCount * d * d * d / (4.0 * std::numbers::pi));
   w.initialize();
+  return out;
+}
+
+
+// A closed spherical cavity (validation 5): one layer of wall particles on a sphere of radius
+// Rs about the origin (a Fibonacci point set, about one point per d^2 of area, outward normals,
+// Akinci volumes computed by the World), filled with aqueous up to kWallGap d from the wall; the
+// particles beyond the plane x.axis > offset are oil.
+struct CavitySpec {
+  Real cavityRadius = 0;       // [m] Rs, the fluid side of the wall
+  Real spacing = 0;            // [m] d
+  Real sigma = 0;              // [N/m]
+  Real oilDensity = 970;       // [kg/m^3]
+  Real aqueousDensity = 1000;  // [kg/m^3]
+  Real viscosity = 1e-3;       // [Pa s] both phases
+  Real massExcess = 0.01;      // [1] as DropletSpec::massExcess
+  Vec3 gravity = Vec3::Zero(); // [m/s^2]
+  Vec3 oilAxis = Vec3::UnitY();// the oil starts beyond a plane normal to this axis...
+  Real oilOffset = 0;          // [m] ...at this signed distance from the centre
+  // [m] > 0: the oil starts instead as the column of this radius about oilAxis (it touches the
+  // wall at both poles; under gravity it must rise and spread into a layer)
+  Real oilColumnRadius = 0;
+};
+
+struct CavityScene {
+  std::unique_ptr<World> world;
+  int oil = 0, aqueous = 1;
+  Real oilVolumeFraction = 0;  // [1] oil particles' rest volume over all fluid particles' rest volume
+  std::vector<Real> wallArea;  // [m^2] per wall particle (equal areas: 4 pi Rs^2 / N)
+};
+
+inline CavityScene cavityScene(const CavitySpec& s) {
+  CavityScene out;
+  const Real d = s.spacing, rs = s.cavityRadius;
+  WorldParameters params;
+  params.particleSpacing = d;
+  params.gravity = s.gravity;
+  params.domain = Box(Vec3::Constant(-rs - 3 * d), Vec3::Constant(rs + 3 * d));
+  out.world = std::make_unique<World>(params);
+  World& w = *out.world;
+  out.oil = w.materials.add(liquid("oil", s.oilDensity, s.viscosity));
+  out.aqueous = w.materials.add(liquid("aqueous", s.aqueousDensity, s.viscosity));
+  if (s.sigma > 0) w.materials.setInterfacialTension(out.oil, out.aqueous, s.sigma);
+  // Fibonacci sphere (golden-angle spiral): equal-area points, spacing close to d everywhere.
+  const auto n = static_cast<std::size_t>(std::lround(4 * std::numbers::pi * rs * rs / (d * d)));
+  const Real golden = std::numbers::pi * (3 - std::sqrt(5.0));
+  for (std::size_t k = 0; k < n; ++k) {
+    const Real y = 1 - 2 * (k + 0.5) / static_cast<Real>(n);
+    const Real r = std::sqrt(1 - y * y), phi = golden * static_cast<Real>(k);
+    const Vec3 u(r * std::cos(phi), y, r * std::sin(phi));
+    w.walls.add(rs * u, u);
+  }
+  out.wallArea.assign(n, 4 * std::numbers::pi * rs * rs / static_cast<Real>(n));
+  // The fluid: concentric Fibonacci shells of radii Rs - kWallGap d - k d, each particle with
+  // the volume of its shell's share (the shell spans +-d/2 radially), so the fluid fills the
+  // cavity up to Rs - (kWallGap - 1/2) d as a lattice block fills a box. (A cubic lattice cut
+  // at Rs - kWallGap d fills only the sphere of that radius: 62 % of the cavity at Rs = 8 d, and
+  // under gravity the fluid slumped and left the top 1.7 mm of a 3 mm cavity empty.)
+  const Vec3 axis = s.oilAxis.normalized();
+  Real oilVolume = 0, volume = 0;
+  for (Real r = rs - kWallGap * d; r > 0.25 * d; r -= d) {
+    const Real outer = r + 0.5 * d, inner = std::max(r - 0.5 * d, Real(0));
+    const Real shellVolume = 4 * std::numbers::pi / 3 * (outer * outer * outer - inner * inner * inner);
+    const auto count = std::max<std::size_t>(
+        1, static_cast<std::size_t>(std::lround(shellVolume / (d * d * d))));
+    const Real v = shellVolume / static_cast<Real>(count);  // [m^3]
+    for (std::size_t k = 0; k < count; ++k) {
+      const Real y = 1 - 2 * (k + 0.5) / static_cast<Real>(count);
+      const Real rho = std::sqrt(1 - y * y), phi = golden * static_cast<Real>(k);
+      const Vec3 x = r * Vec3(rho * std::cos(phi), y, rho * std::sin(phi));
+      const bool isOil = s.oilColumnRadius > 0 ? (x - x.dot(axis) * axis).norm() < s.oilColumnRadius
+                                               : x.dot(axis) > s.oilOffset;
+      const int mat = isOil ? out.oil : out.aqueous;
+      w.particles.add(x, Vec3::Zero(), w.materials[mat].restDensity * v * (1 + s.massExcess), mat);
+      volume += v;
+      if (isOil) oilVolume += v;
+    }
+  }
+  out.oilVolumeFraction = oilVolume / volume;
+  w.initialize();
+  return out;
+}
+
+
+// Closed forms of validation 5, for a cavity of radius 1 (every length over Rs) and an oil
+// volume fraction v of the cavity; coverage = oil-wetted share of the wall area.
+// (b) No tension, flat interface normal to gravity: the oil fills a cap of height x, volume
+// fraction x^2 (3 - x) / 4, and covers the zone above it, area fraction x / 2.
+inline Real flatCoverage(Real v) {
+  Real lo = 0, hi = 2;
+  for (int k = 0; k < 100; ++k) {
+    const Real x = 0.5 * (lo + hi);
+    (x * x * (3 - x) / 4 < v ? lo : hi) = x;
+  }
+  return 0.25 * (lo + hi);
+}
+// (a) No gravity: the oil is the lens between the cavity and a sphere of radius r whose centre
+// is c from the cavity's; the spheres meet at theta through the oil when the outward normals'
+// cosine (1 + r^2 - c^2) / (2 r) is -cos(theta), i.e. c^2 = 1 + r^2 + 2 r cos(theta). Lens volume
+// of two spheres (radii 1, r, distance c): pi (1 + r - c)^2 (c^2 + 2 c r - 3 r^2 + 2 c + 6 r - 3)
+// / (12 c); its wall part is the zone beyond the plane at a = (c^2 + 1 - r^2) / (2 c), area
+// fraction (1 - a) / 2. The volume grows with r (bisection on log r). Valid for v below the
+// flat-interface limit of theta (r -> infinity).
+struct LensShape {
+  Real coverage = 0;  // [1]
+  Real radius = 0;    // [1] r / Rs
+  Real distance = 0;  // [1] c / Rs
+};
+inline LensShape lensCoverage(Real v, Real thetaOilDeg) {
+  const Real ct = std::cos(thetaOilDeg * std::numbers::pi / 180);
+  auto shape = [ct](Real r) {
+    const Real c = std::sqrt(1 + r * r + 2 * r * ct);
+    const Real volume = std::numbers::pi * (1 + r - c) * (1 + r - c) *
+                        (c * c + 2 * c * r - 3 * r * r + 2 * c + 6 * r - 3) / (12 * c);
+    return std::pair<Real, Real>(volume / (4 * std::numbers::pi / 3), c);
+  };
+  Real lo = 1e-6, hi = 1e4;
+  for (int k = 0; k < 200; ++k) {
+    const Real r = std::sqrt(lo * hi);
+    (shape(r).first < v ? lo : hi) = r;
+  }
+  const Real r = std::sqrt(lo * hi), c = shape(r).second;
+  return {0.5 * (1 - (c * c + 1 - r * r) / (2 * c)), r, c};
+}
+
+// Oil coverage of the cavity wall, two ways: the area share of wall particles whose nearest
+// fluid particle is oil (wallNearestMaterial: the interface's position on the wall, whatever gap
+// the fluid leaves at the wall), and the area share whose Shepard oil fraction is >= 0.5
+// (wallPhaseFraction: the definition of protocols/coverage, where a wall particle with no fluid
+// within h counts as not covered); plus the "dry" share (no fluid within h) and the contact
+// angle of the interface fitted as a sphere (points more than 2 d inside the wall; 0 if the fit
+// fails).
+struct CavityState {
+  Real coverage = 0;         // [1] nearest fluid is oil
+  Real shepardCoverage = 0;  // [1] phi >= 0.5
+  Real dry = 0;              // [1] no fluid within h
+  Real angle = 0;            // [deg] through the oil, from the fitted sphere and the cavity
+  Vec3 axis = Vec3::Zero();  // [1] direction of the area centroid of the oil-covered wall (the
+                             // cap's axis; zero if nothing is covered)
+};
+inline CavityState measureCavity(const CavityScene& scene, Real rs) {
+  const World& w = *scene.world;
+  const std::vector<Real> phi = wallPhaseFraction(w, scene.oil);
+  const std::vector<int> nearest = wallNearestMaterial(w);
+  // A wall particle is dry when no fluid particle lies within h: its Shepard sum is empty.
+  std::vector<char> wet(phi.size(), 0);
+  const NeighborList& nw = w.wallNeighbors();
+  for (Index i = 0; i < w.particles.size(); ++i)
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      if ((w.particles.x[i] - w.walls.x[*b]).norm() < w.supportRadius()) wet[*b] = 1;
+  Real oilNear = 0, oilShepard = 0, dry = 0, total = 0;
+  Vec3 axisSum = Vec3::Zero();
+  for (std::size_t b = 0; b < phi.size(); ++b) {
+    const Real a = scene.wallArea[b];
+    total += a;
+    if (nearest[b] == scene.oil) {
+      oilNear += a;
+      axisSum += a * w.walls.x[b];
+    }
+    if (phi[b] >= 0.5) oilShepard += a;
+    if (!wet[b]) dry += a;
+  }
+  CavityState out;
+  out.coverage = oilNear / total;
+  out.shepardCoverage = oilShepard / total;
+  out.dry = dry / total;
+  if (axisSum.norm() > 0) out.axis = axisSum.normalized();
+  std::vector<Vec3> points = interfacePairMidpoints(w, scene.oil);
+  const Real inner = rs - 2 * w.particleSpacing();
+  std::erase_if(points, [inner](const Vec3& x) { return x.norm() > inner; });
+  if (points.size() >= 8) {
+    const SphereFit f = fitSphere(points);
+    // Outward normals of the cavity and of the fitted sphere meet at cos beta = (Rs^2 + r^2 -
+    // c^2) / (2 Rs r). The oil's interior angle is 180 deg minus the angle between its region's
+    // outward normals: theta = acos(-cos beta) when the oil is inside the fitted sphere (a
+    // bulging lens), acos(cos beta) when it is outside (a concave interface).
+    const Real c = f.centre.norm(), r = f.radius;
+    const Real cosBeta = (rs * rs + r * r - c * c) / (2 * rs * r);
+    const bool oilInside = (centreOfMaterial(w, scene.oil) - f.centre).norm() < r;
+    out.angle = std::acos(std::clamp(oilInside ? -cosBeta : cosBeta, Real(-1), Real(1))) * 180 /
+                std::numbers::pi;
+  }
   return out;
 }
 
