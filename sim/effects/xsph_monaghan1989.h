@@ -6,6 +6,10 @@
 // particle-scale velocity noise that an incompressible solver leaves near walls when the physical
 // viscosity is too small at the resolution to damp it (a water tank at d = 5 mm has a particle
 // Reynolds number far above 1). eps = 0 switches it off.
+// Fluid particles only, among fluid neighbours only: an elastic particle is not smoothed (it would
+// damp the solid's rigid rotation and vibration), and a fluid particle ignores elastic neighbours
+// as it ignores wall particles — a pull towards the solid's velocity without the equal and
+// opposite one on the solid would leak momentum (docs/elasticity.md).
 #pragma once
 
 #include "sim/effects/effect.h"
@@ -26,9 +30,11 @@ class XsphMonaghan1989 final : public Effect {
     const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
+      if (!world.materials.isFluid(p.material[i])) continue;
       Vec3 a = Vec3::Zero();
       for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-        a += (2.0 * p.mass[*j] / (p.density[i] + p.density[*j]) * kernel.W(p.x[i] - p.x[*j])) *
+        if (world.materials.isFluid(p.material[*j]))
+          a += (2.0 * p.mass[*j] / (p.density[i] + p.density[*j]) * kernel.W(p.x[i] - p.x[*j])) *
              (p.v[*j] - p.v[i]);
       p.a[i] += scale * a;
     }
