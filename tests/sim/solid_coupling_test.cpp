@@ -114,3 +114,91 @@ TEST_CASE("XSPH and viscosity leave a rotating elastic block alone", "[unit][ela
   // in the reference frame only; backward Euler with a lagged rotation loses a little).
   CHECK(alone.second.z() == Approx(alone.first.z()).epsilon(0.01));
 }
+
+namespace {
+
+struct BodyState {
+  Real minY = 1e30, maxY = -1e30;  // [m] lowest and highest particle centre
+  Vec3 centre = Vec3::Zero();      // [m] centre of mass
+  Real mass = 0;                   // [kg]
+};
+
+BodyState bodyState(const World& world, int material) {
+  BodyState s;
+  const auto& p = world.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.material[i] == material) {
+      s.minY = std::min(s.minY, p.x[i].y());
+      s.maxY = std::max(s.maxY, p.x[i].y());
+      s.centre += p.mass[i] * p.x[i];
+      s.mass += p.mass[i];
+    }
+  s.centre /= s.mass;
+  return s;
+}
+
+// A closed-floor tank without fluid, inner size `inner` [m], for solids-only scenes on INDSPH.
+std::unique_ptr<World> emptyTank(const Vec3& inner, Real d) {
+  TankSpec spec;
+  spec.innerMax = inner;
+  WorldParameters params;
+  params.particleSpacing = d;
+  params.domain = tankDomain(spec, d);
+  auto world = std::make_unique<World>(params);
+  addTankWalls(*world, spec, d);
+  return world;
+}
+
+}  // namespace
+
+TEST_CASE("elastic cuboid dropped on another at density ratio 1:60 settles",
+          "[stability][elasticity]") {
+  // Wang et al. 2023 §5.2: two elastic cuboids (E = 500 kPa) coupled only through the INDSPH
+  // pressure solve reach a density ratio of 60. The paper does not say which is on top; here the
+  // light one (1000 kg/m^3) falls 3 d onto the heavy one (60000) resting on the floor, upper body
+  // 6 x 4 x 6, lower 8 x 4 x 8 particles. (Heavy onto light does not hold: the heavy body sinks
+  // through the light one, docs/elasticity.md "What is not done yet".)
+  const Real d = 0.01, E = 5e5, nu = 0.3, drop = 3 * d;  // [m], [Pa], [1], [m]
+  const Real gap = (kWallGap - 0.5) * d;                // [m] lattice start from a wall
+  {
+    const Real rhoTop = 1000, rhoBottom = 60000;  // [kg/m^3]
+    auto world = emptyTank(Vec3(14 * d, 20 * d, 14 * d), d);
+    world->gravity = Vec3(0, -9.81, 0);
+    const int bottom = world->materials.add(elasticMaterial("bottom", rhoBottom, E, nu));
+    const int top = world->materials.add(elasticMaterial("top", rhoTop, E, nu));
+    addLattice(*world, Vec3(3 * d, gap, 3 * d), Eigen::Vector3i(8, 4, 8), d, bottom);
+    addLattice(*world, Vec3(4 * d, gap + 4 * d + drop, 4 * d), Eigen::Vector3i(6, 4, 6), d, top);
+    world->initialize();
+    PipelineOptions options;
+    options.solver = "indsph";
+    Pipeline pipeline = assemblePipeline(*world, options);
+    pipeline.attach(*world);
+    const BodyState top0 = bodyState(*world, top), bottom0 = bodyState(*world, bottom);
+    Real minGap = 1e30, maxEnergyRatio = 0;  // [m], [1]
+    while (world->time < 0.5) {
+      pipeline.step(*world);
+      REQUIRE(allFinite(*world));
+      const BodyState t = bodyState(*world, top), b = bodyState(*world, bottom);
+      minGap = std::min(minGap, t.minY - b.maxY);
+      // Energy the fall released so far (both bodies, the lower one settles too) plus the
+      // potential energy of the drop itself, which bounds the kinetic energy at every instant.
+      const Real released = t.mass * 9.81 * (top0.centre.y() - t.centre.y()) +
+                            b.mass * 9.81 * (bottom0.centre.y() - b.centre.y());
+      maxEnergyRatio =
+          std::max(maxEnergyRatio, kineticEnergy(*world) / (t.mass * 9.81 * drop + released));
+    }
+    const BodyState t = bodyState(*world, top), b = bodyState(*world, bottom);
+    CAPTURE(minGap / d, maxEnergyRatio, t.centre.y() - top0.centre.y(), kineticEnergy(*world));
+    // No explosion: the kinetic energy never exceeds what gravity released (ratio <= 1 exactly
+    // for a dissipative scheme; 1.05 allows for the pressure solver's 1e-3 residual compression).
+    CHECK(maxEnergyRatio < 1.05);
+    // No interpenetration: the upper body's lowest particle never gets below the lower body's
+    // highest one, i.e. no particle is more than d/2 inside the other body's volume (particles
+    // stand for cubes of side d).
+    CHECK(minGap > 0);
+    // Settled: resting on the lower body (gap about one spacing) and kinetic energy below 1 % of
+    // the drop's potential energy.
+    CHECK(t.minY - b.maxY == Approx(d).margin(0.3 * d));
+    CHECK(kineticEnergy(*world) < 0.01 * t.mass * 9.81 * drop);
+  }
+}
