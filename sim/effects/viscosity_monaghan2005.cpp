@@ -6,7 +6,8 @@ namespace sim {
 
 void ViscosityMonaghan2005::attach(World& world) {
   viscosityOfMaterial_.clear();
-  // An elastic material counts as viscosity 0 and its particles are skipped (docs/elasticity.md).
+  // An elastic material is marked -1: its particles are skipped, and skipped as neighbours of
+  // fluid particles (docs/elasticity.md).
   for (const auto& m : world.materials)
     viscosityOfMaterial_.push_back(isFluid(m.kind) ? m.dynamicViscosity : -1.0);
 }
