@@ -249,3 +249,62 @@ TEST_CASE("a dam break does not push water through an anchored elastic plate",
   // The plate bent (it is elastic) but stayed a plate: its far face moved less than 2 d.
   CHECK(maxBend < 2 * d);
 }
+
+TEST_CASE("a neutrally buoyant elastic block stays put in water", "[stability][elasticity]") {
+  // An elastic block of the water's density (4 x 4 x 4, E = 100 kPa) in the middle of a water
+  // column 12 d deep, 4 d below the surface, on INDSPH for 0.5 s. Zero net force: its height
+  // relative to the water level (mean of the column tops) must stay put. Bound 1 d: the floating
+  // blocks of the buoyancy benchmark sit 0.4-0.6 d too high (docs/elasticity.md, unexplained), so
+  // 1 d is that offset with a margin; a wrong momentum exchange (a missing or one-sided pressure
+  // term) moves the block by many d in 0.5 s (free fall alone: 1.2 m). Sideways: 0.5 d (the scene
+  // is symmetric; what remains is the solver's noise).
+  const Real d = 0.01;  // [m]
+  const Real gap = (kWallGap - 0.5) * d;
+  const int width = 12, depth = 12, side = 4;
+  auto world = emptyTank(Vec3(width * d + 2 * gap, (depth + 4) * d, width * d + 2 * gap), d);
+  world->gravity = Vec3(0, -9.81, 0);
+  const int water = world->materials.add(sim::testing::water());
+  const int block = world->materials.add(elasticMaterial("neutral", 1000, 1e5, 0.3));
+  const int lo = (width - side) / 2, bottom = depth - 4 - side;  // [d] lattice cells
+  for (int i = 0; i < width; ++i)
+    for (int j = 0; j < depth; ++j)
+      for (int k = 0; k < width; ++k) {
+        const bool inBlock = i >= lo && i < lo + side && k >= lo && k < lo + side && j >= bottom &&
+                             j < bottom + side;
+        world->particles.add(Vec3::Constant(gap) + d * Vec3(i + 0.5, j + 0.5, k + 0.5),
+                             Vec3::Zero(), 1000 * d * d * d, inBlock ? block : water);
+      }
+  world->initialize();
+  PipelineOptions options;
+  options.solver = "indsph";
+  Pipeline pipeline = assemblePipeline(*world, options);
+  pipeline.attach(*world);
+  auto relativeHeight = [&] {  // [m] block centre below the mean column top
+    std::map<std::pair<int, int>, Real> top;
+    const auto& p = world->particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.material[i] != water) continue;
+      const auto key = std::make_pair(static_cast<int>(std::floor(p.x[i].x() / d)),
+                                      static_cast<int>(std::floor(p.x[i].z() / d)));
+      top[key] = std::max(top.count(key) ? top[key] : -1e30, p.x[i].y());
+    }
+    Real level = 0;
+    for (const auto& [key, y] : top) level += y;
+    return bodyState(*world, block).centre.y() - level / top.size();
+  };
+  const Vec3 centre0 = bodyState(*world, block).centre;
+  // The reference is taken after 0.1 s: in the first steps the lattice spreads into the 1.2 d gaps
+  // left at the walls (kWallGap) and the level drops by ~1.3 d, which is the tank, not buoyancy.
+  while (world->time < 0.1) pipeline.step(*world);
+  const Real start = relativeHeight();
+  Real maxDrift = 0;  // [m]
+  while (world->time < 0.5) {
+    pipeline.step(*world);
+    REQUIRE(allFinite(*world));
+    maxDrift = std::max(maxDrift, std::abs(relativeHeight() - start));
+  }
+  const Vec3 centre = bodyState(*world, block).centre;
+  CAPTURE(maxDrift / d, (centre - centre0).transpose() / d);
+  CHECK(maxDrift < d);
+  CHECK(std::hypot(centre.x() - centre0.x(), centre.z() - centre0.z()) < 0.5 * d);
+}
