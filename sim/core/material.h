@@ -11,6 +11,10 @@ namespace sim {
 
 enum class MaterialKind { kFluid, kElastic };
 
+// Fluid-only effects (viscosity, XSPH velocity smoothing) act on and between fluid particles only:
+// an elastic particle's motion is the elastic stage's business (docs/elasticity.md).
+constexpr bool isFluid(MaterialKind kind) { return kind == MaterialKind::kFluid; }
+
 struct Material {
   std::string name;
   MaterialKind kind = MaterialKind::kFluid;
@@ -57,6 +61,7 @@ class MaterialTable {
     return static_cast<int>(materials_.size()) - 1;
   }
   const Material& operator[](int index) const { return materials_.at(static_cast<size_t>(index)); }
+  bool isFluid(int index) const { return sim::isFluid((*this)[index].kind); }
   int size() const { return static_cast<int>(materials_.size()); }
   int indexOf(const std::string& name) const {
     for (int k = 0; k < size(); ++k)

@@ -6,7 +6,10 @@ namespace sim {
 
 void ViscosityMonaghan2005::attach(World& world) {
   viscosityOfMaterial_.clear();
-  for (const auto& m : world.materials) viscosityOfMaterial_.push_back(m.dynamicViscosity);
+  // An elastic material is marked -1: its particles are skipped, and skipped as neighbours of
+  // fluid particles (docs/elasticity.md).
+  for (const auto& m : world.materials)
+    viscosityOfMaterial_.push_back(isFluid(m.kind) ? m.dynamicViscosity : -1.0);
 }
 
 Real ViscosityMonaghan2005::maxTimeStep(const World& world) const {
@@ -42,15 +45,18 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
+    if (mui < 0) continue;  // elastic: not a fluid-only effect's particle
     Vec3 a = Vec3::Zero();
     Vec3 smooth = Vec3::Zero();
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
       const Index j = nf.indices[k];
       const Vec3 xij = p.x[i] - p.x[j];
-      if constexpr (kSmoothing) smooth += XsphMonaghan1989::pairTerm(p, kernel, i, j, xij);
+      // XSPH's rule (xsph_monaghan1989.h): same material only, which also leaves out solids.
+      if constexpr (kSmoothing)
+        if (p.material[j] == p.material[i]) smooth += XsphMonaghan1989::pairTerm(p, kernel, i, j, xij);
       const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
       const Real mu = 0.5 * (mui + muj);
-      if (mu == 0) continue;
+      if (mu == 0 || muj < 0) continue;
       const Real vx = (p.v[i] - p.v[j]).dot(xij);
       a += (p.mass[j] * mu / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
            gradF[k];

@@ -6,6 +6,7 @@
 
 #include "sim/core/reduction.h"
 #include "sim/effects/viscosity_monaghan2005.h"
+#include "sim/solid/fixed_particles.h"
 
 namespace sim {
 namespace {
@@ -134,6 +135,22 @@ void Pipeline::advanceVelocities(World& world, const StepContext& context) {
   }
   ScopedStageTimer t(timers_, solverSlot_);
   solver_->correctVelocities(world, context);
+  constrainFixed(world);
+}
+
+// The constrain step: anchored particles (sim/solid/fixed_particles.h) keep velocity 0 whatever
+// the pressure solver gave them. The solvers themselves do not know anchors, so a fixed particle
+// takes part in the pressure solve as a dynamic one and is reset afterwards; its neighbours'
+// remaining compression is corrected in the next step. Costs nothing in a scene where no particle
+// was ever flagged (the field does not exist), one pass over the flags otherwise.
+void Pipeline::constrainFixed(World& world) {
+  auto& p = world.particles;
+  if (!p.fields.has(field::kFixed)) return;
+  const auto& fixed = p.fields.get<std::int32_t>(field::kFixed);
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i)
+    if (fixed[i] != 0) p.v[i].setZero();
 }
 
 std::string Pipeline::describe() const {
@@ -148,6 +165,7 @@ std::string Pipeline::describe() const {
   for (const auto& e : effects_)
     if (e->kind() == Effect::Kind::kImplicit) out << "  " << k++ << ". " << e->name() << "\n";
   out << "  " << k++ << ". " << solver_->name() << ".solve         pressure correction\n";
+  out << "  " << k++ << ". constrain            fixed (anchored) particles keep v = 0\n";
   out << "  " << k++ << ". integrate            x += dt v\n";
   out << "stage decisions:\n";
   for (const auto& d : decisions_)

@@ -61,6 +61,8 @@ class Pipeline {
   std::vector<int> effectSlots_;
   // Non-pressure effects, velocity prediction and pressure solve for one step length.
   void advanceVelocities(World& world, const StepContext& context);
+  // Anchored particles back to velocity 0 after the pressure solve (see pipeline.cpp).
+  void constrainFixed(World& world);
 
   TimeStepInfo lastStep_;
   std::vector<Vec3> velocityAtStart_;  // [m/s] for redoing a rejected step

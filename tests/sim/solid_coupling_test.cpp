@@ -1,0 +1,310 @@
+// Elastic solids coupled with the fluids (issue 7): anchors under a pressure solve, fluid-only
+// effects that leave the solid alone, buoyancy (INDSPH, Wang et al. 2023 Figure 8), an
+// elastic-elastic drop at density ratio 1:60 (§5.2) and fluid-solid momentum exchange.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <map>
+
+#include "scene_fixtures.h"
+#include "sim/effects/viscosity_monaghan2005.h"
+#include "sim/effects/viscosity_weiler2018.h"
+#include "sim/effects/xsph_monaghan1989.h"
+#include "solid_fixtures.h"
+
+using namespace sim;
+using namespace sim::testing;
+
+namespace {
+
+// Positions per particle id (the pipeline re-sorts the arrays).
+std::map<std::int32_t, Vec3> positionsById(const World& world, int material) {
+  std::map<std::int32_t, Vec3> out;
+  const auto& p = world.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.material[i] == material) out[p.id[i]] = p.x[i];
+  return out;
+}
+
+// Angular momentum about the centre of mass [kg m^2/s] of the particles of one material.
+Vec3 angularMomentum(const World& world, int material) {
+  const auto& p = world.particles;
+  Vec3 c = Vec3::Zero(), momentum = Vec3::Zero();
+  Real m = 0;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.material[i] == material) {
+      c += p.mass[i] * p.x[i];
+      m += p.mass[i];
+    }
+  c /= m;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.material[i] == material) momentum += p.mass[i] * (p.x[i] - c).cross(p.v[i]);
+  return momentum;
+}
+
+}  // namespace
+
+TEST_CASE("anchored elastic particles stay put under a water column", "[unit][elasticity]") {
+  // A block of elastic particles, all anchored, on the floor of a tank under 8 d of water: the
+  // pressure solve pushes on it every step, the constrain step after it must undo that, so the
+  // block's positions are bit-identical after 0.1 s (a pressure-driven velocity of even 1e-12 m/s
+  // would show).
+  const Real d = 0.01;
+  Tank tank = hydrostaticTank(8 * d, 12 * d, d);
+  World& world = *tank.world;
+  // Re-build with the block: the tank fixture has one fluid; add the block material and flag the
+  // lowest 4 layers of the water column as the anchored elastic block.
+  const int mat = world.materials.add(elasticMaterial("anchor", 1000, 1e5, 0.3));
+  const Real fifthLayer = (kWallGap - 0.5 + 4) * d;  // [m] lattice layers sit at (kWallGap + k) d
+  for (std::size_t i = 0; i < world.particles.size(); ++i)
+    if (world.particles.x[i].y() < fifthLayer) {
+      world.particles.material[i] = mat;
+      setFixed(world.particles, static_cast<Index>(i));
+    }
+  PipelineOptions options;
+  options.solver = "indsph";
+  Pipeline pipeline = assemblePipeline(world, options);
+  pipeline.attach(world);
+  REQUIRE(pipeline.hasStage("elasticity"));
+  const auto before = positionsById(world, mat);
+  REQUIRE(before.size() == 4 * 8 * 8);
+  while (world.time < 0.1) pipeline.step(world);
+  REQUIRE(allFinite(world));
+  CHECK(positionsById(world, mat) == before);
+  // The water above did move (the test is not vacuous: the solver acted in this scene).
+  CHECK(maxSpeed(world) > 0);
+}
+
+TEST_CASE("XSPH and viscosity leave a rotating elastic block alone", "[unit][elasticity]") {
+  // A free elastic block spinning at 10 rad/s with no gravity, with XSPH, explicit viscosity and
+  // implicit viscosity all in the pipeline and a (non-physical) viscosity of 1 Pa s on the solid's
+  // material: the fluid-only effects must skip it, so the run is bit-identical to the same run
+  // with the elastic stage alone. Without the skip XSPH alone (eps 0.05) removes angular momentum
+  // at a rate of order eps/dt x the surface fraction — percents per step here.
+  const Real d = 0.01, omega = 10;  // [m], [rad/s]
+  auto run = [&](bool withFluidEffects) {
+    World world(solidWorldParameters(d, Box(Vec3::Constant(-1), Vec3::Constant(1)), Vec3::Zero()));
+    Material m = elasticMaterial("spinner", 1000, 1e5, 0.3);
+    m.dynamicViscosity = 1.0;  // [Pa s]
+    const int mat = world.materials.add(m);
+    addLattice(world, Vec3(-3 * d, -3 * d, -2 * d), Eigen::Vector3i(6, 6, 4), d, mat);
+    for (std::size_t i = 0; i < world.particles.size(); ++i)
+      world.particles.v[i] = Vec3(0, 0, omega).cross(world.particles.x[i]);
+    world.initialize();
+    // No pressure solver here sets p.density, which the fluid effects read: give it the value
+    // every solver gives a particle at rest spacing.
+    for (auto& rho : world.particles.density) rho = m.restDensity;
+    std::vector<std::unique_ptr<Effect>> effects;
+    if (withFluidEffects) {
+      effects.push_back(std::make_unique<XsphMonaghan1989>(0.05));
+      effects.push_back(std::make_unique<ViscosityMonaghan2005>(true));
+    }
+    effects.push_back(std::make_unique<ElasticityPeer2018>());
+    if (withFluidEffects) effects.push_back(std::make_unique<ViscosityWeiler2018>());
+    Pipeline pipeline(std::make_unique<NoPressureSolver>(), std::move(effects), {});
+    pipeline.attach(world);
+    const Vec3 start = angularMomentum(world, mat);
+    while (world.time < 0.05) pipeline.step(world);
+    REQUIRE(allFinite(world));
+    return std::make_pair(start, angularMomentum(world, mat));
+  };
+  const auto alone = run(false);
+  const auto coupled = run(true);
+  CHECK(coupled.second == alone.second);
+  // The elastic stage itself keeps the spin: within 1 % over 0.05 s (its pair forces are central
+  // in the reference frame only; backward Euler with a lagged rotation loses a little).
+  CHECK(alone.second.z() == Approx(alone.first.z()).epsilon(0.01));
+}
+
+namespace {
+
+struct BodyState {
+  Real minY = 1e30, maxY = -1e30;  // [m] lowest and highest particle centre
+  Vec3 centre = Vec3::Zero();      // [m] centre of mass
+  Real mass = 0;                   // [kg]
+};
+
+BodyState bodyState(const World& world, int material) {
+  BodyState s;
+  const auto& p = world.particles;
+  for (std::size_t i = 0; i < p.size(); ++i)
+    if (p.material[i] == material) {
+      s.minY = std::min(s.minY, p.x[i].y());
+      s.maxY = std::max(s.maxY, p.x[i].y());
+      s.centre += p.mass[i] * p.x[i];
+      s.mass += p.mass[i];
+    }
+  s.centre /= s.mass;
+  return s;
+}
+
+// A closed-floor tank without fluid, inner size `inner` [m], for solids-only scenes on INDSPH.
+std::unique_ptr<World> emptyTank(const Vec3& inner, Real d) {
+  TankSpec spec;
+  spec.innerMax = inner;
+  WorldParameters params;
+  params.particleSpacing = d;
+  params.domain = tankDomain(spec, d);
+  auto world = std::make_unique<World>(params);
+  addTankWalls(*world, spec, d);
+  return world;
+}
+
+}  // namespace
+
+TEST_CASE("elastic cuboid dropped on another at density ratio 1:60 settles",
+          "[stability][elasticity]") {
+  // Wang et al. 2023 §5.2: two elastic cuboids (E = 500 kPa) coupled only through the INDSPH
+  // pressure solve reach a density ratio of 60. The paper does not say which is on top; here the
+  // light one (1000 kg/m^3) falls 3 d onto the heavy one (60000) resting on the floor, upper body
+  // 6 x 4 x 6, lower 8 x 4 x 8 particles. (Heavy onto light does not hold: the heavy body sinks
+  // through the light one, docs/elasticity.md "What is not done yet".)
+  const Real d = 0.01, E = 5e5, nu = 0.3, drop = 3 * d;  // [m], [Pa], [1], [m]
+  const Real gap = (kWallGap - 0.5) * d;                // [m] lattice start from a wall
+  {
+    const Real rhoTop = 1000, rhoBottom = 60000;  // [kg/m^3]
+    auto world = emptyTank(Vec3(14 * d, 20 * d, 14 * d), d);
+    world->gravity = Vec3(0, -9.81, 0);
+    const int bottom = world->materials.add(elasticMaterial("bottom", rhoBottom, E, nu));
+    const int top = world->materials.add(elasticMaterial("top", rhoTop, E, nu));
+    addLattice(*world, Vec3(3 * d, gap, 3 * d), Eigen::Vector3i(8, 4, 8), d, bottom);
+    addLattice(*world, Vec3(4 * d, gap + 4 * d + drop, 4 * d), Eigen::Vector3i(6, 4, 6), d, top);
+    world->initialize();
+    PipelineOptions options;
+    options.solver = "indsph";
+    Pipeline pipeline = assemblePipeline(*world, options);
+    pipeline.attach(*world);
+    const BodyState top0 = bodyState(*world, top), bottom0 = bodyState(*world, bottom);
+    Real minGap = 1e30, maxEnergyRatio = 0;  // [m], [1]
+    while (world->time < 0.5) {
+      pipeline.step(*world);
+      REQUIRE(allFinite(*world));
+      const BodyState t = bodyState(*world, top), b = bodyState(*world, bottom);
+      minGap = std::min(minGap, t.minY - b.maxY);
+      // Energy the fall released so far (both bodies, the lower one settles too) plus the
+      // potential energy of the drop itself, which bounds the kinetic energy at every instant.
+      const Real released = t.mass * 9.81 * (top0.centre.y() - t.centre.y()) +
+                            b.mass * 9.81 * (bottom0.centre.y() - b.centre.y());
+      maxEnergyRatio =
+          std::max(maxEnergyRatio, kineticEnergy(*world) / (t.mass * 9.81 * drop + released));
+    }
+    const BodyState t = bodyState(*world, top), b = bodyState(*world, bottom);
+    CAPTURE(minGap / d, maxEnergyRatio, t.centre.y() - top0.centre.y(), kineticEnergy(*world));
+    // No explosion: the kinetic energy never exceeds what gravity released (ratio <= 1 exactly
+    // for a dissipative scheme; 1.05 allows for the pressure solver's 1e-3 residual compression).
+    CHECK(maxEnergyRatio < 1.05);
+    // No interpenetration: the upper body's lowest particle never gets below the lower body's
+    // highest one, i.e. no particle is more than d/2 inside the other body's volume (particles
+    // stand for cubes of side d).
+    CHECK(minGap > 0);
+    // Settled: resting on the lower body (gap about one spacing) and kinetic energy below 1 % of
+    // the drop's potential energy.
+    CHECK(t.minY - b.maxY == Approx(d).margin(0.3 * d));
+    CHECK(kineticEnergy(*world) < 0.01 * t.mass * 9.81 * drop);
+  }
+}
+
+TEST_CASE("a dam break does not push water through an anchored elastic plate",
+          "[stability][elasticity]") {
+  // Momentum exchange without leaks: a water column (8 x 8 x 6 d) collapses onto an elastic plate
+  // 2 d thick spanning the tank's width, anchored by its two lowest layers, 20 d tall (the run-up
+  // of an 8 d column stays below 2 x 8 d). Contact is only the INDSPH pressure solve (no penalty
+  // force), so a leak would show as a water particle beyond the plate's far face.
+  const Real d = 0.01;  // [m]
+  const Real gap = (kWallGap - 0.5) * d;
+  auto world = emptyTank(Vec3(24 * d, 24 * d, 6 * d + 2 * gap), d);
+  world->gravity = Vec3(0, -9.81, 0);
+  const int water = world->materials.add(sim::testing::water());
+  const int plate = world->materials.add(elasticMaterial("plate", 1000, 1e6, 0.3));
+  addLattice(*world, Vec3(gap, gap, gap), Eigen::Vector3i(8, 8, 6), d, water);
+  addLattice(*world, Vec3(14 * d, gap, gap), Eigen::Vector3i(2, 20, 6), d, plate);
+  world->initialize();
+  for (std::size_t i = 0; i < world->particles.size(); ++i)
+    if (world->particles.material[i] == plate && world->particles.x[i].y() < gap + 2 * d)
+      setFixed(world->particles, static_cast<Index>(i));
+  PipelineOptions options;
+  options.solver = "indsph";
+  Pipeline pipeline = assemblePipeline(*world, options);
+  pipeline.attach(*world);
+  Real maxPlateX = 0, maxWaterBeyond = -1e30, maxBend = 0;  // [m]
+  const Real plateFace0 = 16 * d - 0.5 * d;                 // [m] far particle layer at rest
+  while (world->time < 0.4) {
+    pipeline.step(*world);
+    REQUIRE(allFinite(*world));
+    Real face = -1e30, waterFront = -1e30;
+    const auto& p = world->particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.material[i] == plate) face = std::max(face, p.x[i].x());
+      else waterFront = std::max(waterFront, p.x[i].x());
+    }
+    maxPlateX = std::max(maxPlateX, face);
+    maxWaterBeyond = std::max(maxWaterBeyond, waterFront - face);
+    maxBend = std::max(maxBend, face - plateFace0);
+  }
+  CAPTURE(maxWaterBeyond / d, maxBend / d);
+  // The water reached the plate (the test is not vacuous): its front came within 1.5 d of the
+  // plate's near face at 14.5 d.
+  CHECK(maxWaterBeyond > -3.5 * d);
+  // No water particle ever got past the plate's far particle layer.
+  CHECK(maxWaterBeyond < 0);
+  // The plate bent (it is elastic) but stayed a plate: its far face moved less than 2 d.
+  CHECK(maxBend < 2 * d);
+}
+
+TEST_CASE("a neutrally buoyant elastic block stays put in water", "[stability][elasticity]") {
+  // An elastic block of the water's density (4 x 4 x 4, E = 100 kPa) in the middle of a water
+  // column 12 d deep, 4 d below the surface, on INDSPH for 0.5 s. Zero net force: its height
+  // relative to the water level (mean of the column tops) must stay put. Bound 1 d: the floating
+  // blocks of the buoyancy benchmark sit 0.4-0.6 d too high (docs/elasticity.md, unexplained), so
+  // 1 d is that offset with a margin; a wrong momentum exchange (a missing or one-sided pressure
+  // term) moves the block by many d in 0.5 s (free fall alone: 1.2 m). Sideways: 0.5 d (the scene
+  // is symmetric; what remains is the solver's noise).
+  const Real d = 0.01;  // [m]
+  const Real gap = (kWallGap - 0.5) * d;
+  const int width = 12, depth = 12, side = 4;
+  auto world = emptyTank(Vec3(width * d + 2 * gap, (depth + 4) * d, width * d + 2 * gap), d);
+  world->gravity = Vec3(0, -9.81, 0);
+  const int water = world->materials.add(sim::testing::water());
+  const int block = world->materials.add(elasticMaterial("neutral", 1000, 1e5, 0.3));
+  const int lo = (width - side) / 2, bottom = depth - 4 - side;  // [d] lattice cells
+  for (int i = 0; i < width; ++i)
+    for (int j = 0; j < depth; ++j)
+      for (int k = 0; k < width; ++k) {
+        const bool inBlock = i >= lo && i < lo + side && k >= lo && k < lo + side && j >= bottom &&
+                             j < bottom + side;
+        world->particles.add(Vec3::Constant(gap) + d * Vec3(i + 0.5, j + 0.5, k + 0.5),
+                             Vec3::Zero(), 1000 * d * d * d, inBlock ? block : water);
+      }
+  world->initialize();
+  PipelineOptions options;
+  options.solver = "indsph";
+  Pipeline pipeline = assemblePipeline(*world, options);
+  pipeline.attach(*world);
+  auto relativeHeight = [&] {  // [m] block centre below the mean column top
+    std::map<std::pair<int, int>, Real> top;
+    const auto& p = world->particles;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.material[i] != water) continue;
+      const auto key = std::make_pair(static_cast<int>(std::floor(p.x[i].x() / d)),
+                                      static_cast<int>(std::floor(p.x[i].z() / d)));
+      top[key] = std::max(top.count(key) ? top[key] : -1e30, p.x[i].y());
+    }
+    Real level = 0;
+    for (const auto& [key, y] : top) level += y;
+    return bodyState(*world, block).centre.y() - level / top.size();
+  };
+  const Vec3 centre0 = bodyState(*world, block).centre;
+  // The reference is taken after 0.1 s: in the first steps the lattice spreads into the 1.2 d gaps
+  // left at the walls (kWallGap) and the level drops by ~1.3 d, which is the tank, not buoyancy.
+  while (world->time < 0.1) pipeline.step(*world);
+  const Real start = relativeHeight();
+  Real maxDrift = 0;  // [m]
+  while (world->time < 0.5) {
+    pipeline.step(*world);
+    REQUIRE(allFinite(*world));
+    maxDrift = std::max(maxDrift, std::abs(relativeHeight() - start));
+  }
+  const Vec3 centre = bodyState(*world, block).centre;
+  CAPTURE(maxDrift / d, (centre - centre0).transpose() / d);
+  CHECK(maxDrift < d);
+  CHECK(std::hypot(centre.x() - centre0.x(), centre.z() - centre0.z()) < 0.5 * d);
+}
