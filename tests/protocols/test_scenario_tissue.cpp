@@ -246,12 +246,11 @@ TEST_CASE("tissue: a few steps of the paper's 10 kPa experiment stay finite and 
   CHECK(m.retinaMaxDisplacement <= m.maxDisplacement[0]);  // retina samples follow sclera particles
 }
 
-// Anchored particles keep their rest positions: they are Dirichlet rows of the elastic solve, but
-// the pressure solver runs after it and moves them in a coupled scene until the pipeline's
-// "constrain" hook of helper "solid" lands (docs/elasticity.md, "not done"). Measured before it:
-// 0.36 mm after 3 ms. [!mayfail] until then; remove the tag once the hook is merged.
+// Anchored particles keep their rest positions: they are Dirichlet rows of the elastic solve, and
+// the pipeline's "constrain" step sets them back to v = 0 after the pressure solver (which runs
+// after the elastic solve and moved them 0.36 mm in 3 ms before that step existed).
 TEST_CASE("tissue: anchored tissue particles stay at rest in a coupled eye scene",
-          "[stability][protocol][tissue][!mayfail]") {
+          "[stability][protocol][tissue]") {
   const PaperRun& run = paperRun();
   const Scenario& s = run.scenario;
   const sim::DynamicParticles& particles = s.world->particles;
