@@ -1,6 +1,8 @@
 // Elastic tissue in eye scenarios (issue 7, protocols/scenario/tissue_particles.h): the decision
 // in both directions, the elastic sclera/fat replacing the wall they cover, the example protocols
 // (validate and plan), a few steps of the paper's experiment with its report, and bad input.
+#include <unistd.h>
+
 #include <catch2/catch.hpp>
 
 #include <cmath>
@@ -194,7 +196,9 @@ const PaperRun& paperRun() {
     for (Posture& posture : r.protocol.schedule.postures) posture.duration.value = 1.5e-3;
     r.protocol.outputs.frameInterval.value = 1e-3;
     r.scenario = assembleScenario(r.protocol);
-    const fs::path out = fs::temp_directory_path() / "tamponade_tissue_run";
+    // One folder per process: CTest runs the two cases sharing this run as parallel processes.
+    const fs::path out =
+        fs::temp_directory_path() / ("tamponade_tissue_run_" + std::to_string(::getpid()));
     fs::remove_all(out);
     fs::create_directories(out);
     RunOptions options;
