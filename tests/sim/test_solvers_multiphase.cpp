@@ -278,10 +278,11 @@ TEST_CASE("INDSPH neutral buoyancy: a blob of the water's density moves with its
 }
 
 // [!mayfail], a known open defect: against the neutral blob (the control, same settling flow) the
-// 970 blob rises only +0.07 d and the 1060 blob sinks -0.33 d in 0.3 s, against 1.8 d / 3.4 d
-// without drag. Cause measured (docs/interface.md, validation 6): the XSPH velocity smoothing
-// blends velocities across phases and damps the blob's relative motion; with it off the signal
-// is +0.23 d / -0.28 d here and +0.86 d / -1.74 d (of d = 2.5 mm) at d = 2.5 mm.
+// 970 blob rises only +0.28 d and the 1060 blob sinks -0.20 d in 0.3 s, against 1.8 d / 3.4 d
+// without drag. Cause measured (docs/interface.md, validation 6): XSPH smoothing across phases
+// damped it (+0.07 d / -0.33 d before XSPH was restricted to one material); what is left is
+// resolution: with XSPH off the signal grows to +0.86 d / -1.74 d at d = 2.5 mm (8x the particles,
+// too slow for CI).
 TEST_CASE("INDSPH near-neutral buoyancy: 970 rises and 1060 sinks against the neutral blob",
           "[validation][solvers][indsph][buoyancy][!mayfail]") {
   const Real d = kBlobSpacing;
