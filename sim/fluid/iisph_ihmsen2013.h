@@ -15,7 +15,11 @@
 namespace sim {
 
 struct IisphParameters {
-  Real tolerance = 1e-3;       // [1] stop when mean max(rho/rho0 - 1, 0) of the prediction < this
+  // [1] stop when mean max(rho/rho0 - 1, 0) of the prediction < this. 1e-4, the eta Wang et al.
+  // 2023 use for INDSPH: Jacobi leaves the long-wavelength part of the error, which the mean
+  // compression barely sees; on the 8 cm hydrostatic column the worst layer's pressure error was
+  // 6.0 % at 1e-3, 3.8 % at 3e-4 and 3.2 % at 1e-4 (tests/sim/test_hydrostatic.cpp).
+  Real tolerance = 1e-4;
   Real relaxation = 0.5;       // [1] omega of the relaxed Jacobi update
   int minIterations = 2;
   int maxIterations = 100;

@@ -154,11 +154,10 @@ TEST_CASE("number-density baseline hydrostatic tank matches rho g (H - y)",
   checkProfile(runProfile(optionsFor("number_density")));
 }
 
-// [!mayfail]: IISPH meets the mean bound (2.2 %) but its lowest interior layer, 2-3 spacings
-// above the floor, reads +6 % (measured 2026-11-22), over the 5 % single-layer bound. IISPH's
-// wall term does not mirror pressure (p_b = 0 in the symmetric sum, docs/solvers.md; mirroring
-// was unstable), so the first layers above the floor carry the wall's share of the load with a
-// local pressure error. Left visible here, not hidden behind a looser bound.
-TEST_CASE("IISPH hydrostatic tank matches rho g (H - y)", "[validation][hydrostatic][!mayfail]") {
+// IISPH at its default tolerance 1e-4 (mean compression; the INDSPH eta). At 1e-3 its worst
+// interior layer read +6 % (measured 2026-11-22): relaxed Jacobi stops with a long-wavelength
+// pressure error over the column that a mean compression of 1e-3 still allows (3e-4: 3.8 %,
+// 1e-4: 3.2 %, mean 1.7 %), so the tolerance, not the wall term, was the cause.
+TEST_CASE("IISPH hydrostatic tank matches rho g (H - y)", "[validation][hydrostatic]") {
   checkProfile(runProfile(optionsFor("iisph")));
 }
