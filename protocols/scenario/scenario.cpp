@@ -17,6 +17,7 @@
 #include "meshing/sample_volume.h"
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/protocol_error.h"
+#include "protocols/scenario/relax_fill.h"
 #include "sim/core/error.h"
 
 namespace protocols {
@@ -285,7 +286,8 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   const meshing::FillPlane plane = meshing::findFillPlane(s.cavity, p.tamponade.fill.value, oilSide);
   meshing::VolumeSamplingOptions vo;
   vo.spacing = d;
-  vo.wallGap = options.wallGapFactor * d;
+  const bool relaxed = options.massRule == MassRule::kRelaxedFill;
+  vo.wallGap = options.wallGapFactor.value_or(relaxed ? 0.5 : 1.2) * d;
   oil.volume = plane.volumeAbove;
   aqueous.volume = plane.volumeBelow;
   std::vector<sim::Vec3> oilPoints, aqueousPoints;
@@ -387,6 +389,30 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     s.world->initialize();
   } catch (const sim::SimError& error) {
     fail(p.accuracy.particleSpacing.where, error.what(), "check the accuracy settings");
+  }
+  if (relaxed && oil.count + aqueous.count > 0) {
+    FillRelaxation relaxation;
+    relaxation.passes = options.relaxationPasses;
+    relaxation.movable = {aqueous.materialIndex, oil.materialIndex};
+    const FillRelaxationResult r = relaxFill(*s.world, relaxation);
+    s.startMeanFraction = r.meanAfter;
+    s.startMaxFraction = r.maxAfter;
+    s.fillCompression = r.meanAfter;
+    const double shell = s.cavityVolume - 0.5 * d * s.cavityArea;  // [m^3]
+    s.heldVolumeRatio = static_cast<double>(oil.count + aqueous.count) * d * d * d / shell;
+    auto percent = [](double x) { return std::to_string(static_cast<int>(std::lround(100.0 * x))); };
+    auto permille = [](double x) {
+      const long v = std::lround(1000.0 * x);
+      return std::to_string(v / 10) + "." + std::to_string(v % 10);
+    };
+    s.notes.push_back(
+        "fluid fill: particles at rest mass rho d^3 hold " + percent(s.heldVolumeRatio) +
+        " % of the cavity minus the wall's d/2 shell (" +
+        percent(static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume) +
+        " % of the cavity); a start-up shifting pass (" + std::to_string(relaxation.passes) +
+        " passes, not simulated time) spreads them: density at t = 0 is " +
+        permille(r.meanAfter) + " % of rest on average, " + permille(r.maxAfter) + " % at most");
+    s.world->updateNeighbors();
   }
   resolveOutputFields(p, s);
   return s;

@@ -41,6 +41,13 @@ namespace protocols {
 // direction, the first round(fill N) are tamponade, so the phases' shares of the fluid are exact
 // to one particle and the interface is flat to within one lattice layer.
 enum class MassRule {
+  // m = rho d^3 and a lattice from d/2 (the gap where the wall particles' Akinci volumes take
+  // over), so the particles hold N d^3 ~= V - A d/2: the cavity minus the wall's shell, at rest
+  // density. A start-up shifting pass (relax_fill.h, not simulated time) then moves the
+  // outermost layer off the over-dense wall into the staircase holes, so the fluid starts
+  // nearly uniform at rest density and the implicit solvers (INDSPH, DFSPH) can run it.
+  // Measured (emmetropic, d = 1.2 mm): see docs/protocols.md "Fluid fill".
+  kRelaxedFill,
   // m = rho d^3 (V - A d/2) / (N d^3): the fluid at rest density fills the cavity up to d/2 from
   // the wall (where the wall particles' Akinci volumes take over). The lattice sits 1.2 d from the
   // wall, plus up to sqrt(3)/2 d of staircase on a curved wall, so it starts ~30 % compressed at
@@ -60,12 +67,15 @@ enum class MassRule {
 
 struct ScenarioOptions {
   std::optional<AccuracyPreset> accuracy;  // overrides the protocol's preset (explicit values too)
-  double wallGapFactor = 1.2;              // [1] fluid starts this many spacings from the wall
+  // [1] fluid lattice starts this many spacings from the wall; unset: 0.5 for kRelaxedFill,
+  // 1.2 for the other rules (at d the Akinci wall term over-estimates density by 6 %).
+  std::optional<double> wallGapFactor;
   // [1] wall particle spacing / d. One layer of Poisson-disk wall particles at d leaves holes up
   // to ~1.8 d wide (RSA, sample_surface.h) that fluid particles leak through under gravity (seen
   // at d = 1.2 mm after 0.04 s); at 0.5 d the holes are ~0.9 d, smaller than a particle.
   double wallSpacingFactor = 0.5;
-  MassRule massRule = MassRule::kFillCavity;
+  MassRule massRule = MassRule::kRelaxedFill;
+  int relaxationPasses = 60;  // [1] shifting passes of kRelaxedFill (relax_fill.h)
 };
 
 struct FluidPhase {
@@ -121,6 +131,12 @@ struct Scenario {
   // (report, `tamponade report DIR`, resume) is recomputed from.
   std::vector<std::string> outputFields;
   double fillCompression = 1.0;       // [1] initial mean density / rest density (MassRule)
+  // kRelaxedFill: the kernel-summed volume fraction C (relax_fill.h) of the fluid particles at
+  // t = 0, mean and max (1 = rest density); and the fluid volume the particles hold, N d^3, over
+  // the cavity minus the wall's d/2 shell, V - A d/2.
+  double startMeanFraction = 0.0;     // [1]
+  double startMaxFraction = 0.0;      // [1]
+  double heldVolumeRatio = 0.0;       // [1]
 
   // Tamponade flags of the world's dynamic particles in their current order, for the coverage
   // metric (1 = tamponade material).

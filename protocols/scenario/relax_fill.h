@@ -1,0 +1,41 @@
+// Start-up relaxation of the fluid fill (not part of the simulated time): the lattice placed
+// d/2 from the wall holds the fluid's volume at rest density (particle mass rho d^3, count x d^3
+// = the cavity minus the wall's d/2 shell, within the lattice's staircase), but its outermost
+// particles sit where a single Akinci wall layer over-estimates the density (+55 % at d/2 from a
+// face, docs/solvers.md), and the staircase leaves holes along a curved wall. A few passes of
+// particle shifting (Xu, Stansby & Laurence 2009, J. Comput. Phys. 228; Lind et al. 2012,
+// J. Comput. Phys. 231, eq. 8: dx_i = -D grad C_i) move every fluid particle down the gradient of
+// its kernel-summed volume fraction C_i = sum_j V0_j W_ij + sum_b V_b W_ib (fluid, fixed dynamic
+// particles such as tissue, and walls): particles leave the over-dense wall layer for the holes,
+// the fluid becomes nearly uniform at C ~ 1, and the implicit solvers (INDSPH, DFSPH) start from
+// a state they can hold (instead of the ~30 % compression of MassRule::kFillCavity).
+#pragma once
+
+#include "sim/world/world.h"
+
+namespace protocols {
+
+struct FillRelaxation {
+  int passes = 60;              // [1] shifting passes
+  double shiftFactor = 0.1;     // [1] D / d^2: dx = -shiftFactor d^2 grad C
+  double maxShift = 0.1;        // [1] per pass, in spacings (keeps the pass from tunnelling)
+  std::vector<int> movable;     // material indices that move (the fluids); the rest stay fixed
+};
+
+struct FillRelaxationResult {
+  double meanBefore = 0.0;  // [1] mean C over the movable particles before the passes
+  double maxBefore = 0.0;   // [1]
+  double meanAfter = 0.0;   // [1] after
+  double maxAfter = 0.0;    // [1]
+};
+
+// Kernel-summed volume fraction C_i (see above) of every dynamic particle, in particle order.
+// Needs the wall volumes (World::initialize).
+std::vector<double> volumeFractions(const sim::World& world);
+
+// Shifts the movable particles of an initialized World (positions only; velocities are zeroed)
+// and leaves the neighbour lists to the next step. Deterministic and independent of the thread
+// count (Jacobi passes over a private grid; the World's particle order is not changed).
+FillRelaxationResult relaxFill(sim::World& world, const FillRelaxation& options);
+
+}  // namespace protocols
