@@ -1,8 +1,8 @@
-// Start-up relaxation of the fluid fill (not part of the simulated time): the lattice placed
-// d/2 from the wall holds the fluid's volume at rest density (particle mass rho d^3, count x d^3
-// = the cavity minus the wall's d/2 shell, within the lattice's staircase), but its outermost
-// particles sit where a single Akinci wall layer over-estimates the density (+55 % at d/2 from a
-// face, docs/solvers.md), and the staircase leaves holes along a curved wall. A few passes of
+// Start-up relaxation of the fluid fill (not part of the simulated time): particles of rest mass
+// rho d^3 on a lattice cut 0.65 d from the wall (MassRule::kRelaxedFill, scenario.h) hold the
+// fluid's volume at rest density, but the outermost of them sit where the single Akinci wall
+// layer over-estimates the density (+55 % at d/2 from a face, +6 % at d, docs/solvers.md), and
+// the staircase of the lattice leaves holes along a curved wall. A few passes of
 // particle shifting (Xu, Stansby & Laurence 2009, J. Comput. Phys. 228; Lind et al. 2012,
 // J. Comput. Phys. 231, eq. 8: dx_i = -D grad C_i) move every fluid particle down the gradient of
 // its kernel-summed volume fraction C_i = sum_j V0_j W_ij + sum_b V_b W_ib (fluid, fixed dynamic
@@ -16,7 +16,7 @@
 namespace protocols {
 
 struct FillRelaxation {
-  int passes = 60;              // [1] shifting passes
+  int passes = 100;              // [1] shifting passes
   double shiftFactor = 0.1;     // [1] D / d^2: dx = -shiftFactor d^2 grad C
   double maxShift = 0.1;        // [1] per pass, in spacings (keeps the pass from tunnelling)
   std::vector<int> movable;     // material indices that move (the fluids); the rest stay fixed

@@ -287,7 +287,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   meshing::VolumeSamplingOptions vo;
   vo.spacing = d;
   const bool relaxed = options.massRule == MassRule::kRelaxedFill;
-  vo.wallGap = options.wallGapFactor.value_or(relaxed ? 0.5 : 1.2) * d;
+  vo.wallGap = options.wallGapFactor.value_or(relaxed ? 0.65 : 1.2) * d;
   oil.volume = plane.volumeAbove;
   aqueous.volume = plane.volumeBelow;
   std::vector<sim::Vec3> oilPoints, aqueousPoints;
@@ -347,13 +347,13 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   s.pipelineOptions.solver = std::string(toString(p.solver.value));
   bool known = false;
   for (const auto& entry : sim::solverRegistry()) known = known || entry.name == s.pipelineOptions.solver;
-  if (!p.solver.where.isInFile()) {
-    // The protocol did not choose a solver. The format's default (INDSPH) is registered but not
-    // yet stable on eye scenes (a draft eye run throws particles out of the cavity within 10 ms,
-    // 2026-11-22), and DFSPH does not hold a tank at rest; WCSPH is the engine's calm solver. Use
-    // it and say so: the note shows in `plan` and the report. Naming a solver overrides this.
+  // A protocol that names no solver gets the format's default, INDSPH (the paper's method):
+  // since the fill starts at rest density (MassRule::kRelaxedFill) it runs the eye scenes
+  // (docs/protocols.md "Fluid fill"). The older fill rules start compressed (kFillCavity ~30 %),
+  // which only WCSPH tolerates: with them the default falls back to WCSPH, with a note.
+  if (!p.solver.where.isInFile() && !relaxed) {
     s.notes.push_back("no solver chosen: using 'wcsph' (the default '" + s.pipelineOptions.solver +
-                      "' is not yet stable on eye scenes; set `solver` to choose)");
+                      "' needs the relaxed fill, which this mass rule does not use)");
     s.pipelineOptions.solver = "wcsph";
     known = true;
   }
@@ -401,7 +401,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     const double shell = s.cavityVolume - 0.5 * d * s.cavityArea;  // [m^3]
     s.heldVolumeRatio = static_cast<double>(oil.count + aqueous.count) * d * d * d / shell;
     auto percent = [](double x) { return std::to_string(static_cast<int>(std::lround(100.0 * x))); };
-    auto permille = [](double x) {
+    auto oneDecimal = [](double x) {
       const long v = std::lround(1000.0 * x);
       return std::to_string(v / 10) + "." + std::to_string(v % 10);
     };
@@ -411,7 +411,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
         percent(static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume) +
         " % of the cavity); a start-up shifting pass (" + std::to_string(relaxation.passes) +
         " passes, not simulated time) spreads them: density at t = 0 is " +
-        permille(r.meanAfter) + " % of rest on average, " + permille(r.maxAfter) + " % at most");
+        oneDecimal(r.meanAfter) + " % of rest on average, " + oneDecimal(r.maxAfter) + " % at most");
     s.world->updateNeighbors();
   }
   resolveOutputFields(p, s);

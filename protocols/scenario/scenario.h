@@ -8,14 +8,14 @@
 //  2. walls: meshing::sampleSurface at the particle spacing d; outward normals; Akinci volume 0
 //     (World::initialize computes it); regions per wall particle (anatomy::assignRegions) in
 //     RetinaMap, keyed by wall index, and also in the wall `tag` (the RegionSet bits);
-//  3. fluids: lattice particles 1.2 d from the wall (engine-notes: at d the Akinci wall term
-//     overestimates density by 6 %), split into the two phases along the fill direction of the
-//     first posture's gravity (light oil floats: -g; heavy oil sinks: +g) so the tamponade's
-//     share is the fill fraction, particles at rest density (MassRule below);
+//  3. fluids: lattice particles of rest mass from 0.65 d of the wall, relaxed by a start-up
+//     particle-shifting pass (MassRule::kRelaxedFill, relax_fill.h), split into the two phases
+//     along the fill direction of the first posture's gravity (light oil floats: -g; heavy oil
+//     sinks: +g) so the tamponade's share is the fill fraction (MassRule below);
 //  4. materials from the anatomy material library (protocol overrides applied), the World and
-//     PipelineOptions (solver by name, effects forced as the protocol says). While the default
-//     multiphase solver (issue 6) is missing from the build, a protocol that names no solver
-//     runs with "wcsph", with a note; one that names a missing solver is an error.
+//     PipelineOptions (solver by name, effects forced as the protocol says). A protocol that names
+//     no solver runs with the format's default, "indsph" (with the older, compressed fill rules:
+//     "wcsph", with a note); one that names a missing solver is an error.
 // Tissues (sclera, orbital fat): decided elastic or rigid and, when elastic, sampled as elastic
 // particles that replace the wall they cover (protocols/scenario/tissue_particles.h).
 #pragma once
@@ -41,12 +41,16 @@ namespace protocols {
 // direction, the first round(fill N) are tamponade, so the phases' shares of the fluid are exact
 // to one particle and the interface is flat to within one lattice layer.
 enum class MassRule {
-  // m = rho d^3 and a lattice from d/2 (the gap where the wall particles' Akinci volumes take
-  // over), so the particles hold N d^3 ~= V - A d/2: the cavity minus the wall's shell, at rest
-  // density. A start-up shifting pass (relax_fill.h, not simulated time) then moves the
-  // outermost layer off the over-dense wall into the staircase holes, so the fluid starts
-  // nearly uniform at rest density and the implicit solvers (INDSPH, DFSPH) can run it.
-  // Measured (emmetropic, d = 1.2 mm): see docs/protocols.md "Fluid fill".
+  // m = rho d^3 and a lattice from 0.65 d, then a start-up shifting pass (relax_fill.h, not
+  // simulated time) that moves the outermost layer off the over-dense wall into the staircase
+  // holes, so the fluid starts nearly uniform at rest density and the implicit solvers (INDSPH,
+  // DFSPH) can run it. The gap is where the single Akinci wall layer lets fluid at rest density
+  // end: measured on tiny.toml (emmetropic, d = 1.2 mm, 100 passes), a lattice from d/2 holds
+  // 1.014 x (V - A d/2) and relaxes to a mean density of 1.049 rho0 (the wall pushes the fluid
+  // ~0.6 d away, not d/2); from 0.65 d it holds 0.962 x (V - A d/2) = 80 % of V and relaxes to
+  // 1.0015 rho0 (max 1.039); from 0.7 d, 0.946 and 0.987 rho0. So the particles hold the
+  // cavity minus a shell of ~0.6 d (what this wall model leaves to the fluid), 4 % less than
+  // V - A d/2; the phases' shares are exact to one particle.
   kRelaxedFill,
   // m = rho d^3 (V - A d/2) / (N d^3): the fluid at rest density fills the cavity up to d/2 from
   // the wall (where the wall particles' Akinci volumes take over). The lattice sits 1.2 d from the
@@ -67,7 +71,7 @@ enum class MassRule {
 
 struct ScenarioOptions {
   std::optional<AccuracyPreset> accuracy;  // overrides the protocol's preset (explicit values too)
-  // [1] fluid lattice starts this many spacings from the wall; unset: 0.5 for kRelaxedFill,
+  // [1] fluid lattice starts this many spacings from the wall; unset: 0.65 for kRelaxedFill,
   // 1.2 for the other rules (at d the Akinci wall term over-estimates density by 6 %).
   std::optional<double> wallGapFactor;
   // [1] wall particle spacing / d. One layer of Poisson-disk wall particles at d leaves holes up
@@ -75,7 +79,7 @@ struct ScenarioOptions {
   // at d = 1.2 mm after 0.04 s); at 0.5 d the holes are ~0.9 d, smaller than a particle.
   double wallSpacingFactor = 0.5;
   MassRule massRule = MassRule::kRelaxedFill;
-  int relaxationPasses = 60;  // [1] shifting passes of kRelaxedFill (relax_fill.h)
+  int relaxationPasses = 100;  // [1] shifting passes of kRelaxedFill (relax_fill.h)
 };
 
 struct FluidPhase {
