@@ -148,8 +148,9 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
         growTo(buf.values, m);
         for (std::size_t a = first; a < m; ++a) {
           const Vec3 xij = xi - sortedX[slot[a]];
-          buf.gradients[a] = kernel->gradW(xij);
-          buf.values[a] = kernel->W(xij);
+          const Real r = xij.norm();  // one square root for both
+          buf.gradients[a] = kernel->gradW(xij, r);
+          buf.values[a] = kernel->W(r);
         }
       }
       for (std::size_t a = first; a < m; ++a) slot[a] = sorted[slot[a]];
