@@ -196,5 +196,30 @@ int main(int argc, char** argv) {
                probes.pressureSlope * k, bottomSum * k / d, topSum * k / d,
                probes.underPressure * k, probes.underDepth * k / d,
                1000 * 9.81 * probes.underDepth * k, gravityRatio * 1000 * 9.81 * height);
+  // Layer profile of the far-field columns at the end (stderr): mean height of the k-th particle
+  // from the floor, in d (a lattice at rest: k + 1/2), and its mean pressure.
+  if (std::getenv("BUOYANCY_TRACE")) {
+    std::map<std::pair<int, int>, std::vector<std::pair<Real, Real>>> columns;
+    const auto& p = world.particles;
+    const auto& pressure = p.fields.get<Real>("pressure");
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec3& x = p.x[i];
+      if (p.material[i] == block ||
+          std::max(std::abs(x.x() - centre.x()), std::abs(x.z() - centre.z())) <
+              0.5 * blockWidth * d + 3 * d)
+        continue;
+      columns[{static_cast<int>(std::floor(x.x() / d)), static_cast<int>(std::floor(x.z() / d))}]
+          .push_back({x.y(), pressure[i]});
+    }
+    std::vector<Real> y(40, 0.0), pk(40, 0.0);
+    std::vector<int> n(40, 0);
+    for (auto& [key, c] : columns) {
+      std::sort(c.begin(), c.end());
+      for (std::size_t r = 0; r < c.size() && r < 40; ++r) y[r] += c[r].first, pk[r] += c[r].second, ++n[r];
+    }
+    for (int r = 0; r < 40 && n[r]; ++r)
+      std::fprintf(stderr, "# layer %d: y %.3f d, p %.1f Pa, columns %d\n", r, y[r] / n[r] / d,
+                   pk[r] / n[r], n[r]);
+  }
   return 0;
 }
