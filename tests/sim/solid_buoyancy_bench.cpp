@@ -5,6 +5,10 @@
 // and top (mean of its lowest and highest particle layer -/+ d/2) — averaged over the second half
 // of the run. A benchmark, not a test: the 1 s runs take minutes at d = 5 mm (docs/elasticity.md).
 //
+// It also prints (stderr) two other water levels (the far-field particle count x d, and where the
+// far-field hydrostatic pressure line reaches p = 0) and the pressure under the block against its
+// weight per area (docs/elasticity.md, "Buoyancy"; the count level assumes the layered floor at
+// y = 0); with BUOYANCY_TRACE set, also the trace and the far-field layer profile at the end.
 // Walls: "layered" (default; sim/boundary/wall_layers.h, 3 layers of static particles whose
 // pressure INDSPH solves for, eq. 21; the fluid lattice starts at the wall faces) or "akinci" (one
 // surface layer, fluid kWallGap d away: the session-2 numbers of docs/elasticity.md).
@@ -17,6 +21,8 @@
 #include <cstdlib>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "scene_fixtures.h"
 #include "solid_fixtures.h"
