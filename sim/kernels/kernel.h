@@ -38,8 +38,9 @@ class Kernel {
   Real W0() const { return W(0.0); }
 
   // Gradient with respect to x_i of W(|x_i - x_j|), given xij = x_i - x_j.
-  Vec3 gradW(const Vec3& xij) const {
-    const Real r = xij.norm();
+  Vec3 gradW(const Vec3& xij) const { return gradW(xij, xij.norm()); }
+  // Same, with r = |xij| already known (the neighbour pass also needs W(r)).
+  Vec3 gradW(const Vec3& xij, Real r) const {
     if (r <= 1e-12 * cubic_.h) return Vec3::Zero();
     const Real d = kind_ == KernelKind::kCubicSpline ? cubic_.dWdr(r) : wendland_.dWdr(r);
     return xij * (d / r);

@@ -88,7 +88,8 @@ void growTo(std::vector<T>& v, std::size_t n) {
 
 void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbins,
                                const CellBins& pbins, bool skipSelf, const Kernel* kernel,
-                               NeighborList& out, std::vector<Vec3>& grad) {
+                               NeighborList& out, std::vector<Vec3>& grad,
+                               std::vector<Real>& values) {
   const std::size_t n = qx.size();
   const Real r2 = radius_ * radius_;
   out.offsets.resize(n + 1);
@@ -144,7 +145,13 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
         }
       if (kernel) {
         growTo(buf.gradients, m);
-        for (std::size_t a = first; a < m; ++a) buf.gradients[a] = kernel->gradW(xi - sortedX[slot[a]]);
+        growTo(buf.values, m);
+        for (std::size_t a = first; a < m; ++a) {
+          const Vec3 xij = xi - sortedX[slot[a]];
+          const Real r = xij.norm();  // one square root for both
+          buf.gradients[a] = kernel->gradW(xij, r);
+          buf.values[a] = kernel->W(r);
+        }
       }
       for (std::size_t a = first; a < m; ++a) slot[a] = sorted[slot[a]];
       out.offsets[i + 1] = static_cast<Index>(m - first);
@@ -156,6 +163,7 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
     if (buf.indices.capacity() < m + m / 16 + 1024) buf.indices.reserve(m + m / 2 + 1024);
     if (kernel && buf.gradients.capacity() < m + m / 16 + 1024)
       buf.gradients.reserve(m + m / 2 + 1024);
+    if (kernel && buf.values.capacity() < m + m / 16 + 1024) buf.values.reserve(m + m / 2 + 1024);
 #pragma omp barrier
 #pragma omp single
     {
@@ -169,6 +177,10 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
       if (kernel) {
         growTo(grad, total);
         grad.resize(total);
+        growTo(values, total);
+        values.resize(total);
+      } else {
+        values.clear();  // no stale kernel values for a list built without a kernel
       }
     }  // implicit barrier
     Index running = static_cast<Index>(buf.offset);
@@ -178,16 +190,19 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
     }
     std::copy(buf.indices.begin(), buf.indices.begin() + static_cast<std::ptrdiff_t>(m),
               out.indices.begin() + static_cast<std::ptrdiff_t>(buf.offset));
-    if (kernel)
+    if (kernel) {
       std::copy(buf.gradients.begin(), buf.gradients.begin() + static_cast<std::ptrdiff_t>(m),
                 grad.begin() + static_cast<std::ptrdiff_t>(buf.offset));
+      std::copy(buf.values.begin(), buf.values.begin() + static_cast<std::ptrdiff_t>(m),
+                values.begin() + static_cast<std::ptrdiff_t>(buf.offset));
+    }
   }
 }
 
 void NeighborSearch::setStatic(const std::vector<Vec3>& staticX) {
   staticX_ = staticX;
   bin(staticX_, staticBins_, false);
-  buildList(staticX_, staticBins_, staticBins_, true, nullptr, ss_, noGrad_);
+  buildList(staticX_, staticBins_, staticBins_, true, nullptr, ss_, noGrad_, noW_);
 }
 
 void NeighborSearch::update(const std::vector<Vec3>& dynamicX) { updateImpl(dynamicX, nullptr); }
@@ -198,13 +213,14 @@ void NeighborSearch::update(const std::vector<Vec3>& dynamicX, const Kernel& ker
 
 void NeighborSearch::updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel) {
   bin(dynamicX, dynamicBins_, true);
-  buildList(dynamicX, dynamicBins_, dynamicBins_, true, kernel, dd_, ddGrad_);
+  buildList(dynamicX, dynamicBins_, dynamicBins_, true, kernel, dd_, ddGrad_, ddW_);
   if (staticX_.empty()) {
     ds_.offsets.assign(dynamicX.size() + 1, 0);
     ds_.indices.clear();
     dsGrad_.clear();
+    dsW_.clear();
   } else {
-    buildList(dynamicX, dynamicBins_, staticBins_, false, kernel, ds_, dsGrad_);
+    buildList(dynamicX, dynamicBins_, staticBins_, false, kernel, ds_, dsGrad_, dsW_);
   }
 }
 

@@ -78,6 +78,10 @@ class NeighborSearch {
   // [1/m^4] filled by update(x, kernel) only
   const std::vector<Vec3>& dynamicDynamicGradients() const { return ddGrad_; }
   const std::vector<Vec3>& dynamicStaticGradients() const { return dsGrad_; }
+  // [1/m^3] kernel values W(x_i - x_j), same alignment; filled by update(x, kernel), emptied by
+  // update(x). They let density sums skip a square root and a kernel evaluation per pair.
+  const std::vector<Real>& dynamicDynamicKernelValues() const { return ddW_; }
+  const std::vector<Real>& dynamicStaticKernelValues() const { return dsW_; }
 
   // Permutation (new -> old) that orders points by the Morton index of their cell.
   void zOrder(const std::vector<Vec3>& x, std::vector<Index>& newToOld) const;
@@ -90,15 +94,18 @@ class NeighborSearch {
   void bin(const std::vector<Vec3>& x, CellBins& bins, bool dynamic);
   // CSR list from query points `qx` to the points in `bins` with positions `px`; `skipSelf` drops
   // the pair (i, i) when both sets are the same.
-  // `kernel` non-null: also fill `grad` (aligned with out.indices).
+  // `kernel` non-null: also fill `grad` and `values` (aligned with out.indices); null: `values`
+  // is emptied.
   void buildList(const std::vector<Vec3>& qx, const CellBins& qbins, const CellBins& pbins,
-                 bool skipSelf, const Kernel* kernel, NeighborList& out, std::vector<Vec3>& grad);
+                 bool skipSelf, const Kernel* kernel, NeighborList& out, std::vector<Vec3>& grad,
+                 std::vector<Real>& values);
   void updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel);
 
   // One thread's share of a list being built: accepted neighbours of its block of query points.
   struct ThreadBuffer {
     std::vector<Index> indices;
     std::vector<Vec3> gradients;
+    std::vector<Real> values;
     std::size_t count = 0;  // used entries (the vectors only grow)
     std::size_t offset = 0; // where the block starts in the final list
   };
@@ -116,6 +123,7 @@ class NeighborSearch {
   std::vector<Vec3> staticX_;
   NeighborList dd_, ds_, ss_;
   std::vector<Vec3> ddGrad_, dsGrad_, noGrad_;
+  std::vector<Real> ddW_, dsW_, noW_;
   std::vector<ThreadBuffer> threadBuffers_;
   std::vector<Index> counts_;
   mutable std::vector<std::uint64_t> mortonScratch_;

@@ -68,6 +68,9 @@ class World {
   // square root and a division per pair and iteration (positions do not change during a solve).
   const std::vector<Vec3>& fluidGradients() const { return search_->dynamicDynamicGradients(); }
   const std::vector<Vec3>& wallGradients() const { return search_->dynamicStaticGradients(); }
+  // Kernel values W(x_i - x_j), same alignment (density sums; empty if no kernel pass ran).
+  const std::vector<Real>& fluidKernelValues() const { return search_->dynamicDynamicKernelValues(); }
+  const std::vector<Real>& wallKernelValues() const { return search_->dynamicStaticKernelValues(); }
   const NeighborSearch& search() const { return *search_; }
 
  private:

@@ -1,0 +1,140 @@
+// Floating elastic block (issue 7 validation 3; Wang et al. 2023 Figure 8: an elastic body of half
+// the fluid's density floats half submerged with INDSPH). Coarse version of
+// tests/sim/solid_buoyancy_bench.cpp, whose 5 mm runs are in docs/elasticity.md.
+//
+// The water level is the far-field VOLUME level: the number of water particles per far column
+// times d (each particle's lattice cell is d^3; the layered floor's face is y = 0). In the bench
+// this level and the level where the far field's hydrostatic pressure line reaches p = 0 agree to
+// 0.01 d, and the pressure under the block equals rho g (that level - depth) to 0.1 Pa: it is the
+// level the block's weight is balanced against. The visible surface (mean column top + d/2) lies
+// ~0.3 d below it, because the settled, no longer lattice-ordered water packs n particles into
+// less than n d of height at the kernel's rest number density; measured against that surface the
+// block reads ~0.035 H too high (docs/elasticity.md, "Buoyancy").
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include "scene_fixtures.h"
+#include "solid_fixtures.h"
+
+using namespace sim;
+
+namespace {
+
+struct Floating {
+  Real volumeFraction = 0;   // [1] submerged fraction against the volume level, window mean
+  Real visibleFraction = 0;  // [1] the same against mean column top + d/2
+  Real sidewaysDrift = 0;    // [m] largest horizontal distance of the block centre from the start
+  bool finite = true;
+};
+
+// Block of `side` x `layers` x `side` cells and specific gravity `ratio` in a tank `width` d
+// wide filled `depth` d deep (layered walls, INDSPH), started at its Archimedes draft; fractions
+// averaged over [duration / 2, duration] sampled every 0.01 s.
+Floating floatBlock(Real ratio, Real d, int width, int depth, int side, int layers,
+                    Real duration) {
+  TankSpec spec;
+  spec.innerMax = Vec3(width * d, (depth + layers + 4) * d, width * d);
+  WorldParameters params;
+  params.particleSpacing = d;
+  params.domain = tankDomain(spec, d);
+  params.domain.extend(spec.innerMin - Vec3::Constant(4 * d));
+  World world(params);
+  world.materials.add(testing::water());
+  const int block = world.materials.add(
+      testing::elasticMaterial("block", 1000 * ratio, 1e5, 0.3));  // E [Pa], nu
+  addTankWalls(world, spec, d, 0, WallLayers{});
+  const Real height = layers * d;  // [m]
+  const Vec3 blockMin((width - side) * d / 2, depth * d - ratio * height, (width - side) * d / 2);
+  for (int i = 0; i < width; ++i)
+    for (int j = 0; j < depth; ++j)
+      for (int k = 0; k < width; ++k) {
+        const Vec3 x = d * Vec3(i + 0.5, j + 0.5, k + 0.5);
+        const bool inside = x.x() > blockMin.x() && x.x() < blockMin.x() + side * d &&
+                            x.z() > blockMin.z() && x.z() < blockMin.z() + side * d &&
+                            x.y() > blockMin.y() - 0.25 * d;
+        if (!inside) world.particles.add(x, Vec3::Zero(), 1000 * d * d * d, 0);
+      }
+  testing::addLattice(world, blockMin, Eigen::Vector3i(side, layers, side), d, block);
+  world.initialize();
+  PipelineOptions options;
+  options.solver = "indsph";
+  Pipeline pipeline = assemblePipeline(world, options);
+  pipeline.attach(world);
+
+  const Real half = 0.5 * side * d;  // [m]
+  const Vec3 start = blockMin + half * Vec3(1, 0, 1);
+  Floating r;
+  int samples = 0;
+  for (Real t = 0.01; t <= duration + 1e-9; t += 0.01) {
+    while (world.time < t) pipeline.step(world);
+    const auto& p = world.particles;
+    Real minY = 1e30, maxY = -1e30;
+    Vec3 centre = Vec3::Zero();
+    int n = 0;
+    for (std::size_t i = 0; i < p.size(); ++i)
+      if (p.material[i] == block) {
+        minY = std::min(minY, p.x[i].y()), maxY = std::max(maxY, p.x[i].y());
+        centre += p.x[i], ++n;
+      }
+    centre /= n;
+    r.sidewaysDrift = std::max(r.sidewaysDrift, std::hypot(centre.x() - start.x(),
+                                                            centre.z() - start.z()));
+    if (world.time <= duration / 2) continue;
+    // Faces: mean of the lowest / highest particle layer -/+ d/2 (exact for the lattice block).
+    Real bottom = 0, top = 0;
+    int nBottom = 0, nTop = 0;
+    // Far field: columns whose cell is at least 2 d from the block's side faces.
+    std::map<std::pair<int, int>, std::pair<int, Real>> columns;  // count, top
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      const Vec3& x = p.x[i];
+      if (p.material[i] == block) {
+        if (x.y() < minY + 0.5 * d) bottom += x.y(), ++nBottom;
+        if (x.y() > maxY - 0.5 * d) top += x.y(), ++nTop;
+        continue;
+      }
+      if (std::max(std::abs(x.x() - centre.x()), std::abs(x.z() - centre.z())) < half + 2 * d)
+        continue;
+      auto& c = columns[{static_cast<int>(std::floor(x.x() / d)),
+                         static_cast<int>(std::floor(x.z() / d))}];
+      c.first += 1;
+      c.second = c.first == 1 ? x.y() : std::max(c.second, x.y());
+    }
+    bottom = bottom / nBottom - 0.5 * d, top = top / nTop + 0.5 * d;
+    Real count = 0, tops = 0;
+    for (const auto& [key, c] : columns) count += c.first, tops += c.second;
+    const Real volumeLevel = d * count / columns.size();         // [m]
+    const Real visibleLevel = tops / columns.size() + 0.5 * d;  // [m]
+    r.volumeFraction += (volumeLevel - bottom) / (top - bottom);
+    r.visibleFraction += (visibleLevel - bottom) / (top - bottom);
+    ++samples;
+  }
+  r.volumeFraction /= samples, r.visibleFraction /= samples;
+  r.finite = allFinite(world);
+  return r;
+}
+
+}  // namespace
+
+// d = 1 cm, tank 16 d x 10 d deep, block 6 x 6 d x 6 d high (H), INDSPH, layered walls, 0.6 s
+// (~10 s at 1 thread per case). The claim is "within 3 %" of the block's volume, i.e. of H: 0.18 d,
+// and that is the tolerance asserted. Why a coarse run can be held to it: the faces are placed at
+// the block's outer particle layers -/+ d/2, which is exact for the lattice the block is sampled
+// as and stays so (E = 100 kPa under rho g H ~ 300 Pa: 0.3 % strain, 0.02 d); the volume level
+// is a count (no position noise) averaged over >= 60 columns and 30 samples. The O(d) choice that
+// remains is which water level: the visible one is 0.3 d = 5 % of H lower, which is why it is
+// reported (CAPTURE) but not asserted. Measured: 0.504 (visible 0.470) here; 0.512-0.515 in the
+// bench at d = 5 mm, tanks 20 d and 32 d (docs/elasticity.md). The quarter-density block is not
+// asserted here: in this coarse scene it reads 0.291 (+4.1 % of H; the 5 mm bench: 0.26-0.27), so
+// the claim for s.g. 0.25 is checked by the bench only (docs/elasticity.md).
+TEST_CASE("an elastic block of half the water's density floats half submerged",
+          "[validation][elasticity]") {
+  const Real d = 0.01;  // [m]
+  const Floating r = floatBlock(0.5, d, 16, 10, 6, 6, 0.6);
+  CAPTURE(r.volumeFraction, r.visibleFraction, r.sidewaysDrift / d);
+  REQUIRE(r.finite);
+  CHECK(r.volumeFraction == Approx(0.5).margin(0.03));
+  CHECK(r.sidewaysDrift < 0.5 * d);  // symmetric scene: only the solver's noise moves it
+}
