@@ -42,15 +42,16 @@ namespace protocols {
 // to one particle and the interface is flat to within one lattice layer.
 enum class MassRule {
   // m = rho d^3 and a lattice from 0.65 d, then a start-up shifting pass (relax_fill.h, not
-  // simulated time) that moves the outermost layer off the over-dense wall into the staircase
-  // holes, so the fluid starts nearly uniform at rest density and the implicit solvers (INDSPH,
-  // DFSPH) can run it. The gap is where the single Akinci wall layer lets fluid at rest density
-  // end: measured on tiny.toml (emmetropic, d = 1.2 mm, 100 passes), a lattice from d/2 holds
-  // 1.014 x (V - A d/2) and relaxes to a mean density of 1.049 rho0 (the wall pushes the fluid
-  // ~0.6 d away, not d/2); from 0.65 d it holds 0.962 x (V - A d/2) = 80 % of V and relaxes to
-  // 1.0015 rho0 (max 1.039); from 0.7 d, 0.946 and 0.987 rho0. So the particles hold the
-  // cavity minus a shell of ~0.6 d (what this wall model leaves to the fluid), 4 % less than
-  // V - A d/2; the phases' shares are exact to one particle.
+  // simulated time) that moves the over-dense outermost layer off the wall into the staircase
+  // holes, so the fluid starts near rest density with no compression built into the masses. The
+  // gap is where the single Akinci wall layer lets fluid at rest density end: measured on
+  // tiny.toml (emmetropic, d = 1.2 mm, 100 passes, every particle moving), a lattice from d/2
+  // holds 1.014 x (V - A d/2) and relaxes to a mean density of 1.049 rho0 (the wall pushes the
+  // fluid ~0.6 d away, not d/2); from 0.65 d it holds 0.962 x (V - A d/2) = 80 % of V and
+  // relaxes to 1.0015 rho0; from 0.7 d, 0.946 and 0.987 rho0. Since only over-dense particles
+  // move (an elastic sclera one particle thick let the fill expand like a gas otherwise) tiny.toml
+  // starts at mean 1.008, max 1.059 rho0; paper_sclera_10kpa.toml at 0.939, max 1.011 (the fluid
+  // next to the one-layer tissue is under-dense). docs/protocols.md "Fluid fill".
   kRelaxedFill,
   // m = rho d^3 (V - A d/2) / (N d^3): the fluid at rest density fills the cavity up to d/2 from
   // the wall (where the wall particles' Akinci volumes take over). The lattice sits 1.2 d from the
