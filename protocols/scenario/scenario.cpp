@@ -17,6 +17,7 @@
 #include "meshing/sample_volume.h"
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/protocol_error.h"
+#include "protocols/scenario/relax_fill.h"
 #include "sim/core/error.h"
 
 namespace protocols {
@@ -285,7 +286,8 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   const meshing::FillPlane plane = meshing::findFillPlane(s.cavity, p.tamponade.fill.value, oilSide);
   meshing::VolumeSamplingOptions vo;
   vo.spacing = d;
-  vo.wallGap = options.wallGapFactor * d;
+  const bool relaxed = options.massRule == MassRule::kRelaxedFill;
+  vo.wallGap = options.wallGapFactor.value_or(relaxed ? 0.65 : 1.2) * d;
   oil.volume = plane.volumeAbove;
   aqueous.volume = plane.volumeBelow;
   std::vector<sim::Vec3> oilPoints, aqueousPoints;
@@ -345,13 +347,18 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   s.pipelineOptions.solver = std::string(toString(p.solver.value));
   bool known = false;
   for (const auto& entry : sim::solverRegistry()) known = known || entry.name == s.pipelineOptions.solver;
+  // A protocol that names no solver gets WCSPH, with a note, not the format's default INDSPH.
+  // Since the fill starts at rest density (MassRule::kRelaxedFill) INDSPH steps the eye scenes
+  // stably and 19x less often (324 vs 6144 steps for 0.6 s of tiny.toml at d = 1.5 mm), but at
+  // its 1.9 ms step it keeps a velocity noise of ~4 mm/s rms near the curved single-layer wall
+  // (kinetic energy 7e-6 J/kg, above the 5e-6 steady threshold; it shrinks with the step: 2.5e-6
+  // at 1 ms, 1e-6 at 0.5 ms; the solver tolerances do not change it), and the aqueous creeps ~1 d
+  // up the wall, so the coverage of a scene with no tension at all falls 0.79 -> 0.67 in 0.6 s.
+  // WCSPH holds 0.81-0.83 and settles to 5e-7 J/kg (docs/protocols.md "Fluid fill"). Naming a
+  // solver overrides this.
   if (!p.solver.where.isInFile()) {
-    // The protocol did not choose a solver. The format's default (INDSPH) is registered but not
-    // yet stable on eye scenes (a draft eye run throws particles out of the cavity within 10 ms,
-    // 2026-11-22), and DFSPH does not hold a tank at rest; WCSPH is the engine's calm solver. Use
-    // it and say so: the note shows in `plan` and the report. Naming a solver overrides this.
-    s.notes.push_back("no solver chosen: using 'wcsph' (the default '" + s.pipelineOptions.solver +
-                      "' is not yet stable on eye scenes; set `solver` to choose)");
+    s.notes.push_back("no solver chosen: using 'wcsph' (the format's default '" + s.pipelineOptions.solver +
+                      "' lets the contact line creep on curved single-layer walls; set `solver` to choose)");
     s.pipelineOptions.solver = "wcsph";
     known = true;
   }
@@ -387,6 +394,30 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     s.world->initialize();
   } catch (const sim::SimError& error) {
     fail(p.accuracy.particleSpacing.where, error.what(), "check the accuracy settings");
+  }
+  if (relaxed && oil.count + aqueous.count > 0) {
+    FillRelaxation relaxation;
+    relaxation.passes = options.relaxationPasses;
+    relaxation.movable = {aqueous.materialIndex, oil.materialIndex};
+    const FillRelaxationResult r = relaxFill(*s.world, relaxation);
+    s.startMeanFraction = r.meanAfter;
+    s.startMaxFraction = r.maxAfter;
+    s.fillCompression = r.meanAfter;
+    const double shell = s.cavityVolume - 0.5 * d * s.cavityArea;  // [m^3]
+    s.heldVolumeRatio = static_cast<double>(oil.count + aqueous.count) * d * d * d / shell;
+    auto percent = [](double x) { return std::to_string(static_cast<int>(std::lround(100.0 * x))); };
+    auto oneDecimal = [](double x) {
+      const long v = std::lround(1000.0 * x);
+      return std::to_string(v / 10) + "." + std::to_string(v % 10);
+    };
+    s.notes.push_back(
+        "fluid fill: particles at rest mass rho d^3 hold " + percent(s.heldVolumeRatio) +
+        " % of the cavity minus the wall's d/2 shell (" +
+        percent(static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume) +
+        " % of the cavity); a start-up shifting pass (" + std::to_string(relaxation.passes) +
+        " passes, not simulated time) spreads them: density at t = 0 is " +
+        oneDecimal(r.meanAfter) + " % of rest on average, " + oneDecimal(r.maxAfter) + " % at most");
+    s.world->updateNeighbors();
   }
   resolveOutputFields(p, s);
   return s;

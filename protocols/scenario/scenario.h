@@ -8,14 +8,14 @@
 //  2. walls: meshing::sampleSurface at the particle spacing d; outward normals; Akinci volume 0
 //     (World::initialize computes it); regions per wall particle (anatomy::assignRegions) in
 //     RetinaMap, keyed by wall index, and also in the wall `tag` (the RegionSet bits);
-//  3. fluids: lattice particles 1.2 d from the wall (engine-notes: at d the Akinci wall term
-//     overestimates density by 6 %), split into the two phases along the fill direction of the
-//     first posture's gravity (light oil floats: -g; heavy oil sinks: +g) so the tamponade's
-//     share is the fill fraction, particles at rest density (MassRule below);
+//  3. fluids: lattice particles of rest mass from 0.65 d of the wall, relaxed by a start-up
+//     particle-shifting pass (MassRule::kRelaxedFill, relax_fill.h), split into the two phases
+//     along the fill direction of the first posture's gravity (light oil floats: -g; heavy oil
+//     sinks: +g) so the tamponade's share is the fill fraction (MassRule below);
 //  4. materials from the anatomy material library (protocol overrides applied), the World and
-//     PipelineOptions (solver by name, effects forced as the protocol says). While the default
-//     multiphase solver (issue 6) is missing from the build, a protocol that names no solver
-//     runs with "wcsph", with a note; one that names a missing solver is an error.
+//     PipelineOptions (solver by name, effects forced as the protocol says). A protocol that names
+//     no solver runs with the format's default, "indsph" (with the older, compressed fill rules:
+//     "wcsph", with a note); one that names a missing solver is an error.
 // Tissues (sclera, orbital fat): decided elastic or rigid and, when elastic, sampled as elastic
 // particles that replace the wall they cover (protocols/scenario/tissue_particles.h).
 #pragma once
@@ -41,6 +41,18 @@ namespace protocols {
 // direction, the first round(fill N) are tamponade, so the phases' shares of the fluid are exact
 // to one particle and the interface is flat to within one lattice layer.
 enum class MassRule {
+  // m = rho d^3 and a lattice from 0.65 d, then a start-up shifting pass (relax_fill.h, not
+  // simulated time) that moves the over-dense outermost layer off the wall into the staircase
+  // holes, so the fluid starts near rest density with no compression built into the masses. The
+  // gap is where the single Akinci wall layer lets fluid at rest density end: measured on
+  // tiny.toml (emmetropic, d = 1.2 mm, 100 passes, every particle moving), a lattice from d/2
+  // holds 1.014 x (V - A d/2) and relaxes to a mean density of 1.049 rho0 (the wall pushes the
+  // fluid ~0.6 d away, not d/2); from 0.65 d it holds 0.962 x (V - A d/2) = 80 % of V and
+  // relaxes to 1.0015 rho0; from 0.7 d, 0.946 and 0.987 rho0. Since only over-dense particles
+  // move (an elastic sclera one particle thick let the fill expand like a gas otherwise) tiny.toml
+  // starts at mean 1.008, max 1.059 rho0; paper_sclera_10kpa.toml at 0.939, max 1.011 (the fluid
+  // next to the one-layer tissue is under-dense). docs/protocols.md "Fluid fill".
+  kRelaxedFill,
   // m = rho d^3 (V - A d/2) / (N d^3): the fluid at rest density fills the cavity up to d/2 from
   // the wall (where the wall particles' Akinci volumes take over). The lattice sits 1.2 d from the
   // wall, plus up to sqrt(3)/2 d of staircase on a curved wall, so it starts ~30 % compressed at
@@ -60,12 +72,15 @@ enum class MassRule {
 
 struct ScenarioOptions {
   std::optional<AccuracyPreset> accuracy;  // overrides the protocol's preset (explicit values too)
-  double wallGapFactor = 1.2;              // [1] fluid starts this many spacings from the wall
+  // [1] fluid lattice starts this many spacings from the wall; unset: 0.65 for kRelaxedFill,
+  // 1.2 for the other rules (at d the Akinci wall term over-estimates density by 6 %).
+  std::optional<double> wallGapFactor;
   // [1] wall particle spacing / d. One layer of Poisson-disk wall particles at d leaves holes up
   // to ~1.8 d wide (RSA, sample_surface.h) that fluid particles leak through under gravity (seen
   // at d = 1.2 mm after 0.04 s); at 0.5 d the holes are ~0.9 d, smaller than a particle.
   double wallSpacingFactor = 0.5;
-  MassRule massRule = MassRule::kFillCavity;
+  MassRule massRule = MassRule::kRelaxedFill;
+  int relaxationPasses = 100;  // [1] shifting passes of kRelaxedFill (relax_fill.h)
 };
 
 struct FluidPhase {
@@ -121,6 +136,12 @@ struct Scenario {
   // (report, `tamponade report DIR`, resume) is recomputed from.
   std::vector<std::string> outputFields;
   double fillCompression = 1.0;       // [1] initial mean density / rest density (MassRule)
+  // kRelaxedFill: the kernel-summed volume fraction C (relax_fill.h) of the fluid particles at
+  // t = 0, mean and max (1 = rest density); and the fluid volume the particles hold, N d^3, over
+  // the cavity minus the wall's d/2 shell, V - A d/2.
+  double startMeanFraction = 0.0;     // [1]
+  double startMaxFraction = 0.0;      // [1]
+  double heldVolumeRatio = 0.0;       // [1]
 
   // Tamponade flags of the world's dynamic particles in their current order, for the coverage
   // metric (1 = tamponade material).

@@ -55,7 +55,11 @@ CommandResult runTamponade(const std::string& arguments, const fs::path& working
 
 TEST_CASE("tiny protocol assembles: walls with regions, phases with their true masses", "[unit][scenario]") {
   const Protocol p = parseProtocol((kProtocols / "tiny.toml").string());
-  const Scenario s = assembleScenario(p);
+  // The kFillCavity rule (lattice 1.2 d from the wall, heavier particles), checked on its own
+  // here; the default kRelaxedFill has its own test case below.
+  ScenarioOptions fillCavity;
+  fillCavity.massRule = MassRule::kFillCavity;
+  const Scenario s = assembleScenario(p, fillCavity);
   const double d = s.accuracy.particleSpacing;
   REQUIRE(d == Approx(1.2e-3));  // the protocol's explicit spacing
   REQUIRE(s.eye.has_value());
@@ -84,7 +88,7 @@ TEST_CASE("tiny protocol assembles: walls with regions, phases with their true m
   const PhaseTotals oilTotals = totalsOf(s, oil.materialIndex), aqTotals = totalsOf(s, aq.materialIndex);
   CHECK(oilTotals.count == oil.count);
   CHECK(aqTotals.count == aq.count);
-  // Default mass rule (kFillCavity): every particle m = rho d^3 f, one factor f for all, such that
+  // Mass rule kFillCavity: every particle m = rho d^3 f, one factor f for all, such that
   // the fluid's rest volume is V - A d/2 (round-off of the sums).
   double restVolume = 0.0;  // [m^3]
   for (std::size_t i = 0; i < w.particles.size(); ++i) {
