@@ -167,8 +167,16 @@ void addTissues(const Protocol& p, Scenario& s) {
   const auto decide = [&](TissueBody& t, const TissueSpec& spec) {
     t.loadPressure = load;
     try {
-      t.estimatedDisplacement = sim::estimateTissueDeformation(load, radius, t.thickness, t.youngsModulus);
+      // An anchored far face (the sclera's outer surface, the fat's back face) leaves the layer
+      // only its compression; a free one lets it stretch as a membrane around the cavity.
+      const bool anchoredFarFace = spec.anchoring.value != Anchoring::kNone;
+      t.estimatedDisplacement =
+          anchoredFarFace ? sim::estimateAnchoredLayerCompression(load, t.thickness, t.youngsModulus)
+                          : sim::estimateTissueDeformation(load, radius, t.thickness, t.youngsModulus);
       t.decision = sim::decideElastic(t.estimatedDisplacement, d, choiceOf(spec.mode.value));
+      t.decision.reason = (anchoredFarFace ? "anchored layer compressed, u = p t / E; "
+                                           : "free membrane, u = p R^2 / (2 E t); ") +
+                          t.decision.reason;
     } catch (const sim::SimError& error) {
       fail(spec.youngsModulus ? spec.youngsModulus->where : spec.where, error.what(),
            "give a positive Young's modulus");

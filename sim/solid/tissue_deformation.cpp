@@ -17,6 +17,14 @@ Real estimateTissueDeformation(Real loadPressure, Real cavityRadius, Real thickn
   return loadPressure * cavityRadius * cavityRadius / (2.0 * youngsModulus * thickness);
 }
 
+Real estimateAnchoredLayerCompression(Real loadPressure, Real thickness, Real youngsModulus) {
+  require(loadPressure >= 0.0 && std::isfinite(loadPressure),
+          "estimateAnchoredLayerCompression: load pressure must be finite and >= 0 Pa");
+  require(thickness > 0.0, "estimateAnchoredLayerCompression: tissue thickness must be > 0 m");
+  require(youngsModulus > 0.0, "estimateAnchoredLayerCompression: Young's modulus must be > 0 Pa");
+  return loadPressure * thickness / youngsModulus;
+}
+
 TissueDecision decideElastic(Real estimatedDisplacement, Real particleSpacing,
                              TissueChoice choice) {
   require(estimatedDisplacement >= 0.0 && std::isfinite(estimatedDisplacement),

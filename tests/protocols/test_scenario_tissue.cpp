@@ -53,8 +53,9 @@ TEST_CASE("tissue: the physiological sclera is rigid by the rule and changes not
   const TissueBody& sclera = s.tissues[0];
   CHECK_FALSE(sclera.decision.elastic);
   CHECK_FALSE(sclera.decision.forced);
-  // The estimate is the thin-shell formula at the thinnest anatomical thickness (0.42 mm at the
-  // equator, anatomy/sclera_shell.h) and the scene's load; recompute the load independently:
+  // The sclera is anchored at its outer surface (the format's default), so the estimate is the
+  // layer's compression p t / E at the thinnest anatomical thickness (0.42 mm at the equator,
+  // anatomy/sclera_shell.h) and the scene's load; recompute the load independently:
   // rho_max g H + 2 sigma / R with the cavity's largest extent and equivalent-sphere radius.
   Eigen::AlignedBox3d box;
   for (const auto& v : s.cavity.vertices) box.extend(v);
@@ -63,7 +64,8 @@ TEST_CASE("tissue: the physiological sclera is rigid by the rule and changes not
   const double load = s.phases[0].density * 9.81 * h + 2.0 * *s.phases[1].interfacialTension / r;  // aqueous is heavier
   CHECK(sclera.loadPressure == Approx(load).epsilon(1e-3));  // g = 9.81 m/s^2 exactly in the format
   CHECK(sclera.estimatedDisplacement ==
-        Approx(sclera.loadPressure * r * r / (2.0 * 2e6 * 0.42e-3)).epsilon(1e-12));  // same formula, round-off
+        Approx(sclera.loadPressure * 0.42e-3 / 2e6).epsilon(1e-12));  // same formula, round-off
+  CHECK(sclera.decision.reason.find("anchored layer compressed") != std::string::npos);
   CHECK(sclera.estimatedDisplacement / s.accuracy.particleSpacing < 0.1);
   // The fat alone would deform (1 kPa), but behind a rigid sclera the rule keeps it rigid.
   const TissueBody& fat = s.tissues[1];
@@ -98,8 +100,11 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
     CHECK(m.youngsModulus == t.simulatedModulus);
   }
   const TissueBody& sclera = s.tissues[0];
-  // 10 kPa: the rule alone says elastic as well (estimate >= 0.1 d), so the force is not "forced".
-  CHECK_FALSE(sclera.decision.forced);
+  // 10 kPa held at its outer surface: the rule says rigid (the layer compresses by p t / E ~ 10 um
+  // = 0.009 d), so the protocol's mode = "elastic" is a force (the paper's visible deformation
+  // needs a sclera the orbit does not hold; unanchored, it falls out of the domain when upright).
+  CHECK(sclera.decision.forced);
+  CHECK(sclera.decision.reason.find("anchored layer compressed") != std::string::npos);
   // The 0.42-0.94 mm sclera is thinner than 2.5 d at d = 1.2 mm: the layer is thickened and E
   // scaled by t / t_layer (membrane stiffness E t kept), so E_sim t_layer lies between
   // E x 0.42 mm and E x 0.94 mm.
@@ -153,8 +158,20 @@ TEST_CASE("tissue: the rule decides in both directions and a protocol can force 
                                      "youngs_modulus = \"10 kPa\"\nmode = \"rigid\"");
   Scenario soft10 = assembleScenario(parseProtocolText(soft, dir / "soft.toml"));
   CHECK_FALSE(soft10.tissues[0].decision.elastic);
-  CHECK(soft10.tissues[0].decision.forced);
+  CHECK_FALSE(soft10.tissues[0].decision.forced);  // anchored: the rule says rigid too
   CHECK(soft10.world->walls.size() == soft10.retina.areas.size());
+  // 10 kPa not anchored, auto: a free membrane, p R^2 / (2 E t) ~ 4 mm, elastic by the rule.
+  std::string free = paperWith("youngs_modulus = \"10 kPa\"\nmode = \"elastic\"",
+                               "youngs_modulus = \"10 kPa\"\nmode = \"auto\"");
+  const std::string anchorLine = "anchoring = \"outer_surface\"";
+  REQUIRE(free.find(anchorLine) != std::string::npos);
+  free.replace(free.find(anchorLine), anchorLine.size(), "anchoring = \"none\"");
+  Scenario membrane = assembleScenario(parseProtocolText(free, dir / "free.toml"));
+  CHECK(membrane.tissues[0].decision.elastic);
+  CHECK_FALSE(membrane.tissues[0].decision.forced);
+  CHECK(membrane.tissues[0].decision.reason.find("free membrane") != std::string::npos);
+  // ratio R^2 / (2 t^2) ~ 340 at R ~ 11 mm, t = 0.42 mm
+  CHECK(membrane.tissues[0].estimatedDisplacement > 100.0 * soft10.tissues[0].estimatedDisplacement);
   fs::remove_all(dir);
 }
 
@@ -171,7 +188,7 @@ TEST_CASE("tissue: the example protocols validate, and plan prints each tissue's
   INFO(plan.output);
   REQUIRE(plan.exitCode == 0);
   CHECK(plan.output.find("sclera (E 2000 kPa") != std::string::npos);
-  CHECK(plan.output.find("rigid, estimated displacement") != std::string::npos);
+  CHECK(plan.output.find("rigid, anchored layer compressed, u = p t / E; estimated displacement") != std::string::npos);
   CHECK(plan.output.find("treated as rigid wall") != std::string::npos);
   CHECK(plan.output.find("elastic stage time-step limit") == std::string::npos);
 }

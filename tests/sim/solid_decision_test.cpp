@@ -20,6 +20,24 @@ TEST_CASE("tissue deformation estimate is the thin-shell membrane displacement",
   CHECK(estimateTissueDeformation(0.0, R, t, 1e4) == 0.0);
 }
 
+TEST_CASE("an anchored layer's estimate is its compression through the thickness",
+          "[unit][elasticity]") {
+  // u = p t / E (uniaxial, nu = 0). Hand value: 235 Pa on 0.42 mm of 10 kPa sclera held at its
+  // outer surface: 235 * 4.2e-4 / 1e4 = 9.87e-6 m, 170x less than the free membrane's
+  // p R^2 / (2 E t) = 235 * 1.44e-4 / (2e4 * 4.2e-4) = 4.03e-3 m: the ratio is 2 t^2 / R^2.
+  const Real p = 235.0, R = 0.012, t = 0.42e-3;
+  CHECK(estimateAnchoredLayerCompression(p, t, 1e4) == Approx(9.87e-6));
+  CHECK(estimateAnchoredLayerCompression(p, t, 1e4) / estimateTissueDeformation(p, R, t, 1e4) ==
+        Approx(2.0 * t * t / (R * R)));
+  // At d = 1.2 mm the anchored 10 kPa sclera is rigid by the rule, the free one elastic.
+  CHECK_FALSE(decideElastic(estimateAnchoredLayerCompression(p, t, 1e4), 1.2e-3).elastic);
+  CHECK(decideElastic(estimateTissueDeformation(p, R, t, 1e4), 1.2e-3).elastic);
+  CHECK(estimateAnchoredLayerCompression(0.0, t, 1e4) == 0.0);
+  CHECK_THROWS_WITH(estimateAnchoredLayerCompression(p, 0.0, 1e4), Catch::Contains("thickness"));
+  CHECK_THROWS_WITH(estimateAnchoredLayerCompression(p, t, 0.0), Catch::Contains("modulus"));
+  CHECK_THROWS_WITH(estimateAnchoredLayerCompression(-1.0, t, 1e4), Catch::Contains("pressure"));
+}
+
 TEST_CASE("physiological sclera is rigid, the paper's soft sclera and fat are elastic",
           "[unit][elasticity]") {
   const Real p = 235.0, R = 0.012, d = 5e-4;  // [Pa], [m], [m] a 0.5 mm particle spacing
