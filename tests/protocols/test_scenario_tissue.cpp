@@ -165,9 +165,9 @@ TEST_CASE("tissue: the rule decides in both directions and a protocol can force 
   // 10 kPa not anchored, auto: a free membrane, p R^2 / (2 E t) ~ 4 mm, elastic by the rule.
   std::string free = paperWith("youngs_modulus = \"10 kPa\"\nmode = \"elastic\"",
                                "youngs_modulus = \"10 kPa\"\nmode = \"auto\"");
-  const std::string anchorLine = "anchoring = \"outer_surface\"";
+  const std::string anchorLine = "\nanchoring = \"outer_surface\"";
   REQUIRE(free.find(anchorLine) != std::string::npos);
-  free.replace(free.find(anchorLine), anchorLine.size(), "anchoring = \"none\"");
+  free.replace(free.find(anchorLine), anchorLine.size(), "\nanchoring = \"none\"");
   Scenario membrane = assembleScenario(parseProtocolText(free, dir / "free.toml"));
   CHECK(membrane.tissues[0].decision.elastic);
   CHECK_FALSE(membrane.tissues[0].decision.forced);
@@ -211,9 +211,9 @@ const PaperRun& paperRun() {
   static const PaperRun run = [] {
     PaperRun r;
     r.protocol = parseProtocol(kPaper10.string());
-    // A few steps: two postures of 1.5 ms (~40 WCSPH steps at c = 7 m/s, d = 1.2 mm).
-    for (Posture& posture : r.protocol.schedule.postures) posture.duration.value = 1.5e-3;
-    r.protocol.outputs.frameInterval.value = 1e-3;
+    // A few steps: two postures of 12 ms (the protocol's INDSPH takes ~1.7 ms steps at d = 1.2 mm).
+    for (Posture& posture : r.protocol.schedule.postures) posture.duration.value = 12e-3;
+    r.protocol.outputs.frameInterval.value = 5e-3;
     r.scenario = assembleScenario(r.protocol);
     // One folder per process: CTest runs the two cases sharing this run as parallel processes.
     const fs::path out =
@@ -305,22 +305,23 @@ TEST_CASE("tissue: bad input is reported at its place with exit code 2", "[unit]
     std::string location;  // file:line:column
   };
   const fs::path mesh = fs::path(TAMPONADE_SOURCE_DIR) / "data" / "meshes" / "emmetropic_al23.58mm.stl";
+  // Locations are file:line:column in paper_sclera_10kpa.toml as edited by each case.
   const std::vector<Case> cases = {
       {"zero modulus", paperWith("youngs_modulus = \"10 kPa\"", "youngs_modulus = \"0 kPa\""), "validate",
-       "eye.sclera.youngs_modulus", ":25:18"},
+       "eye.sclera.youngs_modulus", ":32:18"},
       {"negative modulus", paperWith("youngs_modulus = \"1 kPa\"", "youngs_modulus = \"-1 kPa\""), "validate",
-       "eye.orbital_fat.youngs_modulus", ":31:18"},
+       "eye.orbital_fat.youngs_modulus", ":38:18"},
       {"poisson 0.5", paperWith("mode = \"elastic\"\nanchoring = \"outer", "poisson_ratio = 0.5\nmode = \"elastic\"\nanchoring = \"outer"),
-       "validate", "eye.sclera.poisson_ratio", ":26:17"},
+       "validate", "eye.sclera.poisson_ratio", ":33:17"},
       {"poisson negative", paperWith("mode = \"elastic\"\nanchoring = \"back", "poisson_ratio = -0.1\nmode = \"elastic\"\nanchoring = \"back"),
-       "validate", "eye.orbital_fat.poisson_ratio", ":32:17"},
+       "validate", "eye.orbital_fat.poisson_ratio", ":39:17"},
       {"sclera thicker than the anatomy allows", paperWith("mode = \"elastic\"\nanchoring = \"outer", "thickness = \"2 mm\"\nmode = \"elastic\"\nanchoring = \"outer"),
-       "plan", "sclera thickness", ":26:13"},
+       "plan", "sclera thickness", ":33:13"},
       {"forced elastic sclera on an imported mesh",
        paperWith("kind = \"staphyloma\"          # the paper's MRI eye is myopic with an irregular posterior wall\n"
                  "side = \"OD\"\naxial_length = \"26 mm\"\nstaphyloma_depth = \"1.5 mm\"\nstaphyloma_width = \"8 mm\"",
                  "kind = \"mesh\"\nside = \"OD\"\nmesh = \"" + mesh.string() + "\"\nmesh_units = \"mm\""),
-       "plan", "mode = \"elastic\" for the sclera, but an imported mesh cavity has no anatomy", ":25:8"},
+       "plan", "mode = \"elastic\" for the sclera, but an imported mesh cavity has no anatomy", ":32:8"},
   };
   for (const Case& c : cases) {
     const fs::path file = dir / "bad.toml";
