@@ -269,7 +269,8 @@ TEST_CASE("tissue: a few steps of the paper's 10 kPa experiment stay finite and 
   CHECK(startExcess > 0.0);
   CHECK(std::abs(m.cavityVolumeChange) < startExcess * s.cavityVolume);
   CHECK(m.maxDisplacement[0] < s.tissues[0].layerThickness);
-  CHECK(m.retinaMaxDisplacement <= m.maxDisplacement[0]);  // retina samples follow sclera particles
+  // retina samples follow sclera particles (same displacement up to the round-off of x - x0)
+  CHECK(m.retinaMaxDisplacement <= m.maxDisplacement[0] * (1.0 + 1e-9));
 }
 
 // Anchored particles keep their rest positions: they are Dirichlet rows of the elastic solve, and
