@@ -347,18 +347,12 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   s.pipelineOptions.solver = std::string(toString(p.solver.value));
   bool known = false;
   for (const auto& entry : sim::solverRegistry()) known = known || entry.name == s.pipelineOptions.solver;
-  // A protocol that names no solver gets WCSPH, with a note, not the format's default INDSPH.
-  // Since the fill starts at rest density (MassRule::kRelaxedFill) INDSPH steps the eye scenes
-  // stably and 19x less often (324 vs 6144 steps for 0.6 s of tiny.toml at d = 1.5 mm), but at
-  // its 1.9 ms step it keeps a velocity noise of ~4 mm/s rms near the curved single-layer wall
-  // (kinetic energy 7e-6 J/kg, above the 5e-6 steady threshold; it shrinks with the step: 2.5e-6
-  // at 1 ms, 1e-6 at 0.5 ms; the solver tolerances do not change it), and the aqueous creeps ~1 d
-  // up the wall, so the coverage of a scene with no tension at all falls 0.79 -> 0.67 in 0.6 s.
-  // WCSPH holds 0.81-0.83 and settles to 5e-7 J/kg (docs/protocols.md "Fluid fill"). Naming a
-  // solver overrides this.
-  if (!p.solver.where.isInFile()) {
+  // A protocol that names no solver gets the format's default, INDSPH (the paper's method). It
+  // needs the fill at rest density (MassRule::kRelaxedFill); with the older, compressed fill
+  // rules only WCSPH starts the scene, so they fall back to it with a note.
+  if (!p.solver.where.isInFile() && options.massRule != MassRule::kRelaxedFill) {
     s.notes.push_back("no solver chosen: using 'wcsph' (the format's default '" + s.pipelineOptions.solver +
-                      "' lets the contact line creep on curved single-layer walls; set `solver` to choose)");
+                      "' needs the fill at rest density, which this mass rule does not give)");
     s.pipelineOptions.solver = "wcsph";
     known = true;
   }

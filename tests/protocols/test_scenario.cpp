@@ -224,7 +224,7 @@ TEST_CASE("tamponade plan: tiny protocol prints counts, stages, memory and estim
                            // issue 6 exposure: the library's sigma and contact angle, the stages'
                            // own time-step limits
                            "interfacial tension 40 mN/m", "18.2 deg through the aqueous",
-                           "time-step limits of the stages at the start: wcsph"})
+                           "time-step limits of the stages at the start: interfacial_tension"})
     CHECK(r.output.find(text) != std::string::npos);
   // The library's own numbers match what is printed.
   Scenario s = assembleScenario(parseProtocol((kProtocols / "tiny.toml").string()));
