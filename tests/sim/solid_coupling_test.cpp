@@ -308,3 +308,96 @@ TEST_CASE("a neutrally buoyant elastic block stays put in water", "[stability][e
   CHECK(maxDrift < d);
   CHECK(std::hypot(centre.x() - centre0.x(), centre.z() - centre0.z()) < 0.5 * d);
 }
+
+TEST_CASE("heavy elastic cuboid dropped on an anchored light one at 1:60 settles",
+          "[validation][elasticity]") {
+  // The other order of Wang et al. 2023 §5.2: a 60000 kg/m^3 cuboid (4 x 4 x 4) falls 1 d onto a
+  // 1000 kg/m^3 pad (6 x 5 x 6), E = 500 kPa, nu = 0.3 for both, INDSPH, 0.8 s. Two things make
+  // this order hard (docs/elasticity.md, "Heavy onto light"):
+  // - On a frictionless floor the pad is squeezed out sideways (an off-centre load lets the heavy
+  //   body sink deeper near the pad's edge: the centred state is an unstable equilibrium, and
+  //   round-off grows 1e-12 -> 0.5 d in two impacts). Contact here is frictionless (pressure
+  //   only), so the pad's bottom layer is anchored: glued to the floor, as tissue is to the orbit.
+  // - The elastic stage hands the pressure solve an impulse the pad's own inertia carries, so the
+  //   pad resists with k / (1 + (omega_1 dt)^2): the coupling limit (couplingStepFactor 0.3) keeps
+  //   that below 9 %. Without it the heavy body sinks 2.5x too deep and bounces with more kinetic
+  //   energy than the fall released.
+  const Real d = 0.01, E = 5e5, nu = 0.3, drop = 1 * d, g = 9.81;  // [m], [Pa], [1], [m], [m/s^2]
+  const Real gap = (kWallGap - 0.5) * d;                           // [m] lattice start from a wall
+  const Real rhoTop = 60000, rhoPad = 1000;                        // [kg/m^3]
+  const int padLayers = 5;
+  auto world = emptyTank(Vec3(12 * d, 16 * d, 12 * d), d);
+  world->gravity = Vec3(0, -g, 0);
+  const int pad = world->materials.add(elasticMaterial("pad", rhoPad, E, nu));
+  const int top = world->materials.add(elasticMaterial("heavy", rhoTop, E, nu));
+  addLattice(*world, Vec3(3 * d, gap, 3 * d), Eigen::Vector3i(6, padLayers, 6), d, pad);
+  const Real padTop0 = gap + (padLayers - 0.5) * d;  // [m] the pad's highest particle layer
+  addLattice(*world, Vec3(4 * d, padTop0 + 0.5 * d + drop, 4 * d), Eigen::Vector3i(4, 4, 4), d, top);
+  world->initialize();
+  for (std::size_t i = 0; i < world->particles.size(); ++i)
+    if (world->particles.material[i] == pad && world->particles.x[i].y() < gap + d)
+      setFixed(world->particles, static_cast<Index>(i));
+  PipelineOptions options;
+  options.solver = "indsph";
+  options.elasticity.couplingStepFactor = 0.3;
+  Pipeline pipeline = assemblePipeline(*world, options);
+  pipeline.attach(*world);
+  const BodyState top0 = bodyState(*world, top), pad0 = bodyState(*world, pad);
+  const Real restCentre = padTop0 + d + 1.5 * d;  // [m] heavy centre touching the unloaded pad
+  const Real fallEnergy = top0.mass * g * drop;    // [J]
+  Real maxEnergyRatio = 0, minOverlap = 1e30, maxEarlyEnergy = 0, maxLateEnergy = 0;
+  Real sagSum = 0;  // [m s]
+  Real sagTime = 0;  // [s]
+  const Real end = 0.8, window = 0.25;  // [s]
+  const auto& p = world->particles;
+  while (world->time < end) {
+    const Real dt = pipeline.step(*world);
+    REQUIRE(allFinite(*world));
+    const BodyState t = bodyState(*world, top), b = bodyState(*world, pad);
+    const Real released = t.mass * g * (top0.centre.y() - t.centre.y()) +
+                          b.mass * g * (pad0.centre.y() - b.centre.y());
+    const Real ke = kineticEnergy(*world);
+    maxEnergyRatio = std::max(maxEnergyRatio, ke / std::max(released, fallEnergy));
+    if (world->time < 0.2) maxEarlyEnergy = std::max(maxEarlyEnergy, ke);
+    if (world->time > 0.55) maxLateEnergy = std::max(maxLateEnergy, ke);
+    // Interpenetration, column by column: a heavy particle deeper than d/2 inside the pad's
+    // surface is one below a pad particle of its own column (|dx|, |dz| < d/2), and the same pair
+    // measures a pad particle inside the heavy body's surface.
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      if (p.material[i] != top) continue;
+      for (std::size_t j = 0; j < p.size(); ++j)
+        if (p.material[j] == pad && std::abs(p.x[i].x() - p.x[j].x()) < 0.5 * d &&
+            std::abs(p.x[i].z() - p.x[j].z()) < 0.5 * d)
+          minOverlap = std::min(minOverlap, p.x[i].y() - p.x[j].y());
+    }
+    if (world->time > end - window) {
+      sagSum += dt * (restCentre - t.centre.y());
+      sagTime += dt;
+    }
+  }
+  const Real sag = sagSum / sagTime;  // [m] mean compression of the pad over the last 0.25 s
+  // Static 1-D estimate: the heavy body's weight over its footprint, sigma = rho g H, compresses
+  // the pad's height L by sigma L / E' with E' = 3 mu (the pressure solve keeps every dynamic
+  // particle at its rest number density, so the pad deforms at constant volume: nu_eff = 1/2).
+  const Real mu = E / (2 * (1 + nu));          // [Pa]
+  const Real sigma = rhoTop * g * 4 * d;       // [Pa]
+  const Real estimate = sigma * padLayers * d / (3 * mu);  // [m]
+  CAPTURE(maxEnergyRatio, minOverlap / d, sag / d, estimate / d, maxEarlyEnergy, maxLateEnergy,
+          pipeline.lastTimeStep().dt, world->stepCount);
+  // No explosion: kinetic energy never above what gravity released (5 % for the pressure
+  // solver's residual compression, as in the light-onto-heavy test).
+  CHECK(maxEnergyRatio < 1.05);
+  // No interpenetration: every heavy particle stays above the pad particles of its column.
+  CHECK(minOverlap > 0);
+  // Settles: the bounce dies down. Nothing in the model is a material damping; what dissipates is
+  // the pressure solve's inelastic particle contact at each landing (the body leaves the pad near
+  // the top of each oscillation, period ~0.09 s). Asserted: the kinetic energy after 0.55 s peaks
+  // below half of its peak in the first 0.2 s (measured 0.23; without the coupling limit the
+  // bounce grows instead: 1.24, with a kinetic energy 2.2x what the fall released and the heavy
+  // body 0.73 d inside the pad).
+  CHECK(maxLateEnergy < 0.5 * maxEarlyEnergy);
+  // Static compression within 25 % of the 1-D estimate: the coupling limit allows 9 %, the
+  // footprint (4 x 4 on 6 x 6: the rim stiffens the pad) and the averaging of a still decaying
+  // oscillation over ~2.7 periods (bias up to ~10 % of the estimate) the rest. Measured: -5 %.
+  CHECK(sag == Approx(estimate).epsilon(0.25));
+}
