@@ -6,8 +6,9 @@ namespace sim {
 
 void ViscosityMonaghan2005::attach(World& world) {
   viscosityOfMaterial_.clear();
-  // An elastic material is marked -1: its particles are skipped, and skipped as neighbours of
-  // fluid particles (docs/elasticity.md).
+  // An elastic material is marked -1: a fluid particle sees an elastic neighbour as a wall moving
+  // with it (the fluid's viscosity), the elastic particle gets the opposite pair force, and
+  // elastic-elastic pairs are skipped (docs/elasticity.md).
   for (const auto& m : world.materials)
     viscosityOfMaterial_.push_back(isFluid(m.kind) ? m.dynamicViscosity : -1.0);
 }
@@ -45,7 +46,23 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
-    if (mui < 0) continue;  // elastic: not a fluid-only effect's particle
+    if (mui < 0) {
+      // Elastic particle (helper "heavy", session 4): the reaction of its fluid neighbours'
+      // moving-wall drag (below), the same pair term with the fluid's viscosity and the opposite
+      // sign, so momentum goes from fluid to solid, none is lost. Nothing between elastic pairs.
+      Vec3 a = Vec3::Zero();
+      for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+        const Index j = nf.indices[k];
+        const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
+        if (muj <= 0) continue;
+        const Vec3 xij = p.x[i] - p.x[j];
+        const Real vx = (p.v[i] - p.v[j]).dot(xij);
+        a += (p.mass[j] * muj / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
+             gradF[k];
+      }
+      p.a[i] += kFactor * a;
+      continue;
+    }
     Vec3 a = Vec3::Zero();
     Vec3 smooth = Vec3::Zero();
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
@@ -55,8 +72,9 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
       if constexpr (kSmoothing)
         if (p.material[j] == p.material[i]) smooth += XsphMonaghan1989::pairTerm(p, kernel, i, j, xij);
       const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
-      const Real mu = 0.5 * (mui + muj);
-      if (mu == 0 || muj < 0) continue;
+      // An elastic neighbour is a wall moving with the solid's velocity: the fluid's viscosity.
+      const Real mu = muj < 0 ? mui : 0.5 * (mui + muj);
+      if (mu == 0) continue;
       const Real vx = (p.v[i] - p.v[j]).dot(xij);
       a += (p.mass[j] * mu / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
            gradF[k];

@@ -3,7 +3,9 @@
 //   a_i += 2(d+2) sum_j m_j mu_ij / (rho_i rho_j) (v_ij . x_ij) / (|x_ij|^2 + 0.01 h^2) gradW_ij
 // with d = 3 and mu_ij the mean dynamic viscosity of the pair. Every pair force is equal and
 // opposite (m_i a_i = -m_j a_j term by term), so linear momentum is conserved to round-off.
-// Walls act as no-slip particles at rest with volume V_b (Akinci 2012). Explicit: stable only for
+// Walls act as no-slip particles at rest with volume V_b (Akinci 2012). Elastic particles act as
+// walls moving with the solid (the pair term with the fluid's viscosity) and take the equal and
+// opposite force; elastic-elastic pairs are left to the elastic stage. Explicit: stable only for
 // dt <= kStableStepFactor d^2 / nu (viscous diffusion limit); viscous oils need the implicit solver.
 #pragma once
 

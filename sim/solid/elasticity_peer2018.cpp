@@ -4,6 +4,9 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
+#include <queue>
 #include <sstream>
 
 #include "sim/solid/fixed_particles.h"
@@ -87,6 +90,8 @@ ElasticityPeer2018::ElasticityPeer2018(const ElasticityParameters& parameters)
           "elasticity: solver tolerance must be in (0, 1)");
   require(parameters_.maxSolverIterations > 0, "elasticity: max solver iterations must be > 0");
   require(parameters_.waveCourantNumber > 0.0, "elasticity: wave Courant number must be > 0");
+  require(parameters_.couplingStepFactor >= 0.0,
+          "elasticity: coupling step factor must be >= 0 (0 switches the coupling limit off)");
   require(parameters_.supportRadiusFactor == 0.0 ||
               (parameters_.supportRadiusFactor >= 1.0 && parameters_.supportRadiusFactor <= 4.0),
           "elasticity: support radius factor must be 0 (world kernel) or in [1, 4] spacings");
@@ -102,7 +107,72 @@ Real ElasticityPeer2018::maxTimeStep(const World& world) const {
   for (const auto& m : world.materials)
     if (m.kind == MaterialKind::kElastic) cMax = std::max(cMax, waveSpeed(m));
   if (cMax <= 0) return Effect::maxTimeStep(world);
-  return parameters_.waveCourantNumber * world.particleSpacing() / cMax;
+  Real dt = parameters_.waveCourantNumber * world.particleSpacing() / cMax;
+  if (parameters_.couplingStepFactor <= 0 || bodyCount_ == 0) return dt;
+  // Coupling limit for bodies that something else can load this step (see couplingStepFactor).
+  const auto& p = world.particles;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Index n = static_cast<Index>(p.size());
+  if (idToSlot_.size() != static_cast<std::size_t>(n)) return dt;  // before attach()
+  bodyLoaded_.assign(bodyCount_, 0);
+  for (Index i = 0; i < n; ++i) {
+    const std::int32_t s = idToSlot_[static_cast<std::size_t>(p.id[i])];
+    if (s < 0) continue;
+    auto& loaded = bodyLoaded_[static_cast<std::size_t>(bodyOf_[static_cast<std::size_t>(s)])];
+    if (loaded) continue;
+    if (nw.offsets[i + 1] > nw.offsets[i]) loaded = 1;
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1] && !loaded; ++k)
+      if (p.material[nf.indices[k]] != p.material[i]) loaded = 1;
+  }
+  for (std::size_t b = 0; b < bodyCount_; ++b)
+    if (bodyLoaded_[b]) dt = std::min(dt, parameters_.couplingStepFactor / bodyOmega_[b]);
+  return dt;
+}
+
+// Thickness per body: surface particles are those with fewer than 3/4 of the body's largest
+// reference-neighbour count (a lattice face keeps about half); the depth of every particle is its
+// shortest path to a surface particle over the reference neighbour pairs (Dijkstra), and
+// L = 2 max depth + d. A body made only of surface particles (one or two layers) gets L = d, an
+// under-estimate by up to 2x for two layers: the limit errs towards shorter steps.
+void ElasticityPeer2018::computeBodyThickness(Real spacing, const std::vector<Real>& waveSpeeds) {
+  const std::size_t slots = slotId_.size();
+  std::vector<std::size_t> maxCount(bodyCount_, 0);
+  for (std::size_t s = 0; s < slots; ++s) {
+    auto& m = maxCount[static_cast<std::size_t>(bodyOf_[s])];
+    m = std::max(m, pairBegin_[s + 1] - pairBegin_[s]);
+  }
+  std::vector<Real> depth(slots, std::numeric_limits<Real>::infinity());
+  using Entry = std::pair<Real, std::size_t>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (std::size_t s = 0; s < slots; ++s)
+    if (4 * (pairBegin_[s + 1] - pairBegin_[s]) < 3 * maxCount[static_cast<std::size_t>(bodyOf_[s])]) {
+      depth[s] = 0;
+      queue.push({0.0, s});
+    }
+  while (!queue.empty()) {
+    const auto [dist, s] = queue.top();
+    queue.pop();
+    if (dist > depth[s]) continue;
+    for (std::size_t k = pairBegin_[s]; k < pairBegin_[s + 1]; ++k) {
+      const auto j = static_cast<std::size_t>(pairSlot_[k]);
+      const Real candidate = dist + pairX_[k].norm();
+      if (candidate < depth[j]) {
+        depth[j] = candidate;
+        queue.push({candidate, j});
+      }
+    }
+  }
+  bodyThickness_.assign(bodyCount_, 0.0);
+  for (std::size_t s = 0; s < slots; ++s) {
+    auto& t = bodyThickness_[static_cast<std::size_t>(bodyOf_[s])];
+    if (std::isfinite(depth[s])) t = std::max(t, depth[s]);
+  }
+  bodyOmega_.resize(bodyCount_);
+  for (std::size_t b = 0; b < bodyCount_; ++b) {
+    bodyThickness_[b] = 2.0 * bodyThickness_[b] + spacing;
+    bodyOmega_[b] = 0.5 * std::numbers::pi * waveSpeeds[b] / bodyThickness_[b];
+  }
 }
 
 void ElasticityPeer2018::attach(World& world) {
@@ -293,6 +363,12 @@ void ElasticityPeer2018::attach(World& world) {
     for (std::size_t s = 0; s < slots; ++s) bodySlots_[next[static_cast<std::size_t>(bodyOf_[s])]++] = s;
   }
   bodyFixed_.assign(bodyCount_, 0);
+  {
+    std::vector<Real> speeds(bodyCount_);
+    for (std::size_t b = 0; b < bodyCount_; ++b)
+      speeds[b] = waveSpeed(world.materials[materials[b]]);
+    computeBodyThickness(world.particleSpacing(), speeds);
+  }
 
   slotIndex_.resize(slots);
   fixed_.resize(slots);

@@ -58,6 +58,19 @@ struct ElasticityParameters {
   // is unconditionally stable for the linearised system; the limit keeps the lagged rotation
   // accurate (a wave crosses at most C spacings per step) and the CG iteration count moderate.
   Real waveCourantNumber = 10.0;
+  // [1] epsilon of the coupling limit dt <= epsilon / omega_1 for a body in contact with walls or
+  // with dynamic particles of another material; omega_1 = (pi/2) c_p / L the body's first
+  // compression mode, L its thickness (0 = off). Why: the elastic stage solves backward Euler for
+  // the body alone, before the pressure solve; what it hands to the other side in one step is an
+  // impulse the body's own inertia carries, so a load is resisted with the stiffness
+  // k / (1 + (omega_1 dt)^2) instead of k (measured: a 60000 kg/m^3 block on an anchored
+  // 1000 kg/m^3 pad sags 0.172, 0.204, 0.344, 0.82 d at dt = 0.25, 0.5, 1, 2 ms against the
+  // incompressible 1-D estimate 0.163 d; docs/elasticity.md). 0.3 keeps that error below 9 %
+  // (the heavy-onto-light drop test uses it).
+  // Off by default: the limit uses the thickness mode, which for a body whose load cannot
+  // squeeze it sideways (a wall lining under fluid) over-restricts the step by up to ~100x, and
+  // the scenes that need it (a body carrying a heavier one) are few; see docs/elasticity.md.
+  Real couplingStepFactor = 0.0;
   // [1] support radius of the solid's reference kernel in particle spacings (0 = the world's
   // kernel). The reference neighbourhoods are the solid's own, so it may be wider than the fluid's:
   // at 2 d a surface particle sees one layer inwards, too few for the quadratic gradient weights;
@@ -87,7 +100,8 @@ class ElasticityPeer2018 final : public Effect {
   // kernel support. Throws SimError if an elastic particle has no elastic neighbour.
   void attach(World& world) override;
   void apply(World& world, const StepContext& context) override;
-  // [s] waveCourantNumber * d / max pressure-wave speed over the elastic materials.
+  // [s] waveCourantNumber * d / max pressure-wave speed over the elastic materials, and
+  // couplingStepFactor / omega_1 of every body touching walls or other materials' particles.
   Real maxTimeStep(const World& world) const override;
 
   const ElasticityStats& stats() const { return stats_; }
@@ -95,6 +109,11 @@ class ElasticityPeer2018 final : public Effect {
   std::size_t elasticCount() const { return slotId_.size(); }
   // Pressure-wave speed sqrt((lambda + 2 mu) / rho) of an elastic material [m/s].
   static Real waveSpeed(const Material& material);  // [m/s]
+  // Per body (elastic material, in ascending material index): thickness L [m] = 2 x the largest
+  // distance of a particle from the body's surface particles (along reference neighbours) + d,
+  // and the first compression-mode frequency (pi/2) c_p / L [rad/s] the coupling limit uses.
+  const std::vector<Real>& bodyThickness() const { return bodyThickness_; }
+  const std::vector<Real>& bodyModeFrequency() const { return bodyOmega_; }
 
  private:
   // Gradient of E + E_hg evaluated at field u (positions, subtractIdentity = true) or the Hessian
@@ -128,6 +147,10 @@ class ElasticityPeer2018 final : public Effect {
   std::vector<std::int32_t> bodyOf_;
   std::vector<std::size_t> bodyBegin_, bodySlots_;
   std::vector<std::int32_t> bodyFixed_;  // 1 if the body has a fixed particle this step
+  std::vector<Real> bodyThickness_;      // [m]
+  std::vector<Real> bodyOmega_;          // [rad/s]
+  mutable std::vector<std::int32_t> bodyLoaded_;  // scratch of maxTimeStep
+  void computeBodyThickness(Real spacing, const std::vector<Real>& waveSpeeds);
 
   // Per-step state, in slot order.
   std::vector<Index> slotIndex_;       // current particle index of slot s
