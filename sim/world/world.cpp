@@ -68,13 +68,51 @@ void World::computeWallVolumes() {
 }
 
 void World::updateNeighbors() {
-  if (++updatesSinceSort_ >= parameters_.zSortInterval) {
-    search_->zOrder(particles.x, permutation_);
-    particles.fields.permute(permutation_);
-    updatesSinceSort_ = 0;
+  try {
+    if (++updatesSinceSort_ >= parameters_.zSortInterval) {
+      search_->zOrder(particles.x, permutation_);
+      particles.fields.permute(permutation_);
+      updatesSinceSort_ = 0;
+    }
+    // The lists and the per-pair kernel gradients come from one pass (NeighborSearch::update).
+    search_->update(particles.x, kernel);
+  } catch (const SimError& e) {
+    throw SimError(describeEscape(e.what()));
   }
-  // The lists and the per-pair kernel gradients come from one pass (NeighborSearch::update).
-  search_->update(particles.x, kernel);
+}
+
+std::string World::describeEscape(const std::string& fallback) const {
+  // The search only knows positions; the user needs to know what left, when, and what it means
+  // (a fluid leaking, a tissue sagging, or an instability), so name the material here.
+  const Box& box = parameters_.domain;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const Vec3& x = particles.x[i];
+    if (x.allFinite() && box.contains(x)) continue;
+    const Material& m = materials[particles.material[i]];
+    std::ostringstream msg;
+    msg.precision(4);
+    const bool atStart = stepCount == 0;
+    msg << m.name << " particle (id " << particles.id[i] << ") ";
+    if (atStart)
+      msg << "is outside the simulation domain at the start";
+    else
+      msg << "left the simulation domain at t = " << time << " s (step " << stepCount << ")";
+    msg << ": position (" << x.transpose() << ") m, domain [" << box.min().transpose() << "] - ["
+        << box.max().transpose() << "] m. ";
+    if (atStart)
+      msg << "Place every particle inside the domain, or enlarge the domain.";
+    else if (!x.allFinite())
+      msg << "Its position is not finite: the simulation became unstable (try a smaller time step "
+             "or particle spacing).";
+    else if (isFluid(m.kind))
+      msg << "A fluid leaves the domain only through a wall: look for a hole in the wall or a wall "
+             "thinner than the particle spacing, or an instability (velocities far above the flow's).";
+    else
+      msg << "An elastic tissue leaves the domain when it deforms further than the domain's margin: "
+             "the tissue is too soft for its load or not held; anchor it or keep it rigid.";
+    return msg.str();
+  }
+  return fallback;
 }
 
 }  // namespace sim

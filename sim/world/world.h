@@ -74,6 +74,8 @@ class World {
   const NeighborSearch& search() const { return *search_; }
 
  private:
+  // The message for a particle outside the domain: which material, when, what it usually means.
+  std::string describeEscape(const std::string& fallback) const;
   void computeWallVolumes();
 
   WorldParameters parameters_;

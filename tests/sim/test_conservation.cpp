@@ -16,6 +16,7 @@
 #include <random>
 
 #include "scene_fixtures.h"
+#include "solid_fixtures.h"
 #include "sim/scenes/dam_break.h"
 
 using namespace sim;
@@ -178,7 +179,35 @@ TEST_CASE("particles outside the domain are rejected at initialize", "[unit][bad
     try {
       w.initialize();
     } catch (const SimError& e) {
-      CHECK_THAT(e.what(), Contains("particle 1") && Contains("outside the simulation domain"));
+      CHECK_THAT(e.what(), Contains("water particle (id 1)") && Contains("outside the simulation domain") &&
+                               Contains("at the start"));
+    }
+  }
+  SECTION("a dynamic particle that leaves during the run names its material, time and likely cause") {
+    p.gravity = Vec3::Zero();
+    World w(p);
+    w.materials.add(testing::water());
+    w.materials.add(testing::elasticMaterial("fat", 900.0, 1e3, 0.45));  // E [Pa], nu
+    w.particles.add(Vec3::Constant(0.05), Vec3::Zero(), 1e-3, 0);
+    w.particles.add(Vec3(0.05, 0.05, 0.02), Vec3::Zero(), 0.9e-3, 1);
+    w.initialize();
+    for (const int material : {0, 1}) {
+      // Index of that material's particle (initialize may have re-sorted them).
+      const std::size_t i = w.particles.material[0] == material ? 0 : 1;
+      const Vec3 inside = w.particles.x[i];
+      w.particles.x[i] = Vec3(0.05, -0.01, 0.05);  // moved out
+      w.stepCount = 7;
+      w.time = 0.25;
+      try {
+        w.updateNeighbors();
+        FAIL("no error for a particle outside the domain");
+      } catch (const SimError& e) {
+        INFO(e.what());
+        CHECK_THAT(e.what(), Contains(material == 0 ? "water particle (id 0)" : "fat particle (id 1)") &&
+                                 Contains("left the simulation domain at t = 0.25 s (step 7)") &&
+                                 Contains(material == 0 ? "through a wall" : "too soft for its load"));
+      }
+      w.particles.x[i] = inside;
     }
   }
   SECTION("a wall particle") {
