@@ -21,7 +21,7 @@ ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& s, cons
   in.summary = summarizeSchedule(r.frames);
   in.mapTime = r.frames.back().time;
   in.wallPositions = s.retinaSamples.restPositions;  // the map is drawn at rest
-  in.tissue = tissueReportLines(s, r.lastTissue, r.frames.back().time);
+  in.tissue = tissueReportLines(s, r.lastTissue, r.frames.back().time, r.meanTimeStep);
   in.wallOilFraction = r.lastFractions.oilFraction;
   in.wallWetting = r.lastFractions.wetting;
   in.wallRegions = s.retina.regions;
@@ -121,6 +121,8 @@ void rebuildReport(const std::filesystem::path& folder) {
   }
   if (r.frames.empty())
     throw IoError(h5.string(), "/frames", "the run has no complete frame", "run it again");
+  const FrameInfo& lastFrame = reader.frames().back();
+  if (lastFrame.step > 0) r.meanTimeStep = lastFrame.time / static_cast<double>(lastFrame.step);
   const SeriesData stages = reader.readSeries("stage_seconds");
   for (std::size_t c = 1; c < stages.columns.size(); ++c)
     r.timers.push_back({stages.columns[c], stages.values[(stages.rows - 1) * stages.columns.size() + c], 0});

@@ -25,6 +25,7 @@ struct RunResults {
   std::vector<sim::StageTimers::Entry> timers;  // per-stage wall-clock
   std::vector<sim::StageDecision> decisions;
   TissueMeasures lastTissue;                    // tissue state of the last frame
+  double meanTimeStep = 0.0;                    // [s] simulated time / steps (0 = unknown)
 };
 
 ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& scenario,

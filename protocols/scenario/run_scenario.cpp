@@ -285,7 +285,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   writer->close();
 
   // Report.
-  RunResults results{frames, lastFractions, pipeline.timers().entries(), pipeline.decisions(), lastTissue};
+  RunResults results{frames, lastFractions, pipeline.timers().entries(), pipeline.decisions(), lastTissue,
+                     world.stepCount > 0 ? world.time / static_cast<double>(world.stepCount) : 0.0};
   const ReportInput in = makeRunReportInput(protocol, s, results);
   if (protocol.outputs.report.value) writeReport(in, options.outputFolder);
 

@@ -77,6 +77,11 @@ void addParticles(Scenario& s, TissueBody& t, const std::vector<sim::Vec3>& poin
   // Written to the frames (the per-particle displacement map), recomputed before each frame.
   particles.fields.addOrGet<sim::Vec3>({kTissueDisplacementField, "m", false, true});
   t.materialIndex = s.world->materials.add(elasticMaterial(t));
+  {
+    const double nu = t.poissonRatio, E = t.simulatedModulus;
+    const double pWaveModulus = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));  // [Pa]
+    t.thicknessModeFrequency = std::numbers::pi * std::sqrt(pWaveModulus / t.density) / (2.0 * t.layerThickness);
+  }
   t.firstId = static_cast<std::int32_t>(particles.size());
   t.count = points.size();
   t.restPositions = points;
@@ -113,7 +118,8 @@ bool RetinaSamples::moves() const {
 
 double tissueDomainPadding(const Protocol& p, double d) {
   double pad = 0.0;  // [m]
-  if (p.eye.sclera || p.eye.orbitalFat) pad += std::max(1.5e-3, kMinTissueLayerSpacings * d) + d;
+  if (p.eye.sclera || p.eye.orbitalFat)
+    pad += std::max(1.5e-3, kMinTissueLayerSpacings * d) + (kBackstopGapSpacings + 1.0) * d;
   if (p.eye.orbitalFat) pad += anatomy::OrbitalFatParameters{}.thickness + d;
   return pad;
 }
@@ -184,6 +190,8 @@ void addTissues(const Protocol& p, Scenario& s) {
   };
 
   std::optional<std::size_t> scleraIndex;
+  // An elastic sclera held at its outer surface gets a rigid backstop wall behind it (below).
+  bool scleraBackstop = false;
   std::vector<double> scleraLayer;  // [m] sampled thickness per retina sample (0 on the cap)
   if (e.sclera) {
     TissueBody t = tissueFromSpec(*e.sclera, "sclera");
@@ -219,7 +227,10 @@ void addTissues(const Protocol& p, Scenario& s) {
         fail(e.sclera->where, "the sclera gets no particle at spacing " + mm(d),
              "use a finer accuracy preset or mode = \"rigid\"");
       std::vector<char> anchored(samples.points.size(), 0);
-      if (e.sclera->anchoring.value == Anchoring::kOuterSurface) anchored = samples.isOuter;
+      if (e.sclera->anchoring.value == Anchoring::kOuterSurface) {
+        anchored = samples.isOuter;
+        scleraBackstop = true;
+      }
       addParticles(s, t, samples.points, anchored, d);
       if (t.simulatedModulus != t.youngsModulus)
         s.notes.push_back("sclera thinner than " + formatNumber(kMinTissueLayerSpacings, 2) +
@@ -300,12 +311,39 @@ void addTissues(const Protocol& p, Scenario& s) {
       }
       r.followsId[k] = sclera.firstId + static_cast<std::int32_t>(nearest);
     }
+    // The lens/IOL cap keeps its wall; the wall over an anchored sclera moves behind it (backstop).
     sim::WallParticles& walls = s.world->walls;
+    // Where elastic fat lies behind the sclera, it holds the globe: no backstop there.
+    std::vector<sim::Vec3> fat;
+    for (const TissueBody& t : s.tissues)
+      if (t.name == "orbital fat" && t.decision.elastic) fat.insert(fat.end(), t.restPositions.begin(), t.restPositions.end());
+    const double fatClear2 = (2.0 * d) * (2.0 * d);  // [m^2]
+    const auto nearFat = [&](const sim::Vec3& x) {
+      return std::any_of(fat.begin(), fat.end(), [&](const sim::Vec3& f) { return (f - x).squaredNorm() < fatClear2; });
+    };
     std::vector<sim::Index> keep;
-    for (std::size_t w = 0; w < walls.size(); ++w)
-      if (shell->thicknessAt(walls.x[w]) <= 0.0) keep.push_back(static_cast<sim::Index>(w));
+    std::vector<sim::Vec3> backstop, backstopNormal;
+    std::vector<int> backstopTag;
+    for (std::size_t w = 0; w < walls.size(); ++w) {
+      if (shell->thicknessAt(walls.x[w]) <= 0.0) {
+        keep.push_back(static_cast<sim::Index>(w));
+      } else if (scleraBackstop) {
+        const double layer = std::max(shell->thicknessAt(walls.x[w]), kMinTissueLayerSpacings * d);
+        const sim::Vec3 x = walls.x[w] + (layer + kBackstopGapSpacings * d) * walls.normal[w];
+        if (nearFat(x)) continue;
+        backstop.push_back(x);
+        backstopNormal.push_back(walls.normal[w]);
+        backstopTag.push_back(walls.tag[w]);
+      }
+    }
     walls.fields.permute(keep);
     walls.fields.resize(keep.size());
+    for (std::size_t b = 0; b < backstop.size(); ++b) walls.add(backstop[b], backstopNormal[b], backstopTag[b]);
+    if (!backstop.empty())
+      s.notes.push_back("sclera held at its outer surface: a rigid wall (the orbit) stands " +
+                        formatNumber(kBackstopGapSpacings, 2) +
+                        " particle spacings behind it where no orbital fat is, so fluid that passes the tissue layer "
+                        "stays in the globe");
     if (s.phases[1].contactAngleThroughAqueous)
       s.notes.push_back("the retina over the elastic sclera has no wall adhesion (contact angle): "
                         "the engine applies it to wall particles only");
@@ -376,7 +414,7 @@ TissueMeasures measureTissues(const Scenario& s, const std::vector<sim::Vec3>& x
 }
 
 std::vector<std::string> tissueReportLines(const Scenario& s, const TissueMeasures& last,
-                                           double lastTime) {
+                                           double lastTime, double meanTimeStep) {
   std::vector<std::string> lines;
   const double d = s.accuracy.particleSpacing;
   if (s.tissues.empty()) return {"no tissue in the protocol: rigid cavity wall"};
@@ -413,6 +451,14 @@ std::vector<std::string> tissueReportLines(const Scenario& s, const TissueMeasur
     lines.push_back(t.name + ": elastic, maximum displacement " + mm(u) + " = " +
                     formatNumber(u / d, 3) + " d" + at + " (estimate " +
                     mm(t.estimatedDisplacement) + ")");
+    const double wdt = t.thicknessModeFrequency * meanTimeStep;  // [1]
+    if (wdt > 1.0)
+      lines.push_back(t.name + ": its displacement is an upper bound, up to " + formatNumber(1.0 + wdt * wdt, 2) +
+                      "x the physical one: at this run's mean step " + formatNumber(meanTimeStep * 1e3, 3) +
+                      " ms the layer's thickness mode (" + formatNumber(t.thicknessModeFrequency, 3) +
+                      " rad/s) is not resolved and the elastic stage, solved before the pressure solve, "
+                      "answers the fluid's load softened by 1 + (omega_1 dt)^2 (docs/elasticity.md, "
+                      "\"Anchored pad under water\"); the coverage does not depend on it");
   }
   lines.push_back("retina maximum displacement " + mm(last.retinaMaxDisplacement) + at);
   lines.push_back("cavity volume change " + formatNumber(last.cavityVolumeChange * 1e9, 3) +

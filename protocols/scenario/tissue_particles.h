@@ -15,7 +15,8 @@
 //   tissue's inner layer continues the fluid's lattice) between d/2 and the local thickness; its
 //   outermost layer (ShellSamples::isOuter) anchored with sim::setFixed when anchoring is
 //   "outer_surface". The cavity wall particles over the sclera (all but the lens/IOL cap, which
-//   has no sclera) are removed: the fluid touches the tissue directly (the INDSPH paper's set-up).
+//   has no sclera) are removed: the fluid touches the tissue directly (the INDSPH paper's set-up). When the outer surface is anchored they
+//   reappear kBackstopGapSpacings d behind the layer as a rigid backstop (the orbit).
 //   A sclera thinner than kMinTissueLayerSpacings d cannot be resolved (the elasticity needs
 //   two layers for its quadratic gradients, docs/elasticity.md), so the particle layer is
 //   thickened to that and Young's modulus scaled by t / t_layer (area-weighted means over the
@@ -46,6 +47,15 @@ struct Scenario;
 
 // [1] thinnest sampled tissue layer in particle spacings: d/2 gap + two lattice layers.
 inline constexpr double kMinTissueLayerSpacings = 2.5;
+// [1] gap between an anchored sclera layer's outer surface and the rigid backstop wall placed
+// behind it, in particle spacings. The sclera's lattice-sampled inner face is a staircase with
+// openings about a spacing wide: fluid particles enter it (measured: 0.5-0.8 d beyond the cavity
+// surface within 0.02 s, paper_sclera_10kpa.toml) and, in the upright posture, some passed all
+// the way through and fell out of the domain (0.45 s). The orbit holds the globe there anyway
+// (the outer surface is anchored), so a wall behind it keeps the fluid in the globe. Two spacings
+// (the kernel's support): closer, the wall compressed the anchored layer, whose pressure then
+// pushed the free inner layer into the cavity (2 MPa sclera test: 0.3 mm instead of 2 um).
+inline constexpr double kBackstopGapSpacings = 2.0;
 
 struct TissueBody {
   std::string name;                  // "sclera" or "orbital fat"
@@ -59,6 +69,10 @@ struct TissueBody {
   sim::TissueDecision decision;
   // Elastic only.
   double layerThickness = 0.0;       // [m] mean sampled layer (>= kMinTissueLayerSpacings d)
+  // [rad/s] first thickness mode of the layer, fixed on one face: pi c_p / (2 t_layer) with
+  // c_p the P-wave speed of the simulated modulus. The elastic stage runs before the pressure
+  // solve, so a layer loaded by the fluid answers as if softened by 1 + (omega_1 dt)^2.
+  double thicknessModeFrequency = 0.0;
   double simulatedModulus = 0.0;     // [Pa] E (t / t_layer when thickened)
   int materialIndex = -1;            // in world.materials
   std::int32_t firstId = 0;          // particle ids firstId .. firstId + count - 1
@@ -115,8 +129,10 @@ void updateTissueDisplacement(const Scenario& scenario, const std::vector<sim::V
                               const std::vector<std::int32_t>& ids, std::vector<sim::Vec3>& out);
 
 // The report's tissue lines: one ("tissue rigid (estimate ... < 0.1 d)") when no tissue is
-// elastic, else per tissue its maximum displacement, the retina's, and the cavity volume change.
+// elastic, else per tissue its maximum displacement, the retina's, and the cavity volume change;
+// with the run's mean time step [s] (0 = unknown), a warning for each elastic tissue whose
+// thickness mode the step does not resolve ((omega_1 dt)^2 > 1, docs/elasticity.md).
 std::vector<std::string> tissueReportLines(const Scenario& scenario, const TissueMeasures& last,
-                                           double lastTime);
+                                           double lastTime, double meanTimeStep = 0.0);
 
 }  // namespace protocols
