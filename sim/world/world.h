@@ -57,6 +57,14 @@ class World {
   WallParticles walls;
   Kernel kernel;
   Vec3 gravity;          // [m/s^2] current gravity (the runner turns it with posture)
+  // [kg/m^3] 0 = off. Otherwise gravity acts on each particle as g (1 - rho_ref / rho_i), rho_i its
+  // material's rest density: the exact rewrite -grad p / rho + g = -grad p' / rho + g (1 - rho_ref
+  // / rho) with p' = p - rho_ref g.x, which takes the hydrostatic background out of the pressure
+  // the solver carries. Why: under a background pressure p the SPH pressure force on an imperfect
+  // particle arrangement errs by ~ p epsilon / d, which pins slow buoyant motion (docs/interface.md,
+  // validation 6). Exact only for a closed domain filled with fluid (at a free surface p = 0 would
+  // become p' = -rho_ref g.x), and walls and tissue then feel p', not p.
+  Real gravityReferenceDensity = 0.0;
   Real time = 0.0;       // [s]
   long stepCount = 0;
   Real lastTimeStep = 0; // [s]
