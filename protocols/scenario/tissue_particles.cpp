@@ -18,6 +18,7 @@
 #include "protocols/report/report_format.h"
 #include "protocols/scenario/scenario.h"
 #include "sim/core/error.h"
+#include "sim/solid/elasticity_peer2018.h"
 #include "sim/solid/fixed_particles.h"
 
 namespace protocols {
@@ -77,11 +78,8 @@ void addParticles(Scenario& s, TissueBody& t, const std::vector<sim::Vec3>& poin
   // Written to the frames (the per-particle displacement map), recomputed before each frame.
   particles.fields.addOrGet<sim::Vec3>({kTissueDisplacementField, "m", false, true});
   t.materialIndex = s.world->materials.add(elasticMaterial(t));
-  {
-    const double nu = t.poissonRatio, E = t.simulatedModulus;
-    const double pWaveModulus = E * (1.0 - nu) / ((1.0 + nu) * (1.0 - 2.0 * nu));  // [Pa]
-    t.thicknessModeFrequency = std::numbers::pi * std::sqrt(pWaveModulus / t.density) / (2.0 * t.layerThickness);
-  }
+  t.thicknessModeFrequency = std::numbers::pi * sim::ElasticityPeer2018::waveSpeed(elasticMaterial(t)) /
+                             (2.0 * t.layerThickness);
   t.firstId = static_cast<std::int32_t>(particles.size());
   t.count = points.size();
   t.restPositions = points;
@@ -193,17 +191,18 @@ void addTissues(const Protocol& p, Scenario& s) {
   // An elastic sclera held at its outer surface gets a rigid backstop wall behind it (below).
   bool scleraBackstop = false;
   std::vector<double> scleraLayer;  // [m] sampled thickness per retina sample (0 on the cap)
+  // Sampled sclera layer at the wall point nearest q: anatomical, at least
+  // kMinTissueLayerSpacings d (see the header); 0 on the lens/IOL cap.
+  const auto layerAt = [&](const sim::Vec3& q) {
+    const double anatomical = shell->thicknessAt(q);
+    return anatomical > 0.0 ? std::max(anatomical, kMinTissueLayerSpacings * d) : 0.0;
+  };
   if (e.sclera) {
     TissueBody t = tissueFromSpec(*e.sclera, "sclera");
     t.thickness = thinnest;
     decide(t, *e.sclera);
     if (t.decision.elastic) {
-      // Layer thickness: anatomical, at least kMinTissueLayerSpacings d (see the header).
       const double minLayer = kMinTissueLayerSpacings * d;  // [m]
-      const auto layerAt = [&](const sim::Vec3& q) {
-        const double anatomical = shell->thicknessAt(q);
-        return anatomical > 0.0 ? std::max(anatomical, minLayer) : 0.0;
-      };
       double area = 0.0, tArea = 0.0, layerArea = 0.0;
       for (std::size_t w = 0; w < s.retinaSamples.restPositions.size(); ++w) {
         const double anatomical = shell->thicknessAt(s.retinaSamples.restPositions[w]);
@@ -325,10 +324,10 @@ void addTissues(const Protocol& p, Scenario& s) {
     std::vector<sim::Vec3> backstop, backstopNormal;
     std::vector<int> backstopTag;
     for (std::size_t w = 0; w < walls.size(); ++w) {
-      if (shell->thicknessAt(walls.x[w]) <= 0.0) {
+      const double layer = layerAt(walls.x[w]);  // [m]
+      if (layer <= 0.0) {
         keep.push_back(static_cast<sim::Index>(w));
       } else if (scleraBackstop) {
-        const double layer = std::max(shell->thicknessAt(walls.x[w]), kMinTissueLayerSpacings * d);
         const sim::Vec3 x = walls.x[w] + (layer + kBackstopGapSpacings * d) * walls.normal[w];
         if (nearFat(x)) continue;
         backstop.push_back(x);

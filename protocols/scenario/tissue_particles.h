@@ -15,8 +15,9 @@
 //   tissue's inner layer continues the fluid's lattice) between d/2 and the local thickness; its
 //   outermost layer (ShellSamples::isOuter) anchored with sim::setFixed when anchoring is
 //   "outer_surface". The cavity wall particles over the sclera (all but the lens/IOL cap, which
-//   has no sclera) are removed: the fluid touches the tissue directly (the INDSPH paper's set-up). When the outer surface is anchored they
-//   reappear kBackstopGapSpacings d behind the layer as a rigid backstop (the orbit).
+//   has no sclera) are removed: the fluid touches the tissue directly (the INDSPH paper's set-up).
+//   When the outer surface is anchored they reappear kBackstopGapSpacings d behind the layer as a
+//   rigid backstop (the orbit), except where elastic fat lies behind it.
 //   A sclera thinner than kMinTissueLayerSpacings d cannot be resolved (the elasticity needs
 //   two layers for its quadratic gradients, docs/elasticity.md), so the particle layer is
 //   thickened to that and Young's modulus scaled by t / t_layer (area-weighted means over the

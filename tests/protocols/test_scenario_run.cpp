@@ -45,6 +45,19 @@ std::string readText(const fs::path& path) {
   return s.str();
 }
 
+// An uninterrupted run's frames and a stopped-and-resumed one's: the same frames, steps and
+// times, and every frame's positions and velocities bit for bit.
+void checkSameFrames(const fs::path& continuousFile, const fs::path& restartedFile) {
+  const protocols::FrameReader continuous(continuousFile), restarted(restartedFile);
+  REQUIRE(continuous.frames().size() == restarted.frames().size());
+  for (std::size_t f = 0; f < continuous.frames().size(); ++f) {
+    CHECK(continuous.frames()[f].step == restarted.frames()[f].step);
+    CHECK(continuous.frames()[f].time == restarted.frames()[f].time);
+    for (const char* field : {sim::field::kPosition, sim::field::kVelocity})
+      CHECK(continuous.readField(f, "fluid", field).reals == restarted.readField(f, "fluid", field).reals);
+  }
+}
+
 // 8 ms simulated (two postures of 4 ms) at d = 1.5 mm: ~1000 particles, ~110 steps, ~1 s. WCSPH
 // by name: the stop/resume check below needs a run longer than the z-sort interval (a run stops
 // and checkpoints only at re-sort steps), and the default INDSPH covers 8 ms in 5 steps.
@@ -118,7 +131,7 @@ TEST_CASE("tamponade run: a short protocol writes frames, series and a well-form
   CHECK(runTamponade("report nowhere", dir).exitCode == 2);
 
   // Stopped at step 48 (as by Ctrl-C: checkpoint, exit 1, no report), then resumed: the same
-  // coverage and the same final particle state as the uninterrupted run, bit for bit.
+  // coverage and the same particle states in every frame as the uninterrupted run, bit for bit.
   const CommandResult stopped = runTamponade("run short.toml --out s --threads 1 --stop-after-steps 48", dir);
   INFO(stopped.output);
   CHECK(stopped.exitCode == 1);
@@ -129,15 +142,7 @@ TEST_CASE("tamponade run: a short protocol writes frames, series and a well-form
   INFO(resumed.output);
   CHECK(resumed.exitCode == 0);
   CHECK(readText(dir / "s" / "coverage.csv") == csv);
-  {
-    const protocols::FrameReader continuous(dir / "a" / "frames.h5"), restarted(dir / "s" / "frames.h5");
-    REQUIRE(continuous.frames().size() == restarted.frames().size());
-    const std::size_t last = continuous.frames().size() - 1;
-    CHECK(continuous.frames()[last].step == restarted.frames()[last].step);
-    CHECK(continuous.frames()[last].time == restarted.frames()[last].time);
-    for (const char* field : {sim::field::kPosition, sim::field::kVelocity})
-      CHECK(continuous.readField(last, "fluid", field).reals == restarted.readField(last, "fluid", field).reals);
-  }
+  checkSameFrames(dir / "a" / "frames.h5", dir / "s" / "frames.h5");
   CHECK(runTamponade("run --resume a", dir).exitCode == 2);  // no checkpoint there
 
   // A folder that holds a run is refused, untouched.
@@ -182,13 +187,6 @@ TEST_CASE("tamponade run: an INDSPH run stopped twice and resumed ends bit-ident
   INFO(last.output);
   REQUIRE(last.exitCode == 0);
   CHECK(readText(dir / "s" / "coverage.csv") == readText(dir / "a" / "coverage.csv"));
-  const protocols::FrameReader continuous(dir / "a" / "frames.h5"), restarted(dir / "s" / "frames.h5");
-  REQUIRE(continuous.frames().size() == restarted.frames().size());
-  for (std::size_t f = 0; f < continuous.frames().size(); ++f) {
-    CHECK(continuous.frames()[f].step == restarted.frames()[f].step);
-    CHECK(continuous.frames()[f].time == restarted.frames()[f].time);
-    for (const char* field : {sim::field::kPosition, sim::field::kVelocity})
-      CHECK(continuous.readField(f, "fluid", field).reals == restarted.readField(f, "fluid", field).reals);
-  }
+  checkSameFrames(dir / "a" / "frames.h5", dir / "s" / "frames.h5");
   fs::remove_all(dir);
 }
