@@ -43,6 +43,9 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
   constexpr Real kFactor = 2.0 * (3 + 2);  // 2(d+2), d = 3
   const Real smoothingScale = kSmoothing ? smoothing_ / context.dt : 0.0;  // XSPH eps/dt [1/s]
   const Index n = static_cast<Index>(p.size());
+  // XSPH reads the kernel values the neighbour pass cached (no square root per pair).
+  const std::vector<Real>& cachedW = world.fluidKernelValues();
+  const bool cached = cachedW.size() == nf.indices.size();
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
@@ -70,7 +73,8 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
       const Vec3 xij = p.x[i] - p.x[j];
       // XSPH's rule (xsph_monaghan1989.h): same material only, which also leaves out solids.
       if constexpr (kSmoothing)
-        if (p.material[j] == p.material[i]) smooth += XsphMonaghan1989::pairTerm(p, kernel, i, j, xij);
+        if (p.material[j] == p.material[i])
+          smooth += XsphMonaghan1989::pairTerm(p, i, j, cached ? cachedW[k] : kernel.W(xij));
       const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
       // An elastic neighbour is a wall moving with the solid's velocity: the fluid's viscosity.
       const Real mu = muj < 0 ? mui : 0.5 * (mui + muj);

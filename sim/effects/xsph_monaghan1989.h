@@ -37,19 +37,24 @@ class XsphMonaghan1989 final : public Effect {
     const Kernel& kernel = world.kernel;
     const Real scale = strength_ / context.dt;
     const Index n = static_cast<Index>(p.size());
+    const std::vector<Real>& cachedW = world.fluidKernelValues();
+    const bool cached = cachedW.size() == nf.indices.size();
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       if (!world.materials.isFluid(p.material[i])) continue;
       Vec3 a = Vec3::Zero();
-      for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-        if (p.material[*j] == p.material[i]) a += pairTerm(p, kernel, i, *j, p.x[i] - p.x[*j]);
+      for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+        const Index j = nf.indices[k];
+        if (p.material[j] != p.material[i]) continue;
+        a += pairTerm(p, i, j, cached ? cachedW[k] : kernel.W(p.x[i] - p.x[j]));
+      }
       p.a[i] += scale * a;
     }
   }
-  // One pair's term of the sum (before the factor eps/dt); xij = x_i - x_j.
-  static Vec3 pairTerm(const DynamicParticles& p, const Kernel& kernel, Index i, Index j,
-                       const Vec3& xij) {
-    return (2.0 * p.mass[j] / (p.density[i] + p.density[j]) * kernel.W(xij)) * (p.v[j] - p.v[i]);
+  // One pair's term of the sum (before the factor eps/dt); w = W(x_i - x_j), usually the value the
+  // neighbour pass cached (same arithmetic as Kernel::W, so the result is the same to the bit).
+  static Vec3 pairTerm(const DynamicParticles& p, Index i, Index j, Real w) {
+    return (2.0 * p.mass[j] / (p.density[i] + p.density[j]) * w) * (p.v[j] - p.v[i]);
   }
 
  private:

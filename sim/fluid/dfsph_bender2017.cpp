@@ -25,11 +25,8 @@ void DfsphBender2017::attach(World& world) {
 
 void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt) {
   auto& p = world.particles;
-  const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
   const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
   const auto& rho = p.density;
   const Index n = static_cast<Index>(p.size());
   // k_j / rho_j once per particle instead of once per pair (a division per pair saved; the same
@@ -46,11 +43,7 @@ void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real
       const Index j = nf.indices[k];
       dv += p.mass[j] * (ki + scaled[j]) * gradF[k];
     }
-    if (ki != 0.0) {
-      Vec3 g = Vec3::Zero();
-      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) g += walls.volume[nw.indices[k]] * gradB[k];
-      dv += world.restDensityOf(i) * ki * g;
-    }
+    dv += ki * wallGradient_[i];
     p.v[i] -= dt * dv;
   }
 }
@@ -58,16 +51,11 @@ void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real
 Real DfsphBender2017::densityRate(const World& world, Index i) const {
   const auto& p = world.particles;
   const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
   const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
   Real rate = 0;
   for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
     rate += p.mass[nf.indices[k]] * (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k]);
-  Real wallRate = 0;
-  for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
-    wallRate += world.walls.volume[nw.indices[k]] * p.v[i].dot(gradB[k]);
-  return rate + world.restDensityOf(i) * wallRate;
+  return rate + p.v[i].dot(wallGradient_[i]);
 }
 
 Real DfsphBender2017::predictDensity(World& world, Real dt) {
@@ -118,6 +106,7 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   divergenceDt_ = context.dt;
   predicted_.resize(n);
   kappa_.resize(n);
+  wallGradient_.resize(n);
 
   stats_.divergenceIterations = 0;
   const Real dt = context.dt;
@@ -141,7 +130,8 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
     }
     Vec3 gw = Vec3::Zero();
     for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k];
-    g += world.restDensityOf(i) * gw;
+    wallGradient_[i] = world.restDensityOf(i) * gw;
+    g += wallGradient_[i];
     const Real denominator = g.squaredNorm() + sumSq;
     // A full neighbourhood gives a denominator of order (rho/h)^2; a particle with almost no
     // neighbours gets alpha = 0 instead of an enormous stiffness (Bender 2017).

@@ -48,7 +48,7 @@ class DfsphBender2017 final : public PressureSolver {
   // Predicted density rho* (densityOnly) or density rate Drho/Dt; returns the mean error measure.
   Real predictDensity(World& world, Real dt);
   Real computeDensityRate(World& world);
-  // Drho_i/Dt = sum_j m_j (v_i - v_j).gradW_ij + rho0_i sum_b V_b v_i.gradW_ib (cached gradients).
+  // Drho_i/Dt = sum_j m_j (v_i - v_j).gradW_ij + v_i.wallGradient_i (cached gradients).
   Real densityRate(const World& world, Index i) const;
   Real maxCompression(const World& world) const;  // of the current prediction
 
@@ -61,6 +61,10 @@ class DfsphBender2017 final : public PressureSolver {
   std::vector<Real> kappa_;                   // this iteration's k_i (scratch)
   std::vector<Real> densityWarmStart_;        // [m^2/s^2] last accepted step's kappa (scratch)
   std::vector<Real> kappaOverRho_;            // [m^5/(kg s^2)] k_i / rho_i (scratch)
+  // [kg/m^4] rho0_i sum_b V_b gradW_ib per particle, fixed for a step (walls are static and the
+  // positions do not move during the solves): every wall term of both solves is this vector times
+  // a per-particle scalar, so the iterations never loop over wall pairs (scratch).
+  std::vector<Vec3> wallGradient_;
   Real divergenceDt_ = 0;                     // [s] dt the divergence solve used this step
   DeterministicReducer reducer_;
 };

@@ -128,7 +128,7 @@ void IndsphWang2023::beginStep(World& world, const StepContext& context) {
   diagonal_.resize(n);
   predicted_.resize(n);
   increment_.resize(n);
-  increment_.resize(n);
+  wallGradient_.resize(n);
   warmStart_ = *kappa_;  // a rejected attempt must restart from the accepted step
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
@@ -140,7 +140,8 @@ void IndsphWang2023::beginStep(World& world, const StepContext& context) {
     }
     Vec3 gw = Vec3::Zero();
     for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k];
-    g += gw / world.restVolumeOf(i);
+    wallGradient_[i] = gw / world.restVolumeOf(i);
+    g += wallGradient_[i];
     diagonal_[i] = g.squaredNorm() / p.mass[i] + neighbours;
   }
   if (staticWalls_) {
@@ -154,16 +155,11 @@ void IndsphWang2023::beginStep(World& world, const StepContext& context) {
 Real IndsphWang2023::numberDensityRate(const World& world, Index i) const {
   const auto& p = world.particles;
   const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
   const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
   Real rate = 0;  // eq. 14
   for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
     rate += (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k]);
-  Real wallRate = 0;
-  for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
-    wallRate += world.walls.volume[nw.indices[k]] * p.v[i].dot(gradB[k]);
-  return rate + wallRate / world.restVolumeOf(i);
+  return rate + p.v[i].dot(wallGradient_[i]);
 }
 
 // Divergence-free pass in number-density form (the DFSPH divergence solve, Bender & Koschier 2017
@@ -239,17 +235,15 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
     // walls the wall particles' own stiffnesses kappa_b add the second term (eq. 19 with j = b):
     // the wall pushes back with the pressure its own compression demands instead of a pressure
     // copied ("mirrored") from the fluid particle, which is what makes a lattice wall impermeable.
-    const Real v0 = world.restVolumeOf(i);
+    force += ki * wallGradient_[i];
     if (wallKappa) {
+      const Real v0 = world.restVolumeOf(i);
+      Vec3 g = Vec3::Zero();
       for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
         const Index b = nw.indices[k];
-        const Real kb = (*wallKappa)[b] != 0.0 ? (*wallKappa)[b] / wallDensity_[b] : 0.0;
-        force += (ki * walls.volume[b] / v0 + kb * v0 / walls.volume[b]) * gradB[k];
+        if ((*wallKappa)[b] != 0.0) g += ((*wallKappa)[b] / (wallDensity_[b] * walls.volume[b])) * gradB[k];
       }
-    } else if (ki != 0.0) {
-      Vec3 g = Vec3::Zero();
-      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) g += walls.volume[nw.indices[k]] * gradB[k];
-      force += ki * g / v0;
+      force += v0 * g;
     }
     p.v[i] -= (dt / p.mass[i]) * force;  // eq. 20: the advection velocity is incremented
   }

@@ -96,6 +96,11 @@ class IndsphWang2023 final : public PressureSolver {
   std::vector<Real>* pressure_ = nullptr;       // [Pa] p = kappa delta (output)
   std::vector<Real>* kappa_ = nullptr;          // [Pa m^3] accumulated kappa, warm start
   std::vector<Real> diagonal_;                  // [m^-8 kg^-1] |G|^2/m_i + sum |gradW|^2/m_j
+  // [1/m^7] sum_b V_b gradW_ib / V0_i per particle, fixed for a step (static walls, positions
+  // unchanged during the solves): the fluid particle's own wall terms in eqs. 14 and 19 are this
+  // vector times a per-particle scalar, so the iterations loop over wall pairs only for the wall
+  // particles' own stiffnesses (layered walls).
+  std::vector<Vec3> wallGradient_;
   std::vector<Real> predicted_;                 // [1/m^3] delta* (scratch)
   std::vector<Real> increment_;                 // [Pa m^3] this iteration's kappa (scratch)
   std::vector<Real> warmStart_;                 // [Pa m^3] last accepted step's kappa (scratch)
