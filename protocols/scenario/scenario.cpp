@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numbers>
 #include <cmath>
+#include <cstdio>
 
 #include "anatomy/anatomy_error.h"
 #include "anatomy/material_library.h"
@@ -154,6 +155,29 @@ FluidPhase tamponadePhase(const TamponadeSpec& t) {
   if (t.interfacialTension) f.interfacialTension = t.interfacialTension->value;
   if (t.contactAngle) f.contactAngleThroughAqueous = t.contactAngle->value * 180.0 / std::numbers::pi;
   return f;
+}
+
+// The hydrostatic background out of the pressure (ScenarioOptions::removeHydrostaticBackground):
+// exact because the cavity is closed and the fill holds it (no free surface). Not with an elastic
+// tissue: its outer face carries no fluid pressure, so it would feel p' instead of p.
+void chooseGravityReference(const ScenarioOptions& options, Scenario& s) {
+  if (!options.removeHydrostaticBackground) return;
+  for (const TissueBody& t : s.tissues)
+    if (t.decision.elastic) {
+      s.notes.push_back("gravity acts in full (an elastic " + t.name + " must feel the full "
+                        "hydrostatic pressure), so slow buoyant motion of the oil may stall "
+                        "(docs/interface.md, validation 6)");
+      return;
+    }
+  const FluidPhase& reference = s.phases[0].count > 0 ? s.phases[0] : s.phases[1];
+  s.gravityReferenceDensity = reference.density;
+  s.world->gravityReferenceDensity = reference.density;
+  char line[256];
+  std::snprintf(line, sizeof line,
+                "gravity acts relative to %s (%.0f kg/m^3): the hydrostatic background is out of "
+                "the pressure (exact in the closed, filled cavity); frames' pressures are p - rho g.x",
+                reference.material.c_str(), reference.density);
+  s.notes.push_back(line);
 }
 
 sim::Vec3 gravityOf(const Posture& posture, double magnitude) {
@@ -342,6 +366,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     s.world->particles.add(x, sim::Vec3::Zero(), oil.particleMass, oil.materialIndex);
   if (aqueous.count == 0 || oil.count == 0)
     s.notes.push_back("one fluid only: no oil/aqueous interface");
+  chooseGravityReference(options, s);
 
   // Pipeline options: solver by name, effects forced by the protocol.
   s.pipelineOptions.solver = std::string(toString(p.solver.value));

@@ -81,6 +81,11 @@ struct ScenarioOptions {
   double wallSpacingFactor = 0.5;
   MassRule massRule = MassRule::kRelaxedFill;
   int relaxationPasses = 100;  // [1] shifting passes of kRelaxedFill (relax_fill.h)
+  // Gravity relative to the aqueous density (sim::World::gravityReferenceDensity) when every
+  // tissue is rigid: the closed cavity is filled with fluid, so p' = p - rho_aq g.x is an exact
+  // rewrite, and without the hydrostatic background the 3 % oil/aqueous buoyancy is no longer
+  // pinned by the particle arrangement (docs/interface.md, validation 6). false: plain gravity.
+  bool removeHydrostaticBackground = true;
 };
 
 struct FluidPhase {
@@ -142,6 +147,9 @@ struct Scenario {
   double startMeanFraction = 0.0;     // [1]
   double startMaxFraction = 0.0;      // [1]
   double heldVolumeRatio = 0.0;       // [1]
+  // [kg/m^3] 0: plain gravity. Otherwise the world's gravityReferenceDensity: the frames'
+  // pressures are p' = p - rho_ref g.x (the hydrostatic part of the reference fluid removed).
+  double gravityReferenceDensity = 0.0;
 
   // Tamponade flags of the world's dynamic particles in their current order, for the coverage
   // metric (1 = tamponade material).

@@ -162,6 +162,19 @@ TEST_CASE("heavy oil sinks; the physiological sclera stays rigid", "[unit][scena
   CHECK_FALSE(s.tissues[0].decision.elastic);
   CHECK(s.tissues[0].count == 0);
   CHECK(s.world->walls.size() == s.retina.areas.size());
+  // Every tissue rigid, the cavity closed and filled: gravity acts relative to the aqueous, so the
+  // hydrostatic background is out of the pressure (exact here; validated in a closed box by
+  // tests/sim/test_solvers_multiphase.cpp), and plan/report say so.
+  CHECK(s.gravityReferenceDensity == s.phases[0].density);
+  CHECK(s.world->gravityReferenceDensity == s.phases[0].density);
+  bool noted = false;
+  for (const auto& note : s.notes) noted = noted || note.find("gravity acts relative to aqueous") != std::string::npos;
+  CHECK(noted);
+  ScenarioOptions plain = draft;
+  plain.removeHydrostaticBackground = false;
+  const Scenario t = assembleScenario(p, plain);
+  CHECK(t.gravityReferenceDensity == 0.0);
+  CHECK(t.world->gravityReferenceDensity == 0.0);
 }
 
 TEST_CASE("forced effects reach the pipeline; one-fluid scenes", "[unit][scenario]") {

@@ -102,6 +102,10 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
     CHECK(m.kind == sim::MaterialKind::kElastic);
     CHECK(m.youngsModulus == t.simulatedModulus);
   }
+  // An elastic tissue's outer face carries no fluid pressure: it must feel the full p, so gravity
+  // is not taken relative to the aqueous (ScenarioOptions::removeHydrostaticBackground).
+  CHECK(s.gravityReferenceDensity == 0.0);
+  CHECK(s.world->gravityReferenceDensity == 0.0);
   const TissueBody& sclera = s.tissues[0];
   {
     // The report warns when the run's step does not resolve the layer's thickness mode: omega_1 =
