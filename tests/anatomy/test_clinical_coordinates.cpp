@@ -30,7 +30,7 @@ TEST_CASE("clock hours: 12 superior, 3 toward the patient's left", "[unit][clini
   CHECK_THROWS_AS(clockHourOf(Vec3(0, 0, 1)), AnatomyError);
 }
 
-TEST_CASE("OD: 3 o'clock is nasal; OS: 3 o'clock is temporal", "[unit][clinical]") {
+TEST_CASE("OD: 3 o'clock is nasal, OS: 3 o'clock is temporal", "[unit][clinical]") {
   // The patient's left (+x) is toward the nose for the right eye and away from it for the left.
   CHECK(clockHourDirection(3.0).dot(nasalDirection(Laterality::kRight)) == Approx(1.0));
   CHECK(clockHourDirection(9.0).dot(temporalDirection(Laterality::kRight)) == Approx(1.0));

@@ -119,7 +119,7 @@ TEST_CASE("a break entirely above the interface is covered, one below is not",
   CHECK(frame.breaks[2].area.fraction == 0.0);
 }
 
-TEST_CASE("regions are measured separately; walls without fluid are dry", "[unit][coverage]") {
+TEST_CASE("regions are measured separately, walls without fluid are dry", "[unit][coverage]") {
   // The same sphere with oil above z = 0, and the fluid with y > 0 removed: the superior half
   // of the wall (y > h_c) has no fluid within h_c and is dry, so it counts as not covered.
   SphereState s = sphereWithInterface(0.0);

@@ -142,21 +142,25 @@ TEST_CASE("tiny protocol assembles: walls with regions, phases with their true m
   for (const auto& note : s.notes) CHECK(note.find("tissues") == std::string::npos);
 }
 
-TEST_CASE("heavy oil sinks; the physiological sclera stays rigid", "[unit][scenario]") {
+TEST_CASE("heavy oil sinks, the physiological sclera stays rigid", "[unit][scenario]") {
   const Protocol p = parseProtocol((kProtocols / "heavy_oil_inferior_break.toml").string());
   ScenarioOptions draft;
   draft.accuracy = AccuracyPreset::kDraft;
   const Scenario s = assembleScenario(p, draft);
   const FluidPhase& oil = s.phases[1];
   CHECK(oil.density > s.phases[0].density);
-  // Supine first: gravity -z, the heavy oil lies posterior (smaller z) to the aqueous.
+  // Supine first: gravity -z, the heavy oil lies posterior (smaller z) to the aqueous. The fill
+  // plane splits the lattice exactly; the start-up shifting then moves a particle at most d/2 from
+  // its lattice site (relax_fill.h), so the two sides may interleave by at most d (measured:
+  // 0.41 mm at the draft preset's d = 0.8 mm). (Until session 6 this test case never ran: a ';' in its name split it
+  // in CTest, and its old bound, no interleaving at all, predates the shifting.)
   double maxOilZ = -1e9, minAqZ = 1e9;
   for (std::size_t i = 0; i < s.world->particles.size(); ++i) {
     const double z = s.world->particles.x[i].z();
     if (s.world->particles.material[i] == oil.materialIndex) maxOilZ = std::max(maxOilZ, z);
     else minAqZ = std::min(minAqZ, z);
   }
-  CHECK(maxOilZ <= minAqZ);
+  CHECK(maxOilZ <= minAqZ + s.accuracy.particleSpacing);
   // [eye.sclera] in mode auto with the library's 1.8 MPa: decided rigid (issue 7), no particles.
   REQUIRE(s.tissues.size() == 1);
   CHECK_FALSE(s.tissues[0].decision.elastic);
@@ -177,7 +181,7 @@ TEST_CASE("heavy oil sinks; the physiological sclera stays rigid", "[unit][scena
   CHECK(t.world->gravityReferenceDensity == 0.0);
 }
 
-TEST_CASE("forced effects reach the pipeline; one-fluid scenes", "[unit][scenario]") {
+TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenario]") {
   const fs::path dir = fs::temp_directory_path() / "tamponade_scenario_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -185,18 +189,25 @@ TEST_CASE("forced effects reach the pipeline; one-fluid scenes", "[unit][scenari
                            "[tamponade]\nagent = \"silicone_oil_1000\"\n";
   const std::string rest = "[schedule]\n[[schedule.postures]]\nname = \"upright\"\nduration = \"1 s\"\n"
                            "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n";
-  std::ofstream(dir / "off.toml") << base << "fill = \"80 %\"\n" << rest << "[effects]\nviscosity = false\n";
+  std::ofstream(dir / "off.toml") << base << "fill = \"80 %\"\n" << rest
+                                  << "[effects]\nviscosity = false\nimplicit_viscosity = false\n";
   std::ofstream(dir / "full.toml") << base << "fill = 1.0\n" << rest;
   std::ofstream(dir / "missing.toml") << base << "fill = \"80 %\"\n" << rest
                                       << "[effects]\ninterfacial_tension = true\n";
   {
     Scenario s = assembleScenario(parseProtocol((dir / "off.toml").string()));
     CHECK(s.pipelineOptions.forced.at("viscosity") == sim::Force::kOff);
+    CHECK(s.pipelineOptions.forced.at("implicit_viscosity") == sim::Force::kOff);
     const sim::Pipeline pipeline = sim::assemblePipeline(*s.world, s.pipelineOptions);
     CHECK_FALSE(pipeline.hasStage("viscosity"));
+    CHECK_FALSE(pipeline.hasStage("implicit_viscosity"));
+    // Unforced, the 1000 cSt oil gets the implicit solve (the explicit limit would be ~10x the
+    // steps at this spacing; the decision is tested in tests/sim/test_pipeline.cpp).
     Scenario t = assembleScenario(parseProtocol((dir / "full.toml").string()));
     CHECK(t.pipelineOptions.forced.empty());
-    CHECK(sim::assemblePipeline(*t.world, t.pipelineOptions).hasStage("viscosity"));
+    const sim::Pipeline full = sim::assemblePipeline(*t.world, t.pipelineOptions);
+    CHECK(full.hasStage("implicit_viscosity"));
+    CHECK_FALSE(full.hasStage("viscosity"));
     // A full fill: no aqueous particles, a note saying so.
     CHECK(t.phases[0].count == 0);
     CHECK(t.phases[1].count == t.world->particles.size());

@@ -76,7 +76,7 @@ TEST_CASE("elastic force is minus the gradient of the discrete energy", "[unit][
   }
 }
 
-TEST_CASE("affine deformations give the exact linear-elastic energy; rotations none",
+TEST_CASE("affine deformations give the exact linear-elastic energy, rotations none",
           "[unit][elasticity]") {
   // The corrected gradients make F exact for affine fields, at surfaces too, so the discrete
   // energy equals V (mu eps:eps + lambda/2 tr(eps)^2) for a homogeneous corotated strain and is
@@ -160,7 +160,7 @@ TEST_CASE("cantilever under gravity matches Euler-Bernoulli", "[validation][elas
   CHECK(std::abs(tip / theory - 1) < 0.10);
 }
 
-TEST_CASE("free elastic body at rest stays at rest; noise decays without drift",
+TEST_CASE("free elastic body at rest stays at rest, noise decays without drift",
           "[stability][elasticity]") {
   // A 6^3 block with every particle displaced by 2 % d of noise (exciting all modes, the
   // zero-energy ones included) and no gravity. Backward Euler and the penalty dissipate: kinetic
