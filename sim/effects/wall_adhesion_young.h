@@ -53,6 +53,7 @@ class WallAdhesionYoung final : public Effect {
   int materialA_ = -1, materialB_ = -1;  // the pair; the stored cosines are measured through A
   std::vector<Real> cosThetaA_;   // [1] per wall particle; NaN where its tag has no angle
   std::vector<Real> wallArea_;    // [m^2] per wall particle
+  std::vector<std::uint8_t> surface_;  // 1 for surface-layer wall particles (all of a 1-layer wall)
   std::vector<Real> wallFluidSum_;  // [1] S_b scratch
   std::vector<Mat3> stress_;      // [Pa] scratch, valid where stressed_ is 1
   std::vector<std::uint8_t> stressed_;
