@@ -50,10 +50,9 @@ inline SessileResult runSessile(const SessileCase& c) {
   s.sigma = 0.04;
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
   s.wallLayers = c.wallLayers;
-  // One Akinci layer: 2 % excess mass keeps WCSPH's Tait clamp at p = 0 from acting. Layered
-  // walls and an incompressible solver: rest mass (the lattice fills the box at rest density, an
-  // excess could never be removed from the closed box).
-  s.massExcess = c.wallLayers > 0 ? 0.0 : 0.02;
+  // WCSPH: 2 % excess mass keeps the Tait clamp at p = 0 from acting. An incompressible solver:
+  // rest mass (the closed box is full; an excess could never be removed from it).
+  s.massExcess = c.solver == "wcsph" ? 0.02 : 0.0;
   s.sessileStartCos = c.startCos;
   s.jitter = c.jitter;
   // Keep the hemisphere's volume 2/3 pi R0^3 for other starts: cap volume pi R^3 (2 + u)(1 - u)^2
