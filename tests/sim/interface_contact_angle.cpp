@@ -37,6 +37,7 @@ TEST_CASE("Sessile droplet spreads to a 60 deg contact angle (through oil)",
   const testing::SessileResult r = settle(60.0);
   std::printf("sessile 60 deg requested: %.1f deg measured (%.1f at the end), %ld steps, %.1f s\n",
               r.angle, r.finalAngle, r.steps, r.seconds);
+  REQUIRE(r.adhesion);
   REQUIRE(r.finite);
   CHECK(r.angle == Approx(60.0).margin(5.0));
 }
@@ -46,6 +47,7 @@ TEST_CASE("Sessile droplet retracts to a 120 deg contact angle (through oil)",
   const testing::SessileResult r = settle(120.0);
   std::printf("sessile 120 deg requested: %.1f deg measured (%.1f at the end), %ld steps, %.1f s\n",
               r.angle, r.finalAngle, r.steps, r.seconds);
+  REQUIRE(r.adhesion);
   REQUIRE(r.finite);
   CHECK(r.angle == Approx(120.0).margin(5.0));
 }

@@ -38,6 +38,7 @@ struct SessileResult {
   std::size_t particles = 0;
   double seconds = 0;   // [s] wall time of the stepping
   bool finite = true;
+  bool adhesion = false;  // the pipeline has the wall_adhesion stage
 };
 
 inline SessileResult runSessile(const SessileCase& c) {
@@ -71,6 +72,8 @@ inline SessileResult runSessile(const SessileCase& c) {
   options.wallFriction = false;
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
+  SessileResult r;
+  r.adhesion = pipeline.hasStage("wall_adhesion");
   const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
   // Interface points closer than d to the floor are left out: the wall layer distorts them.
   auto angleNow = [&] { return fitSessileCap(w, scene.oil, floor, s.spacing).contactAngle; };
@@ -80,7 +83,6 @@ inline SessileResult runSessile(const SessileCase& c) {
     for (Vec3& v : w.particles.v) v.setZero();
   }
   const Real tStart = w.time;
-  SessileResult r;
   Real sum = 0, next = 0;
   int samples = 0;
   while (w.time - tStart < c.tEnd) {
