@@ -140,12 +140,13 @@ int sessile(const testing::SessileCase& c) {
   testing::SessileCase run = c;
   run.print = true;
   const testing::SessileResult r = testing::runSessile(run);
-  std::printf("sessile: requested %.1f deg, start %.1f deg, %s, %d wall layers, d = R/%.0f: "
-              "measured %.1f deg (mean of the last fifth; %.1f at the end) after %.3f s; %zu "
-              "particles, %ld steps, wall %.1f s%s\n",
-              c.theta, std::acos(-c.startCos) * 180 / std::numbers::pi, c.solver.c_str(),
-              c.wallLayers, c.perR, r.angle, r.finalAngle, c.tEnd, r.particles, r.steps, r.seconds,
-              r.finite ? "" : " (NOT FINITE)");
+  std::printf(
+      "sessile: requested %.1f deg, start %.1f deg, %s, %d wall layers, d = R/%.0f: "
+      "measured %.1f deg (mean of the last fifth; %.1f at the end) after %.3f s; %zu "
+      "particles, %ld steps, wall %.1f s%s\n",
+      c.theta, std::acos(-c.startCos) * 180 / std::numbers::pi, c.solver.c_str(), c.wallLayers,
+      c.perR, r.angle, r.finalAngle, c.tEnd, r.particles, r.steps, r.seconds,
+      r.finite ? "" : " (NOT FINITE)");
   return r.finite ? 0 : 1;
 }
 
@@ -289,11 +290,12 @@ int main(int argc, char** argv) {
                   argc > 5 ? std::atof(argv[5]) : 0, argc > 6 ? std::atof(argv[6]) : 700,
                   argc > 7 ? std::atof(argv[7]) : 0.005, argc > 8 ? std::atof(argv[8]) : 0.04,
                   argc > 9 && std::atoi(argv[9]) != 0, argc > 10 ? argv[10] : "wcsph");
-  std::fprintf(stderr,
-               "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods]\n"
-               "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
-               "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]\n"
-               "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
-               "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
+  std::fprintf(
+      stderr,
+      "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods]\n"
+      "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
+      "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]\n"
+      "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
+      "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;
 }

@@ -36,7 +36,7 @@ struct SessileResult {
   Real finalAngle = 0;  // [deg] at the end
   long steps = 0;
   std::size_t particles = 0;
-  double seconds = 0;   // [s] wall time of the stepping
+  double seconds = 0;  // [s] wall time of the stepping
   bool finite = true;
   bool adhesion = false;  // the pipeline has the wall_adhesion stage
 };
@@ -47,7 +47,7 @@ inline SessileResult runSessile(const SessileCase& c) {
   s.spacing = r0 / c.perR;
   s.halfWidth = c.halfWidthPerR * r0;  // at 2 R0 the 120 deg cap (base 0.73 R) stays 5 h from
                                        // the side walls
-  s.boxHeight = 1.6 * r0;  // its top (1.26 R) stays 2 h below the lid
+  s.boxHeight = 1.6 * r0;              // its top (1.26 R) stays 2 h below the lid
   s.sigma = 0.04;
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
   s.wallLayers = c.wallLayers;
@@ -93,10 +93,11 @@ inline SessileResult runSessile(const SessileCase& c) {
     }
     if (c.print && w.time - tStart >= next) {
       const CapFit fit = fitSessileCap(w, scene.oil, floor, s.spacing);
-      std::printf("  t = %.4f s  theta = %.1f deg (through oil)  R = %.2f mm  rms %.3f mm  "
-                  "steps %ld\n",
-                  w.time, fit.contactAngle, fit.sphere.radius * 1e3, fit.sphere.rmsResidual * 1e3,
-                  w.stepCount);
+      std::printf(
+          "  t = %.4f s  theta = %.1f deg (through oil)  R = %.2f mm  rms %.3f mm  "
+          "steps %ld\n",
+          w.time, fit.contactAngle, fit.sphere.radius * 1e3, fit.sphere.rmsResidual * 1e3,
+          w.stepCount);
       std::fflush(stdout);
       next += c.tEnd / 10;
     }
