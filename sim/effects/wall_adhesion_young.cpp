@@ -5,6 +5,8 @@
 #include <numbers>
 #include <string>
 
+#include "sim/boundary/wall_layers.h"
+
 namespace sim {
 namespace {
 
@@ -35,6 +37,10 @@ void WallAdhesionYoung::attach(World& world) {
   sigma_ = pair.sigma;
   const std::size_t nWalls = world.walls.size();
   cosThetaA_.assign(nWalls, std::numeric_limits<Real>::quiet_NaN());
+  // Layered walls (sim/boundary/wall_layers.h): only the surface layer is the wetted surface;
+  // the layers behind it would triple the area density and see no fluid of their own.
+  surface_.resize(nWalls);
+  for (std::size_t b = 0; b < nWalls; ++b) surface_[b] = isSurfaceWall(world.walls, b) ? 1 : 0;
   for (const auto& angle : angles) {
     const std::string& fluid = materials[angle.fluidMaterial].name;
     require(angle.fluidMaterial == materialA_ || angle.fluidMaterial == materialB_,
@@ -46,7 +52,7 @@ void WallAdhesionYoung::attach(World& world) {
     const Real cosA = std::cos(thetaA * std::numbers::pi / 180.0);
     bool found = false;
     for (std::size_t b = 0; b < nWalls; ++b)
-      if (world.walls.tag[b] == angle.wallTag) {
+      if (world.walls.tag[b] == angle.wallTag && surface_[b]) {
         cosThetaA_[b] = cosA;
         found = true;
       }
@@ -61,7 +67,8 @@ void WallAdhesionYoung::attach(World& world) {
   for (std::size_t b = 0; b < nWalls; ++b) {
     Real density = cubicSpline2d(0, h);  // [1/m^2]
     for (const Index* k = ss.begin(static_cast<Index>(b)); k != ss.end(static_cast<Index>(b)); ++k)
-      if (*k != b) density += cubicSpline2d((world.walls.x[b] - world.walls.x[*k]).norm(), h);
+      if (*k != b && surface_[*k])
+        density += cubicSpline2d((world.walls.x[b] - world.walls.x[*k]).norm(), h);
     wallArea_[b] = 1.0 / density;
   }
 }
@@ -82,7 +89,7 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
     if (nw.count(i) == 0) continue;
     const Real vi = p.mass[i] / p.density[i];
     for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      wallFluidSum_[*b] += vi * kernel.W(p.x[i] - walls.x[*b]);
+      if (surface_[*b]) wallFluidSum_[*b] += vi * kernel.W(p.x[i] - walls.x[*b]);
   }
   // Wall delta function, wall normal and wall-interface stress per particle.
   stress_.resize(n);

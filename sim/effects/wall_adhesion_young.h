@@ -26,9 +26,13 @@
 //   Pi_i     = gamma_{phase of i} delta_i (I - m_i m_i^T)
 //   a_i     += 1/m_i sum_j V_i V_j (Pi_i + Pi_j) gradW_ij
 // Walls of tags without a contact angle get no wall stress: they stay neutral (90 deg).
-// Measured (docs/interface.md): the static line force is 1.2 sigma cos(theta) at d = R/6; from a
-// hemisphere a sessile droplet reaches 122 deg for 120 requested, but 49 / 76 / 97 / 140 deg for
-// 30 / 60 / 90 / 150, with a contact-angle hysteresis of 10-20 deg: not yet the issue's +-5 deg.
+// Layered walls (sim/boundary/wall_layers.h): only the surface layer is the wetted surface.
+// Measured (docs/interface.md, validation 3): the static line force is 1.2 sigma cos(theta) at
+// d = R/6 (one Akinci layer; 1.29 / 1.07 with three lattice layers, layer on the aqueous / oil).
+// With INDSPH, three wall layers and a jittered start, a sessile droplet (R = 6 d) reaches
+// 59.9 / 87.2 / 118.4 / 149.6 deg for 60 / 90 / 120 / 150 requested (the issue's +-5 deg) and
+// 40 deg for 30 (a cap 2.7 d tall); with WCSPH and one Akinci layer 49 / 76 / 97 / 122 / 140 deg
+// for 30 / 60 / 90 / 120 / 150.
 //
 // Convention: the angle in ContactAngle is measured through the fluid it names; the toolkit's
 // clinical convention (DESIGN.md) names the aqueous phase (theta ~ 18 deg for silicone oil on
@@ -53,6 +57,7 @@ class WallAdhesionYoung final : public Effect {
   int materialA_ = -1, materialB_ = -1;  // the pair; the stored cosines are measured through A
   std::vector<Real> cosThetaA_;   // [1] per wall particle; NaN where its tag has no angle
   std::vector<Real> wallArea_;    // [m^2] per wall particle
+  std::vector<std::uint8_t> surface_;  // 1 for surface-layer wall particles (all of a 1-layer wall)
   std::vector<Real> wallFluidSum_;  // [1] S_b scratch
   std::vector<Mat3> stress_;      // [Pa] scratch, valid where stressed_ is 1
   std::vector<std::uint8_t> stressed_;

@@ -1,6 +1,8 @@
 // Longer interface validations (issue 6) that are too costly for CI, run by hand:
 //   sim_interface_bench oscillation [R_mm] [d_per_R] [periods]  l = 2 oscillation vs Lamb
-//   sim_interface_bench sessile THETA_DEG [t_end_s]    sessile droplet contact angle
+//   sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] [R_per_d]
+//                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]
+//                                                      sessile droplet contact angle
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
 //                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
 //                                      equilibrium tamponade shape in a spherical cavity
@@ -17,6 +19,7 @@
 #include <vector>
 
 #include "interface_fixtures.h"
+#include "interface_sessile.h"
 #include "sim/measure/droplet_pressure_jump.h"
 #include "sim/measure/sessile_contact_angle.h"
 #include "sim/measure/wall_nearest_material.h"
@@ -133,57 +136,19 @@ int oscillation(Real radius, Real perR, Real kPeriods) {
   return 0;
 }
 
-int sessile(Real theta, Real tEnd, Real startCos) {
-  testing::DropletSpec s;
-  s.radius = 0.003;
-  s.spacing = s.radius / 6;
-  s.halfWidth = 2 * s.radius;
-  s.boxHeight = 1.6 * s.radius;
-  s.sigma = 0.04;
-  s.oilViscosity = s.aqueousViscosity = 0.005;
-  s.massExcess = 0.02;
-  s.sessileStartCos = startCos;
-  if (startCos < -0.1) {
-    // A flatter start: keep the hemisphere's volume, 2/3 pi R0^3 = cap volume of radius R.
-    const Real c = -startCos;
-    const Real capFactor = (2 + c) * (1 - c) * (1 - c) / 3;  // cap volume / (pi R^3), c = cos(theta)
-    s.radius = 0.003 * std::cbrt(2.0 / 3.0 / capFactor);
-    s.spacing = 0.0005;
-    s.halfWidth = 0.006;
-    s.boxHeight = 0.0048;
-  }
-  auto scene = testing::dropletScene(s);
-  World& w = *scene.world;
-  w.materials.setContactAngle(scene.oil, testing::kFloorTag, theta);
-  PipelineOptions options;
-  options.solver = "wcsph";
-  options.wcsph.speedOfSound = 2;
-  options.wcsph.artificialViscosity = 0.1;
-  options.wallFriction = false;  // free slip: a no-slip wall pins the contact line (Huh-Scriven)
-  Pipeline pipeline = assemblePipeline(w, options);
-  pipeline.attach(w);
-  const auto t0 = std::chrono::steady_clock::now();
-  Real next = 0;
-  CapFit fit;
-  while (w.time < tEnd) {
-    pipeline.step(w);
-    if (w.time >= next) {
-      fit = fitSessileCap(w, scene.oil, {Vec3::Zero(), Vec3::UnitY()}, s.spacing);
-      std::printf("  t = %.4f s  theta = %.1f deg (through oil)  R = %.2f mm  rms %.3f mm\n",
-                  w.time, fit.contactAngle, fit.sphere.radius * 1e3,
-                  fit.sphere.rmsResidual * 1e3);
-      next += tEnd / 10;
-      std::fflush(stdout);
-    }
-  }
-  fit = fitSessileCap(w, scene.oil, {Vec3::Zero(), Vec3::UnitY()}, s.spacing);
-  std::printf("sessile: requested %.1f deg, start %.1f deg, measured %.1f deg after %.3f s; "
-              "%zu particles, %ld steps, wall %.1f s\n",
-              theta, std::acos(-startCos) * 180 / std::numbers::pi, fit.contactAngle, w.time,
-              w.particles.size(), w.stepCount, seconds(t0));
-  return 0;
+int sessile(const testing::SessileCase& c) {
+  testing::SessileCase run = c;
+  run.print = true;
+  const testing::SessileResult r = testing::runSessile(run);
+  std::printf(
+      "sessile: requested %.1f deg, start %.1f deg, %s, %d wall layers, d = R/%.0f: "
+      "measured %.1f deg (mean of the last fifth; %.1f at the end) after %.3f s; %zu "
+      "particles, %ld steps, wall %.1f s%s\n",
+      c.theta, std::acos(-c.startCos) * 180 / std::numbers::pi, c.solver.c_str(), c.wallLayers,
+      c.perR, r.angle, r.finalAngle, c.tEnd, r.particles, r.steps, r.seconds,
+      r.finite ? "" : " (NOT FINITE)");
+  return r.finite ? 0 : 1;
 }
-
 
 // Validation 5 (tests/sim/interface_cavity.cpp runs the same scenes for the CI): the oil starts
 // as a flat cut of volume fraction 0.3 (tilted by `tiltDeg` from the +y axis) in a spherical
@@ -305,19 +270,32 @@ int main(int argc, char** argv) {
   if (argc >= 2 && std::strcmp(argv[1], "oscillation") == 0)
     return oscillation(argc > 2 ? std::atof(argv[2]) * 1e-3 : 0.003, argc > 3 ? std::atof(argv[3]) : 6,
                        argc > 4 ? std::atof(argv[4]) : 2.2);
-  if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0)
-    return sessile(std::atof(argv[2]), argc > 3 ? std::atof(argv[3]) : 0.05,
-                   argc > 4 ? std::atof(argv[4]) : 0.0);
+  if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0) {
+    testing::SessileCase c;
+    c.theta = std::atof(argv[2]);
+    if (argc > 3) c.tEnd = std::atof(argv[3]);
+    if (argc > 4) c.startCos = std::atof(argv[4]);
+    if (argc > 5) c.solver = argv[5];
+    if (argc > 6) c.wallLayers = std::atoi(argv[6]);
+    if (argc > 7) c.perR = std::atof(argv[7]);
+    if (argc > 8) c.viscosity = std::atof(argv[8]);
+    if (argc > 9) c.jitter = std::atof(argv[9]);
+    if (argc > 10) c.relaxSteps = std::atoi(argv[10]);
+    if (argc > 11) c.halfWidthPerR = std::atof(argv[11]);
+    return sessile(c);
+  }
   if (argc >= 3 && std::strcmp(argv[1], "cavity") == 0)
     return cavity(std::strcmp(argv[2], "flat") != 0, std::atof(argv[2]),
                   argc > 3 ? std::atof(argv[3]) : 0.1, argc > 4 ? std::atof(argv[4]) : 8,
                   argc > 5 ? std::atof(argv[5]) : 0, argc > 6 ? std::atof(argv[6]) : 700,
                   argc > 7 ? std::atof(argv[7]) : 0.005, argc > 8 ? std::atof(argv[8]) : 0.04,
                   argc > 9 && std::atoi(argv[9]) != 0, argc > 10 ? argv[10] : "wcsph");
-  std::fprintf(stderr,
-               "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods]\n"
-               "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n"
-               "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
-               "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
+  std::fprintf(
+      stderr,
+      "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods]\n"
+      "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
+      "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]\n"
+      "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
+      "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <random>
 #include <utility>
 #include <vector>
 
@@ -55,6 +56,13 @@ struct DropletSpec {
   // [1] shape perturbation of a free droplet, r(theta) = R (1 + eps P2(cos theta)) with theta
   // from the +y axis (the l = 2 mode of the oscillation benchmark)
   Real p2Amplitude = 0;
+  // [1] 0: the walls are one Akinci 2012 surface layer and the lattice starts kWallGap d from
+  // them; n >= 1: n layers of lattice wall particles (sim/boundary/wall_layers.h) continuing the
+  // fluid lattice, which then starts d/2 from the faces (the layered wall's rest state).
+  int wallLayers = 0;
+  // [d] each lattice position moved by up to this much per axis (std::mt19937, seed 7: the same
+  // sequence on every platform); the phase is decided at the lattice site.
+  Real jitter = 0;
 };
 
 // Fills the closed box on a lattice of spacing d starting kWallGap d from the walls; particles
@@ -64,9 +72,12 @@ struct DropletSpec {
 inline DropletScene dropletScene(const DropletSpec& s) {
   DropletScene out;
   const Real d = s.spacing;
-  const Real gap = (kWallGap - 0.5) * d;
-  const Real width = 2 * s.halfWidth;
-  const Real height = s.boxHeight > 0 ? s.boxHeight : width;
+  const bool layered = s.wallLayers > 0;
+  const Real gap = layered ? 0.0 : (kWallGap - 0.5) * d;
+  // Layered walls continue the fluid lattice: the box holds whole cells.
+  auto cells = [&](Real length) { return layered ? std::round(length / d) * d : length; };
+  const Real width = cells(2 * s.halfWidth);
+  const Real height = cells(s.boxHeight > 0 ? s.boxHeight : width);
   out.spec.innerMin = Vec3::Zero();
   out.spec.innerMax = Vec3(width + 2 * gap, height + 2 * gap, width + 2 * gap);
   out.spec.closedTop = true;
@@ -74,12 +85,19 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   params.particleSpacing = d;
   params.gravity = Vec3::Zero();
   params.domain = tankDomain(out.spec, d);
+  if (layered) {  // room for the layers behind the faces
+    params.domain.extend(out.spec.innerMin - Vec3::Constant((s.wallLayers + 1) * d));
+    params.domain.extend(out.spec.innerMax + Vec3::Constant((s.wallLayers + 1) * d));
+  }
   out.world = std::make_unique<World>(params);
   World& w = *out.world;
   out.oil = w.materials.add(liquid("oil", s.oilDensity, s.oilViscosity));
   out.aqueous = w.materials.add(liquid("aqueous", s.aqueousDensity, s.aqueousViscosity));
   w.materials.setInterfacialTension(out.oil, out.aqueous, s.sigma);
-  addTankWalls(w, out.spec, d);
+  if (layered)
+    addTankWalls(w, out.spec, d, 0, WallLayers{s.wallLayers});
+  else
+    addTankWalls(w, out.spec, d);
   // The floor gets its own tag so that a contact angle can be set on it alone.
   for (std::size_t b = 0; b < w.walls.size(); ++b)
     if (w.walls.normal[b].y() < -0.5) w.walls.tag[b] = kFloorTag;
@@ -91,6 +109,10 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   const int nx = static_cast<int>(std::lround(width / d));
   const int ny = static_cast<int>(std::lround(height / d));
   int oilCount = 0;
+  std::mt19937 random(7);
+  const auto jitter = [&] {
+    return s.jitter * d * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0);
+  };
   for (int k = 0; k < nx; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i) {
@@ -100,8 +122,9 @@ inline DropletScene dropletScene(const DropletSpec& s) {
         const bool isOil = r.norm() < s.radius * (1 + s.p2Amplitude * 0.5 * (3 * c * c - 1));
         const int m = isOil ? out.oil : out.aqueous;
         oilCount += isOil;
-        w.particles.add(x, Vec3::Zero(), w.materials[m].restDensity * d * d * d * (1 + s.massExcess),
-                        m);
+        const Vec3 moved = s.jitter > 0 ? Vec3(x + Vec3(jitter(), jitter(), jitter())) : x;
+        w.particles.add(moved, Vec3::Zero(),
+                        w.materials[m].restDensity * d * d * d * (1 + s.massExcess), m);
       }
   out.radius = std::cbrt(3.0 * oilCount * d * d * d / (4.0 * std::numbers::pi));
   w.initialize();
