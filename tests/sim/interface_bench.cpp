@@ -34,7 +34,7 @@ double seconds(std::chrono::steady_clock::time_point t0) {
 // Options as key=value after the positional R_mm, d_per_R, periods: solver=indsph|wcsph,
 // eps=0.05 (P2 amplitude), start=velocity|displace, relax=100 (velocity-reset steps), xsph=0,
 // alpha=0.05 (WCSPH), mu=1e-3, box=2 (half-width / R), expansion=1 (INDSPH corrects expansion
-// in the bulk), csv=FILE (the series Q(t)).
+// in the bulk), tol=, miniter=, maxiter=, warm=, omega= (IndsphParameters), csv=FILE (Q(t)).
 int oscillation(testing::OscillationSpec o, const std::string& csv) {
   const Real period0 = 2 * std::numbers::pi / testing::lambOmega(2, o.sigma, o.radius, 970, 1000);
   std::printf("oscillation: R = %.2f mm, d = R/%.0f, box half-width %.2f R, solver %s, eps %.3f, "
@@ -55,14 +55,19 @@ int oscillation(testing::OscillationSpec o, const std::string& csv) {
     for (std::size_t k = 0; k < run.t.size(); ++k) std::fprintf(f, "%.6e,%.6e\n", run.t[k], run.q[k]);
     std::fclose(f);
   }
-  const auto crossings = testing::zeroCrossings(run.t, run.q);
+  // Zero crossings of Q about its mean (the fit's), while the fitted envelope is above a tenth of
+  // its start (after that the sign changes are the particle noise's); a velocity start is itself
+  // a crossing (the kick leaves the sphere's Q).
+  const testing::DampedCosineFit fit = testing::fitDampedCosine(run.t, run.q, run.omega);
+  const Real tEnd = fit.damping > 0 ? std::log(10.0) / fit.damping : run.t.back();
+  auto crossings = testing::zeroCrossings(run.t, run.q, fit.mean, tEnd);
+  if (o.velocityStart) crossings.insert(crossings.begin(), 0.0);
   for (std::size_t k = 0; k < crossings.size(); ++k)
     std::printf("  zero crossing at t = %.4f s%s\n", crossings[k],
                 k > 0 ? (" (half-period " + std::to_string((crossings[k] - crossings[k - 1]) * 1e3) +
                          " ms)").c_str()
                       : "");
   const Real crossing = testing::crossingPeriod(crossings);
-  const testing::DampedCosineFit fit = testing::fitDampedCosine(run.t, run.q, run.omega);
   const Real fitted = 2 * std::numbers::pi / fit.omega;
   const Real beta = testing::irrotationalDamping(2, run.radius, 970, 1000, o.mu, o.mu);
   const Real layer = testing::interfaceLayerDamping(2, run.radius, 970, 1000, o.mu, 1000, run.omega);
@@ -72,13 +77,13 @@ int oscillation(testing::OscillationSpec o, const std::string& csv) {
               "(3/5) eps R^2, mean %+.3f, drift %+.3f per period (of the same), rms %.3f\n"
               "viscous damping (mu %.1e): irrotational %.2f 1/s, + interface shear layer (estimate) "
               "%.2f 1/s = %.2f 1/s; free drop 5 nu / R^2 = %.2f 1/s\n"
-              "%ld relaxation + %ld steps, wall %.1f s\n",
+              "%ld relaxation + %ld steps (%.1f pressure iterations per step), wall %.1f s\n",
               run.radius * 1e3, run.particles, period * 1e3, crossings.size(), crossing * 1e3,
               100 * (crossing / period - 1), fitted * 1e3, 100 * (fitted / period - 1), fit.damping,
               fit.amplitude / run.q0, fit.mean / run.q0, fit.drift * period / run.q0,
               fit.rms / run.q0, o.mu, beta, layer, beta + layer,
               5 * o.mu / 970 / (run.radius * run.radius), run.relaxSteps, run.steps,
-              run.wallSeconds);
+              run.meanIterations, run.wallSeconds);
   return 0;
 }
 
@@ -276,6 +281,12 @@ int main(int argc, char** argv) {
       else if (key == "box") o.halfWidthPerR = std::atof(value.c_str());
       else if (key == "csv") csv = value;
       else if (key == "expansion") o.bulkExpansion = value != "0";
+      else if (key == "tol") o.indsph.tolerance = std::atof(value.c_str());
+      else if (key == "miniter") o.indsph.minIterations = std::atoi(value.c_str());
+      else if (key == "maxiter") o.indsph.maxIterations = std::atoi(value.c_str());
+      else if (key == "warm") o.indsph.warmStartFactor = std::atof(value.c_str());
+      else if (key == "omega") o.indsph.relaxation = std::atof(value.c_str());
+      else if (key == "dtmax") o.maxTimeStep = std::atof(value.c_str());
       else {
         std::fprintf(stderr, "unknown oscillation option '%s'\n", argv[k]);
         return 2;
@@ -294,7 +305,7 @@ int main(int argc, char** argv) {
                   argc > 9 && std::atoi(argv[9]) != 0, argc > 10 ? argv[10] : "wcsph");
   std::fprintf(stderr,
                "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [solver=indsph|wcsph] "
-               "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] [expansion=1] [csv=FILE]\n"
+               "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] [expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] [csv=FILE]\n"
                "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n"
                "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
                "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");

@@ -55,6 +55,7 @@ struct DropletSpec {
   // [1] shape perturbation of a free droplet, r(theta) = R (1 + eps P2(cos theta)) with theta
   // from the +y axis (the l = 2 mode of the oscillation benchmark)
   Real p2Amplitude = 0;
+  Real maxTimeStep = 0;       // [s] WorldParameters::maxTimeStep when > 0
 };
 
 // Fills the closed box on a lattice of spacing d starting kWallGap d from the walls; particles
@@ -74,6 +75,7 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   params.particleSpacing = d;
   params.gravity = Vec3::Zero();
   params.domain = tankDomain(out.spec, d);
+  if (s.maxTimeStep > 0) params.maxTimeStep = s.maxTimeStep;
   out.world = std::make_unique<World>(params);
   World& w = *out.world;
   out.oil = w.materials.add(liquid("oil", s.oilDensity, s.oilViscosity));

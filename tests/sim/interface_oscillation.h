@@ -68,6 +68,8 @@ struct OscillationSpec {
   Real artificialViscosity = 0.05;  // [1] WCSPH alpha
   Real periods = 2;            // simulated time in Lamb periods (after the relaxation)
   bool bulkExpansion = true;   // INDSPH: IndsphParameters::correctBulkExpansion (closed box)
+  IndsphParameters indsph;     // INDSPH solve (tolerance, iterations, warm start)
+  Real maxTimeStep = 0;        // [s] cap on the step (0: the pipeline's limits only)
 };
 
 struct OscillationRun {
@@ -78,6 +80,7 @@ struct OscillationRun {
   std::size_t particles = 0;
   long steps = 0;              // after the relaxation
   long relaxSteps = 0;
+  Real meanIterations = 0;     // pressure-solve iterations per step (after the relaxation)
   Real wallSeconds = 0;
 };
 
@@ -118,6 +121,7 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
   // the rest number density 1/V0, so the lattice must start at it.
   s.massExcess = o.solver == "wcsph" ? 0.05 : 0.0;
   s.p2Amplitude = o.velocityStart ? 0.0 : o.amplitude;
+  s.maxTimeStep = o.maxTimeStep;
   auto scene = dropletScene(s);
   World& w = *scene.world;
   OscillationRun out;
@@ -128,6 +132,7 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
   PipelineOptions options;
   options.solver = o.solver;
   options.velocitySmoothing = o.velocitySmoothing;
+  options.indsph = o.indsph;
   options.indsph.correctBulkExpansion = o.bulkExpansion;
   options.wcsph.speedOfSound = 12 * std::sqrt(2 * o.sigma / scene.radius / 1000);
   options.wcsph.artificialViscosity = o.artificialViscosity;
@@ -161,6 +166,7 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
   while (w.time - tStart < o.periods * period) {
     pipeline.step(w);
     out.t.push_back(w.time - tStart);
+    out.meanIterations += pipeline.solver().stats().densityIterations;
     out.q.push_back(shapeMoment(w, scene.oil));
     if (verbose && out.t.size() % 20 == 0) {
       Real vmax = 0;
@@ -185,21 +191,20 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
     }
   }
   out.steps = w.stepCount - out.relaxSteps;
+  out.meanIterations /= static_cast<Real>(std::max(out.steps, 1L));
   out.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
 }
 
-// Times [s] where Q minus its mean changes sign (linear interpolation). The mean is taken over the
-// whole record; a crossing counts only after the signal has stayed on one side for minGap
-// samples, so particle noise near zero does not add crossings.
+// Times [s] where Q minus its mean changes sign (linear interpolation), counted only up to
+// `tEnd` (where the oscillation has decayed into the particle noise, sign changes of the noise
+// are not half-periods). A crossing counts only after the signal has stayed on one side for
+// minGap samples.
 inline std::vector<Real> zeroCrossings(const std::vector<Real>& t, const std::vector<Real>& q,
-                                       std::size_t minGap = 5) {
-  Real mean = 0;
-  for (const Real v : q) mean += v;
-  mean /= static_cast<Real>(q.size());
+                                       Real mean, Real tEnd, std::size_t minGap = 5) {
   std::vector<Real> out;
   std::size_t last = 0;
-  for (std::size_t k = 1; k < q.size(); ++k) {
+  for (std::size_t k = 1; k < q.size() && t[k] <= tEnd; ++k) {
     const Real a = q[k - 1] - mean, b = q[k] - mean;
     if (a * b < 0 && (out.empty() || k - last >= minGap)) {
       out.push_back(t[k - 1] + (t[k] - t[k - 1]) * a / (a - b));
