@@ -287,6 +287,7 @@ int main(int argc, char** argv) {
       else if (key == "warm") o.indsph.warmStartFactor = std::atof(value.c_str());
       else if (key == "omega") o.indsph.relaxation = std::atof(value.c_str());
       else if (key == "dtmax") o.maxTimeStep = std::atof(value.c_str());
+      else if (key == "jitter") o.jitter = std::atof(value.c_str());
       else {
         std::fprintf(stderr, "unknown oscillation option '%s'\n", argv[k]);
         return 2;
@@ -305,7 +306,7 @@ int main(int argc, char** argv) {
                   argc > 9 && std::atoi(argv[9]) != 0, argc > 10 ? argv[10] : "wcsph");
   std::fprintf(stderr,
                "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [solver=indsph|wcsph] "
-               "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] [expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] [csv=FILE]\n"
+               "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] [expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] [jitter=0] [csv=FILE]\n"
                "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n"
                "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
                "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");

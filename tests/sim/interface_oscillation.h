@@ -11,6 +11,7 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,8 @@ struct OscillationSpec {
   bool bulkExpansion = true;   // INDSPH: IndsphParameters::correctBulkExpansion (closed box)
   IndsphParameters indsph;     // INDSPH solve (tolerance, iterations, warm start)
   Real maxTimeStep = 0;        // [s] cap on the step (0: the pipeline's limits only)
+  Real jitter = 0;             // [1] lattice positions moved by up to +-jitter d per axis before
+                               // the relaxation (fixed seed): a disordered start
 };
 
 struct OscillationRun {
@@ -124,6 +127,12 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
   s.maxTimeStep = o.maxTimeStep;
   auto scene = dropletScene(s);
   World& w = *scene.world;
+  if (o.jitter > 0) {
+    // std::mt19937's sequence is fixed by the standard (its distributions' are not).
+    std::mt19937 random(7);
+    const auto u = [&] { return o.jitter * s.spacing * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0); };
+    for (Vec3& x : w.particles.x) x += Vec3(u(), u(), u());
+  }
   OscillationRun out;
   out.radius = scene.radius;
   out.omega = lambOmega(2, o.sigma, scene.radius, 970, 1000);
@@ -147,8 +156,13 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
     if (verbose && (k + 1) % 20 == 0) {
       Real vmax = 0;
       for (const Vec3& v : w.particles.v) vmax = std::max(vmax, v.norm());
-      std::printf("  relaxation step %d: max speed before the reset %.2e m/s, Q %+.3e m^2\n", k + 1,
-                  vmax, shapeMoment(w, scene.oil));
+      const Real h = w.supportRadius();
+      const PressureJump jump = measureDropletPressureJump(
+          w, w.particles.fields.get<Real>("pressure"),
+          {centreOfMaterial(w, scene.oil), scene.radius, h, scene.oil, scene.radius + 2 * h});
+      std::printf("  relaxation step %d: max speed before the reset %.2e m/s, Q %+.3e m^2, "
+                  "pressure jump %.2f Pa (2 sigma / R = %.2f Pa)\n",
+                  k + 1, vmax, shapeMoment(w, scene.oil), jump.jump, 2 * o.sigma / scene.radius);
     }
     for (Vec3& v : w.particles.v) v.setZero();
   }
@@ -183,9 +197,14 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
         for (int b = 0; b < 8; ++b) std::printf(" %.3f", cnt[b] > 0 ? std::sqrt(sum[b] / cnt[b]) : 0.0);
         std::printf("\n");
       }
+      const Real h = w.supportRadius();
+      const PressureJump jump = measureDropletPressureJump(
+          w, w.particles.fields.get<Real>("pressure"),
+          {centreOfMaterial(w, scene.oil), scene.radius, h, scene.oil, scene.radius + 2 * h});
       std::printf("  t = %.4f s  Q = %+.3e m^2 (%+.3f of (3/5) eps R^2)  dt %.2e s  max speed %.3f "
-                  "m/s  wall %.0f s\n",
+                  "m/s  jump %.3f of 2 sigma/R  wall %.0f s\n",
                   out.t.back(), out.q.back(), out.q.back() / out.q0, w.lastTimeStep, vmax,
+                  jump.jump * scene.radius / (2 * o.sigma),
                   std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       std::fflush(stdout);
     }
