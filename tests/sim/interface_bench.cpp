@@ -30,6 +30,42 @@ double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
+// Half-periods, both period estimates and the fit, against Lamb's period 2 pi / omega; Q in units
+// of q0 = (3/5) eps R^2.
+void printAnalysis(const testing::OscillationAnalysis& an, Real omega, Real q0) {
+  const Real period = 2 * std::numbers::pi / omega;
+  for (std::size_t k = 0; k < an.crossings.size(); ++k)
+    std::printf("  zero crossing at t = %.4f s%s\n", an.crossings[k],
+                k > 0 ? (" (half-period " + std::to_string((an.crossings[k] - an.crossings[k - 1]) * 1e3) +
+                         " ms)").c_str()
+                      : "");
+  std::printf("Lamb period %.2f ms\nzero crossings: %zu, period %.2f ms (%+.1f %%)\n"
+              "damped-cosine fit: period %.2f ms (%+.1f %%), damping %.2f 1/s, amplitude %.3f of "
+              "(3/5) eps R^2, mean %+.3f, drift %+.3f per period (of the same), rms %.3f\n",
+              period * 1e3, an.crossings.size(), an.crossingPeriod * 1e3,
+              100 * (an.crossingPeriod / period - 1), an.fittedPeriod * 1e3,
+              100 * (an.fittedPeriod / period - 1), an.fit.damping, an.fit.amplitude / q0,
+              an.fit.mean / q0, an.fit.drift * period / q0, an.fit.rms / q0);
+}
+
+// Re-analyses a series written with csv=FILE: R_eq [mm] (printed by the run), eps, start.
+int oscillationCsv(const char* file, Real radius, Real eps, bool velocityStart) {
+  FILE* f = std::fopen(file, "r");
+  if (f == nullptr) return 2;
+  std::vector<Real> t, q;
+  char line[256];
+  if (std::fgets(line, sizeof line, f) == nullptr) return 2;  // header
+  double a = 0, b = 0;
+  while (std::fscanf(f, "%lf,%lf", &a, &b) == 2) {
+    t.push_back(a);
+    q.push_back(b);
+  }
+  std::fclose(f);
+  const Real omega = testing::lambOmega(2, 0.04, radius, 970, 1000);
+  printAnalysis(testing::analyseOscillation(t, q, omega, velocityStart), omega, 0.6 * eps * radius * radius);
+  return 0;
+}
+
 // Validation 2: the l = 2 oscillation against Lamb (tests/sim/interface_oscillation.h).
 // Options as key=value after the positional R_mm, d_per_R, periods: solver=indsph|wcsph,
 // eps=0.05 (P2 amplitude), start=velocity|displace, relax=100 (velocity-reset steps), xsph=0,
@@ -55,33 +91,15 @@ int oscillation(testing::OscillationSpec o, const std::string& csv) {
     for (std::size_t k = 0; k < run.t.size(); ++k) std::fprintf(f, "%.6e,%.6e\n", run.t[k], run.q[k]);
     std::fclose(f);
   }
-  // Zero crossings of Q about its mean (the fit's), while the fitted envelope is above a tenth of
-  // its start (after that the sign changes are the particle noise's); a velocity start is itself
-  // a crossing (the kick leaves the sphere's Q).
-  const testing::DampedCosineFit fit = testing::fitDampedCosine(run.t, run.q, run.omega);
-  const Real tEnd = fit.damping > 0 ? std::log(10.0) / fit.damping : run.t.back();
-  auto crossings = testing::zeroCrossings(run.t, run.q, fit.mean, tEnd);
-  if (o.velocityStart) crossings.insert(crossings.begin(), 0.0);
-  for (std::size_t k = 0; k < crossings.size(); ++k)
-    std::printf("  zero crossing at t = %.4f s%s\n", crossings[k],
-                k > 0 ? (" (half-period " + std::to_string((crossings[k] - crossings[k - 1]) * 1e3) +
-                         " ms)").c_str()
-                      : "");
-  const Real crossing = testing::crossingPeriod(crossings);
-  const Real fitted = 2 * std::numbers::pi / fit.omega;
+  const testing::OscillationAnalysis an = testing::analyseOscillation(run.t, run.q, run.omega, o.velocityStart);
+  printAnalysis(an, run.omega, run.q0);
   const Real beta = testing::irrotationalDamping(2, run.radius, 970, 1000, o.mu, o.mu);
   const Real layer = testing::interfaceLayerDamping(2, run.radius, 970, 1000, o.mu, 1000, run.omega);
   std::printf("R_eq %.3f mm, %zu particles; Lamb period %.2f ms\n"
-              "zero crossings: %zu, period %.2f ms (%+.1f %%)\n"
-              "damped-cosine fit: period %.2f ms (%+.1f %%), damping %.2f 1/s, amplitude %.3f of "
-              "(3/5) eps R^2, mean %+.3f, drift %+.3f per period (of the same), rms %.3f\n"
               "viscous damping (mu %.1e): irrotational %.2f 1/s, + interface shear layer (estimate) "
               "%.2f 1/s = %.2f 1/s; free drop 5 nu / R^2 = %.2f 1/s\n"
               "%ld relaxation + %ld steps (%.1f pressure iterations per step), wall %.1f s\n",
-              run.radius * 1e3, run.particles, period * 1e3, crossings.size(), crossing * 1e3,
-              100 * (crossing / period - 1), fitted * 1e3, 100 * (fitted / period - 1), fit.damping,
-              fit.amplitude / run.q0, fit.mean / run.q0, fit.drift * period / run.q0,
-              fit.rms / run.q0, o.mu, beta, layer, beta + layer,
+              run.radius * 1e3, run.particles, period * 1e3, o.mu, beta, layer, beta + layer,
               5 * o.mu / 970 / (run.radius * run.radius), run.relaxSteps, run.steps,
               run.meanIterations, run.wallSeconds);
   return 0;
@@ -295,6 +313,9 @@ int main(int argc, char** argv) {
     }
     return oscillation(o, csv);
   }
+  if (argc >= 6 && std::strcmp(argv[1], "oscillation-csv") == 0)
+    return oscillationCsv(argv[2], std::atof(argv[3]) * 1e-3, std::atof(argv[4]),
+                          std::strcmp(argv[5], "velocity") == 0);
   if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0)
     return sessile(std::atof(argv[2]), argc > 3 ? std::atof(argv[3]) : 0.05,
                    argc > 4 ? std::atof(argv[4]) : 0.0);
@@ -307,6 +328,7 @@ int main(int argc, char** argv) {
   std::fprintf(stderr,
                "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [solver=indsph|wcsph] "
                "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] [expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] [jitter=0] [csv=FILE]\n"
+               "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
                "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n"
                "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
                "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");

@@ -18,6 +18,7 @@
 #include <Eigen/Dense>
 
 #include "interface_fixtures.h"
+#include "sim/measure/interface_gap.h"
 
 namespace sim::testing {
 
@@ -161,8 +162,11 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
           w, w.particles.fields.get<Real>("pressure"),
           {centreOfMaterial(w, scene.oil), scene.radius, h, scene.oil, scene.radius + 2 * h});
       std::printf("  relaxation step %d: max speed before the reset %.2e m/s, Q %+.3e m^2, "
-                  "pressure jump %.2f Pa (2 sigma / R = %.2f Pa)\n",
-                  k + 1, vmax, shapeMoment(w, scene.oil), jump.jump, 2 * o.sigma / scene.radius);
+                  "pressure jump %.2f Pa (2 sigma / R = %.2f Pa), interface number density %.3f, "
+                  "nearest other phase %.2f d\n",
+                  k + 1, vmax, shapeMoment(w, scene.oil), jump.jump, 2 * o.sigma / scene.radius,
+                  interfaceGap(w, scene.oil, scene.aqueous).numberDensityRatio,
+                  interfaceGap(w, scene.oil, scene.aqueous).meanNearestDistance);
     }
     for (Vec3& v : w.particles.v) v.setZero();
   }
@@ -250,19 +254,23 @@ struct DampedCosineFit {
 };
 
 // Least-squares fit Q(t) = a + b t + exp(-g t) (c cos(w t) + e sin(w t)): linear in (a, b, c, e),
-// (w, g) by a grid search refined three times around the best point. The drift b shows whether
-// the droplet's mean shape still moves (it should not after a relaxed start).
+// (w, g) by a grid search refined three times around the best point. The drift b (withDrift)
+// absorbs the mean-shape relaxation of an unrelaxed lattice start; after a relaxed start the mean
+// is the sphere's and b only trades off against the damped cosine over one or two periods, so it
+// is left out (b = 0).
 inline DampedCosineFit fitDampedCosine(const std::vector<Real>& t, const std::vector<Real>& q,
-                                       Real omegaGuess) {
+                                       Real omegaGuess, bool withDrift = true) {
   const auto solve = [&](Real wTry, Real gTry, Eigen::Vector4d& c) {
     Eigen::Matrix4d ata = Eigen::Matrix4d::Zero();
     Eigen::Vector4d atb = Eigen::Vector4d::Zero();
     for (std::size_t k = 0; k < q.size(); ++k) {
       const Real e = std::exp(-gTry * t[k]);
-      const Eigen::Vector4d row(1, t[k], e * std::cos(wTry * t[k]), e * std::sin(wTry * t[k]));
+      const Eigen::Vector4d row(1, withDrift ? t[k] : 0.0, e * std::cos(wTry * t[k]),
+                                e * std::sin(wTry * t[k]));
       ata += row * row.transpose();
       atb += row * q[k];
     }
+    if (!withDrift) ata(1, 1) = 1;  // the drift column is zero: keep the system regular (c[1] = 0)
     c = ata.ldlt().solve(atb);
     Real residual = 0;
     for (std::size_t k = 0; k < q.size(); ++k) {
@@ -272,7 +280,7 @@ inline DampedCosineFit fitDampedCosine(const std::vector<Real>& t, const std::ve
     }
     return residual;
   };
-  Real wLo = 0.5 * omegaGuess, wHi = 1.5 * omegaGuess, gLo = 0, gHi = 0.5 * omegaGuess;
+  Real wLo = 0.3 * omegaGuess, wHi = 1.7 * omegaGuess, gLo = 0, gHi = 0.5 * omegaGuess;
   DampedCosineFit best;
   Real bestResidual = std::numeric_limits<Real>::infinity();
   Eigen::Vector4d bestC = Eigen::Vector4d::Zero();
@@ -301,6 +309,35 @@ inline DampedCosineFit fitDampedCosine(const std::vector<Real>& t, const std::ve
   best.amplitude = std::hypot(bestC[2], bestC[3]);
   best.rms = std::sqrt(bestResidual / static_cast<Real>(q.size()));
   return best;
+}
+
+// Both period estimates of one record. After a velocity kick the reference of the crossings is
+// Q of the relaxed sphere, q[0] (0 up to round-off: the centred droplet in the cubic box has the
+// box's symmetry), and the fit has no drift; after a displacement start the reference is the
+// record's mean and the fit has the drift term. Crossings count while the fitted envelope is above
+// a tenth of its start: later sign changes are the particle noise's. The kick is itself a crossing.
+struct OscillationAnalysis {
+  DampedCosineFit fit;
+  std::vector<Real> crossings;  // [s]
+  Real fittedPeriod = 0;        // [s]
+  Real crossingPeriod = 0;      // [s] 0 with fewer than two crossings
+};
+inline OscillationAnalysis analyseOscillation(const std::vector<Real>& t, const std::vector<Real>& q,
+                                              Real omega, bool velocityStart) {
+  OscillationAnalysis a;
+  a.fit = fitDampedCosine(t, q, omega, !velocityStart);
+  Real mean = q.front();
+  if (!velocityStart) {
+    mean = 0;
+    for (const Real v : q) mean += v;
+    mean /= static_cast<Real>(q.size());
+  }
+  const Real tEnd = a.fit.damping > 0 ? std::log(10.0) / a.fit.damping : t.back();
+  a.crossings = zeroCrossings(t, q, mean, tEnd);
+  if (velocityStart) a.crossings.insert(a.crossings.begin(), t.front());
+  a.fittedPeriod = 2 * std::numbers::pi / a.fit.omega;
+  a.crossingPeriod = crossingPeriod(a.crossings);
+  return a;
 }
 
 }  // namespace sim::testing
