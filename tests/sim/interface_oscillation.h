@@ -72,6 +72,7 @@ struct OscillationSpec {
   bool bulkExpansion = true;   // INDSPH: IndsphParameters::correctBulkExpansion (closed box)
   IndsphParameters indsph;     // INDSPH solve (tolerance, iterations, warm start)
   Real maxTimeStep = 0;        // [s] cap on the step (0: the pipeline's limits only)
+  Real massExcess = -1;        // [1] DropletSpec::massExcess; < 0: 0.05 for WCSPH, 0 otherwise
   Real jitter = 0;             // [1] lattice positions moved by up to +-jitter d per axis before
                                // the relaxation (fixed seed): a disordered start
 };
@@ -123,7 +124,7 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
   s.oilViscosity = s.aqueousViscosity = o.mu;
   // WCSPH needs the compressed background (no Tait clamp at p = 0, see DropletSpec); INDSPH holds
   // the rest number density 1/V0, so the lattice must start at it.
-  s.massExcess = o.solver == "wcsph" ? 0.05 : 0.0;
+  s.massExcess = o.massExcess >= 0 ? o.massExcess : (o.solver == "wcsph" ? 0.05 : 0.0);
   s.p2Amplitude = o.velocityStart ? 0.0 : o.amplitude;
   s.maxTimeStep = o.maxTimeStep;
   auto scene = dropletScene(s);
