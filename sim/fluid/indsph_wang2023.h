@@ -94,7 +94,8 @@ class IndsphWang2023 final : public PressureSolver {
   Real numberDensityRate(const World& world, Index i) const;  // D delta_i / Dt, eq. 14 [1/(m^3 s)]
   // Whether particle i's expansion is corrected too (IndsphParameters::correctBulkExpansion).
   bool twoSided(const World& world, Index i) const {
-    return params_.correctBulkExpansion && world.wallNeighbors().begin(i) == world.wallNeighbors().end(i);
+    return params_.correctBulkExpansion &&
+           world.wallNeighbors().begin(i) == world.wallNeighbors().end(i);
   }
   void solveDivergence(World& world, Real dt);
   // Applies the velocity change of the fluid stiffnesses `kappa` and, when given, of the wall

@@ -36,16 +36,18 @@ void printAnalysis(const testing::OscillationAnalysis& an, Real omega, Real q0) 
   const Real period = 2 * std::numbers::pi / omega;
   for (std::size_t k = 0; k < an.crossings.size(); ++k)
     std::printf("  zero crossing at t = %.4f s%s\n", an.crossings[k],
-                k > 0 ? (" (half-period " + std::to_string((an.crossings[k] - an.crossings[k - 1]) * 1e3) +
-                         " ms)").c_str()
+                k > 0 ? (" (half-period " +
+                         std::to_string((an.crossings[k] - an.crossings[k - 1]) * 1e3) + " ms)")
+                            .c_str()
                       : "");
-  std::printf("Lamb period %.2f ms\nzero crossings: %zu, period %.2f ms (%+.1f %%)\n"
-              "damped-cosine fit: period %.2f ms (%+.1f %%), damping %.2f 1/s, amplitude %.3f of "
-              "(3/5) eps R^2, mean %+.3f, drift %+.3f per period (of the same), rms %.3f\n",
-              period * 1e3, an.crossings.size(), an.crossingPeriod * 1e3,
-              100 * (an.crossingPeriod / period - 1), an.fittedPeriod * 1e3,
-              100 * (an.fittedPeriod / period - 1), an.fit.damping, an.fit.amplitude / q0,
-              an.fit.mean / q0, an.fit.drift * period / q0, an.fit.rms / q0);
+  std::printf(
+      "Lamb period %.2f ms\nzero crossings: %zu, period %.2f ms (%+.1f %%)\n"
+      "damped-cosine fit: period %.2f ms (%+.1f %%), damping %.2f 1/s, amplitude %.3f of "
+      "(3/5) eps R^2, mean %+.3f, drift %+.3f per period (of the same), rms %.3f\n",
+      period * 1e3, an.crossings.size(), an.crossingPeriod * 1e3,
+      100 * (an.crossingPeriod / period - 1), an.fittedPeriod * 1e3,
+      100 * (an.fittedPeriod / period - 1), an.fit.damping, an.fit.amplitude / q0, an.fit.mean / q0,
+      an.fit.drift * period / q0, an.fit.rms / q0);
 }
 
 // Re-analyses a series written with csv=FILE: R_eq [mm] (printed by the run), eps, start.
@@ -62,7 +64,8 @@ int oscillationCsv(const char* file, Real radius, Real eps, bool velocityStart) 
   }
   std::fclose(f);
   const Real omega = testing::lambOmega(2, 0.04, radius, 970, 1000);
-  printAnalysis(testing::analyseOscillation(t, q, omega, velocityStart), omega, 0.6 * eps * radius * radius);
+  printAnalysis(testing::analyseOscillation(t, q, omega, velocityStart), omega,
+                0.6 * eps * radius * radius);
   return 0;
 }
 
@@ -73,35 +76,39 @@ int oscillationCsv(const char* file, Real radius, Real eps, bool velocityStart) 
 // in the bulk), tol=, miniter=, maxiter=, warm=, omega= (IndsphParameters), csv=FILE (Q(t)).
 int oscillation(testing::OscillationSpec o, const std::string& csv) {
   const Real period0 = 2 * std::numbers::pi / testing::lambOmega(2, o.sigma, o.radius, 970, 1000);
-  std::printf("oscillation: R = %.2f mm, d = R/%.0f, box half-width %.2f R, solver %s, eps %.3f, "
-              "%s start after %d relaxation steps, mu %.1e Pa s, XSPH %.3f, alpha %.3f, bulk expansion "
-              "%s; Lamb "
-              "period %.2f ms (Rayleigh in vacuum %.2f ms)\n",
-              o.radius * 1e3, o.perR, o.halfWidthPerR, o.solver.c_str(), o.amplitude,
-              o.velocityStart ? "velocity" : "displacement", o.relaxSteps, o.mu,
-              o.velocitySmoothing, o.artificialViscosity, o.bulkExpansion ? "corrected" : "clamped",
-              period0 * 1e3,
-              2 * std::numbers::pi / testing::lambOmega(2, o.sigma, o.radius, 970, 0) * 1e3);
+  std::printf(
+      "oscillation: R = %.2f mm, d = R/%.0f, box half-width %.2f R, solver %s, eps %.3f, "
+      "%s start after %d relaxation steps, mu %.1e Pa s, XSPH %.3f, alpha %.3f, bulk expansion "
+      "%s; Lamb "
+      "period %.2f ms (Rayleigh in vacuum %.2f ms)\n",
+      o.radius * 1e3, o.perR, o.halfWidthPerR, o.solver.c_str(), o.amplitude,
+      o.velocityStart ? "velocity" : "displacement", o.relaxSteps, o.mu, o.velocitySmoothing,
+      o.artificialViscosity, o.bulkExpansion ? "corrected" : "clamped", period0 * 1e3,
+      2 * std::numbers::pi / testing::lambOmega(2, o.sigma, o.radius, 970, 0) * 1e3);
   std::fflush(stdout);
   const testing::OscillationRun run = testing::runOscillation(o, true);
   const Real period = 2 * std::numbers::pi / run.omega;
   if (!csv.empty()) {
     FILE* f = std::fopen(csv.c_str(), "w");
     std::fprintf(f, "t_s,Q_m2\n");
-    for (std::size_t k = 0; k < run.t.size(); ++k) std::fprintf(f, "%.6e,%.6e\n", run.t[k], run.q[k]);
+    for (std::size_t k = 0; k < run.t.size(); ++k)
+      std::fprintf(f, "%.6e,%.6e\n", run.t[k], run.q[k]);
     std::fclose(f);
   }
-  const testing::OscillationAnalysis an = testing::analyseOscillation(run.t, run.q, run.omega, o.velocityStart);
+  const testing::OscillationAnalysis an =
+      testing::analyseOscillation(run.t, run.q, run.omega, o.velocityStart);
   printAnalysis(an, run.omega, run.q0);
   const Real beta = testing::irrotationalDamping(2, run.radius, 970, 1000, o.mu, o.mu);
-  const Real layer = testing::interfaceLayerDamping(2, run.radius, 970, 1000, o.mu, 1000, run.omega);
-  std::printf("R_eq %.3f mm, %zu particles; Lamb period %.2f ms\n"
-              "viscous damping (mu %.1e): irrotational %.2f 1/s, + interface shear layer (estimate) "
-              "%.2f 1/s = %.2f 1/s; free drop 5 nu / R^2 = %.2f 1/s\n"
-              "%ld relaxation + %ld steps (%.1f pressure iterations per step), wall %.1f s\n",
-              run.radius * 1e3, run.particles, period * 1e3, o.mu, beta, layer, beta + layer,
-              5 * o.mu / 970 / (run.radius * run.radius), run.relaxSteps, run.steps,
-              run.meanIterations, run.wallSeconds);
+  const Real layer =
+      testing::interfaceLayerDamping(2, run.radius, 970, 1000, o.mu, 1000, run.omega);
+  std::printf(
+      "R_eq %.3f mm, %zu particles; Lamb period %.2f ms\n"
+      "viscous damping (mu %.1e): irrotational %.2f 1/s, + interface shear layer (estimate) "
+      "%.2f 1/s = %.2f 1/s; free drop 5 nu / R^2 = %.2f 1/s\n"
+      "%ld relaxation + %ld steps (%.1f pressure iterations per step), wall %.1f s\n",
+      run.radius * 1e3, run.particles, period * 1e3, o.mu, beta, layer, beta + layer,
+      5 * o.mu / 970 / (run.radius * run.radius), run.relaxSteps, run.steps, run.meanIterations,
+      run.wallSeconds);
   return 0;
 }
 
@@ -289,25 +296,44 @@ int main(int argc, char** argv) {
         continue;
       }
       const std::string key(static_cast<const char*>(argv[k]), eq), value(eq + 1);
-      if (key == "solver") o.solver = value;
-      else if (key == "eps") o.amplitude = std::atof(value.c_str());
-      else if (key == "start") o.velocityStart = value == "velocity";
-      else if (key == "relax") o.relaxSteps = std::atoi(value.c_str());
-      else if (key == "xsph") o.velocitySmoothing = std::atof(value.c_str());
-      else if (key == "alpha") o.artificialViscosity = std::atof(value.c_str());
-      else if (key == "mu") o.mu = std::atof(value.c_str());
-      else if (key == "box") o.halfWidthPerR = std::atof(value.c_str());
-      else if (key == "csv") csv = value;
-      else if (key == "expansion") o.bulkExpansion = value != "0";
-      else if (key == "tol") o.indsph.tolerance = std::atof(value.c_str());
-      else if (key == "miniter") o.indsph.minIterations = std::atoi(value.c_str());
-      else if (key == "maxiter") o.indsph.maxIterations = std::atoi(value.c_str());
-      else if (key == "warm") o.indsph.warmStartFactor = std::atof(value.c_str());
-      else if (key == "omega") o.indsph.relaxation = std::atof(value.c_str());
-      else if (key == "dtmax") o.maxTimeStep = std::atof(value.c_str());
-      else if (key == "jitter") o.jitter = std::atof(value.c_str());
-      else if (key == "divergence") o.indsph.divergenceSolve = value != "0";
-      else if (key == "excess") o.massExcess = std::atof(value.c_str());
+      if (key == "solver")
+        o.solver = value;
+      else if (key == "eps")
+        o.amplitude = std::atof(value.c_str());
+      else if (key == "start")
+        o.velocityStart = value == "velocity";
+      else if (key == "relax")
+        o.relaxSteps = std::atoi(value.c_str());
+      else if (key == "xsph")
+        o.velocitySmoothing = std::atof(value.c_str());
+      else if (key == "alpha")
+        o.artificialViscosity = std::atof(value.c_str());
+      else if (key == "mu")
+        o.mu = std::atof(value.c_str());
+      else if (key == "box")
+        o.halfWidthPerR = std::atof(value.c_str());
+      else if (key == "csv")
+        csv = value;
+      else if (key == "expansion")
+        o.bulkExpansion = value != "0";
+      else if (key == "tol")
+        o.indsph.tolerance = std::atof(value.c_str());
+      else if (key == "miniter")
+        o.indsph.minIterations = std::atoi(value.c_str());
+      else if (key == "maxiter")
+        o.indsph.maxIterations = std::atoi(value.c_str());
+      else if (key == "warm")
+        o.indsph.warmStartFactor = std::atof(value.c_str());
+      else if (key == "omega")
+        o.indsph.relaxation = std::atof(value.c_str());
+      else if (key == "dtmax")
+        o.maxTimeStep = std::atof(value.c_str());
+      else if (key == "jitter")
+        o.jitter = std::atof(value.c_str());
+      else if (key == "divergence")
+        o.indsph.divergenceSolve = value != "0";
+      else if (key == "excess")
+        o.massExcess = std::atof(value.c_str());
       else {
         std::fprintf(stderr, "unknown oscillation option '%s'\n", argv[k]);
         return 2;
@@ -327,12 +353,15 @@ int main(int argc, char** argv) {
                   argc > 5 ? std::atof(argv[5]) : 0, argc > 6 ? std::atof(argv[6]) : 700,
                   argc > 7 ? std::atof(argv[7]) : 0.005, argc > 8 ? std::atof(argv[8]) : 0.04,
                   argc > 9 && std::atoi(argv[9]) != 0, argc > 10 ? argv[10] : "wcsph");
-  std::fprintf(stderr,
-               "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [solver=indsph|wcsph] "
-               "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] [expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] [jitter=0] [divergence=1] [excess=E] [csv=FILE]\n"
-               "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
-               "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n"
-               "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
-               "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
+  std::fprintf(
+      stderr,
+      "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [solver=indsph|wcsph] "
+      "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] "
+      "[expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] "
+      "[jitter=0] [divergence=1] [excess=E] [csv=FILE]\n"
+      "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
+      "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n"
+      "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
+      "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;
 }

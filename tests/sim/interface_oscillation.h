@@ -6,9 +6,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <cmath>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -56,36 +56,36 @@ inline Real interfaceLayerDamping(int l, Real radius, Real rhoI, Real rhoO, Real
 }
 
 struct OscillationSpec {
-  Real radius = 0.003;         // [m] R
-  Real perR = 6;               // [1] R / d
-  Real halfWidthPerR = 2;      // [1] box half-width / R
-  Real sigma = 0.04;           // [N/m]
-  Real mu = 1e-3;              // [Pa s] both phases (physical, water-like)
-  Real amplitude = 0.05;       // [1] eps: peak P2 amplitude of r = R (1 + eps P2(cos theta))
-  bool velocityStart = true;   // kick the relaxed sphere with the linear mode's velocity field;
-                               // false: displace the lattice sphere (the old start)
-  int relaxSteps = 100;        // velocity-reset steps before the kick (0 = lattice start)
+  Real radius = 0.003;        // [m] R
+  Real perR = 6;              // [1] R / d
+  Real halfWidthPerR = 2;     // [1] box half-width / R
+  Real sigma = 0.04;          // [N/m]
+  Real mu = 1e-3;             // [Pa s] both phases (physical, water-like)
+  Real amplitude = 0.05;      // [1] eps: peak P2 amplitude of r = R (1 + eps P2(cos theta))
+  bool velocityStart = true;  // kick the relaxed sphere with the linear mode's velocity field;
+                              // false: displace the lattice sphere (the old start)
+  int relaxSteps = 100;       // velocity-reset steps before the kick (0 = lattice start)
   std::string solver = "indsph";
   Real velocitySmoothing = 0;  // [1] XSPH (incompressible solvers; 0 = only physical viscosity)
   Real artificialViscosity = 0.05;  // [1] WCSPH alpha
-  Real periods = 2;            // simulated time in Lamb periods (after the relaxation)
-  bool bulkExpansion = true;   // INDSPH: IndsphParameters::correctBulkExpansion (closed box)
-  IndsphParameters indsph;     // INDSPH solve (tolerance, iterations, warm start)
-  Real maxTimeStep = 0;        // [s] cap on the step (0: the pipeline's limits only)
-  Real massExcess = -1;        // [1] DropletSpec::massExcess; < 0: 0.05 for WCSPH, 0 otherwise
-  Real jitter = 0;             // [1] lattice positions moved by up to +-jitter d per axis before
-                               // the relaxation (fixed seed): a disordered start
+  Real periods = 2;                 // simulated time in Lamb periods (after the relaxation)
+  bool bulkExpansion = true;        // INDSPH: IndsphParameters::correctBulkExpansion (closed box)
+  IndsphParameters indsph;          // INDSPH solve (tolerance, iterations, warm start)
+  Real maxTimeStep = 0;             // [s] cap on the step (0: the pipeline's limits only)
+  Real massExcess = -1;             // [1] DropletSpec::massExcess; < 0: 0.05 for WCSPH, 0 otherwise
+  Real jitter = 0;  // [1] lattice positions moved by up to +-jitter d per axis before
+                    // the relaxation (fixed seed): a disordered start
 };
 
 struct OscillationRun {
-  std::vector<Real> t, q;      // [s], [m^2] time since the kick and the shape moment Q
-  Real radius = 0;             // [m] equivalent radius of the oil lattice
-  Real omega = 0;              // [1/s] Lamb's omega_2 for that radius
-  Real q0 = 0;                 // [m^2] (3/5) eps R^2: the linear mode's Q amplitude (eps >= 1e-3)
+  std::vector<Real> t, q;  // [s], [m^2] time since the kick and the shape moment Q
+  Real radius = 0;         // [m] equivalent radius of the oil lattice
+  Real omega = 0;          // [1/s] Lamb's omega_2 for that radius
+  Real q0 = 0;             // [m^2] (3/5) eps R^2: the linear mode's Q amplitude (eps >= 1e-3)
   std::size_t particles = 0;
-  long steps = 0;              // after the relaxation
+  long steps = 0;  // after the relaxation
   long relaxSteps = 0;
-  Real meanIterations = 0;     // pressure-solve iterations per step (after the relaxation)
+  Real meanIterations = 0;  // pressure-solve iterations per step (after the relaxation)
   Real wallSeconds = 0;
 };
 
@@ -132,7 +132,9 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
   if (o.jitter > 0) {
     // std::mt19937's sequence is fixed by the standard (its distributions' are not).
     std::mt19937 random(7);
-    const auto u = [&] { return o.jitter * s.spacing * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0); };
+    const auto u = [&] {
+      return o.jitter * s.spacing * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0);
+    };
     for (Vec3& x : w.particles.x) x += Vec3(u(), u(), u());
   }
   OscillationRun out;
@@ -162,12 +164,13 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
       const PressureJump jump = measureDropletPressureJump(
           w, w.particles.fields.get<Real>("pressure"),
           {centreOfMaterial(w, scene.oil), scene.radius, h, scene.oil, scene.radius + 2 * h});
-      std::printf("  relaxation step %d: max speed before the reset %.2e m/s, Q %+.3e m^2, "
-                  "pressure jump %.2f Pa (2 sigma / R = %.2f Pa), interface number density %.3f, "
-                  "nearest other phase %.2f d\n",
-                  k + 1, vmax, shapeMoment(w, scene.oil), jump.jump, 2 * o.sigma / scene.radius,
-                  interfaceGap(w, scene.oil, scene.aqueous).numberDensityRatio,
-                  interfaceGap(w, scene.oil, scene.aqueous).meanNearestDistance);
+      std::printf(
+          "  relaxation step %d: max speed before the reset %.2e m/s, Q %+.3e m^2, "
+          "pressure jump %.2f Pa (2 sigma / R = %.2f Pa), interface number density %.3f, "
+          "nearest other phase %.2f d\n",
+          k + 1, vmax, shapeMoment(w, scene.oil), jump.jump, 2 * o.sigma / scene.radius,
+          interfaceGap(w, scene.oil, scene.aqueous).numberDensityRatio,
+          interfaceGap(w, scene.oil, scene.aqueous).meanNearestDistance);
     }
     for (Vec3& v : w.particles.v) v.setZero();
   }
@@ -194,23 +197,26 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
         const Vec3 c = centreOfMaterial(w, scene.oil);
         std::vector<Real> sum(8, 0), cnt(8, 0);
         for (Index i = 0; i < w.particles.size(); ++i) {
-          const int b = std::min(7, static_cast<int>((w.particles.x[i] - c).norm() / scene.radius * 4));
+          const int b =
+              std::min(7, static_cast<int>((w.particles.x[i] - c).norm() / scene.radius * 4));
           sum[b] += w.particles.v[i].squaredNorm();
           cnt[b] += 1;
         }
         std::printf("   rms speed by r/R (quarters):");
-        for (int b = 0; b < 8; ++b) std::printf(" %.3f", cnt[b] > 0 ? std::sqrt(sum[b] / cnt[b]) : 0.0);
+        for (int b = 0; b < 8; ++b)
+          std::printf(" %.3f", cnt[b] > 0 ? std::sqrt(sum[b] / cnt[b]) : 0.0);
         std::printf("\n");
       }
       const Real h = w.supportRadius();
       const PressureJump jump = measureDropletPressureJump(
           w, w.particles.fields.get<Real>("pressure"),
           {centreOfMaterial(w, scene.oil), scene.radius, h, scene.oil, scene.radius + 2 * h});
-      std::printf("  t = %.4f s  Q = %+.3e m^2 (%+.3f of (3/5) eps R^2)  dt %.2e s  max speed %.3f "
-                  "m/s  jump %.3f of 2 sigma/R  wall %.0f s\n",
-                  out.t.back(), out.q.back(), out.q.back() / out.q0, w.lastTimeStep, vmax,
-                  jump.jump * scene.radius / (2 * o.sigma),
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
+      std::printf(
+          "  t = %.4f s  Q = %+.3e m^2 (%+.3f of (3/5) eps R^2)  dt %.2e s  max speed %.3f "
+          "m/s  jump %.3f of 2 sigma/R  wall %.0f s\n",
+          out.t.back(), out.q.back(), out.q.back() / out.q0, w.lastTimeStep, vmax,
+          jump.jump * scene.radius / (2 * o.sigma),
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       std::fflush(stdout);
     }
   }
@@ -246,12 +252,12 @@ inline Real crossingPeriod(const std::vector<Real>& crossings) {
 }
 
 struct DampedCosineFit {
-  Real omega = 0;   // [1/s]
-  Real damping = 0; // [1/s] amplitude decay rate
-  Real mean = 0;    // [m^2]
-  Real drift = 0;   // [m^2/s]
+  Real omega = 0;      // [1/s]
+  Real damping = 0;    // [1/s] amplitude decay rate
+  Real mean = 0;       // [m^2]
+  Real drift = 0;      // [m^2/s]
   Real amplitude = 0;  // [m^2] at t = 0
-  Real rms = 0;     // [m^2] residual
+  Real rms = 0;        // [m^2] residual
 };
 
 // Least-squares fit Q(t) = a + b t + exp(-g t) (c cos(w t) + e sin(w t)): linear in (a, b, c, e),
@@ -276,7 +282,8 @@ inline DampedCosineFit fitDampedCosine(const std::vector<Real>& t, const std::ve
     Real residual = 0;
     for (std::size_t k = 0; k < q.size(); ++k) {
       const Real e = std::exp(-gTry * t[k]);
-      const Real model = c[0] + c[1] * t[k] + e * (c[2] * std::cos(wTry * t[k]) + c[3] * std::sin(wTry * t[k]));
+      const Real model =
+          c[0] + c[1] * t[k] + e * (c[2] * std::cos(wTry * t[k]) + c[3] * std::sin(wTry * t[k]));
       residual += (q[k] - model) * (q[k] - model);
     }
     return residual;
@@ -323,8 +330,9 @@ struct OscillationAnalysis {
   Real fittedPeriod = 0;        // [s]
   Real crossingPeriod = 0;      // [s] 0 with fewer than two crossings
 };
-inline OscillationAnalysis analyseOscillation(const std::vector<Real>& t, const std::vector<Real>& q,
-                                              Real omega, bool velocityStart) {
+inline OscillationAnalysis analyseOscillation(const std::vector<Real>& t,
+                                              const std::vector<Real>& q, Real omega,
+                                              bool velocityStart) {
   OscillationAnalysis a;
   a.fit = fitDampedCosine(t, q, omega, !velocityStart);
   Real mean = q.front();
