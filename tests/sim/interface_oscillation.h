@@ -8,7 +8,6 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -193,20 +192,6 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
     if (verbose && out.t.size() % 20 == 0) {
       Real vmax = 0;
       for (const Vec3& v : w.particles.v) vmax = std::max(vmax, v.norm());
-      if (std::getenv("OSC_DIAG")) {  // rms speed by distance from the droplet centre
-        const Vec3 c = centreOfMaterial(w, scene.oil);
-        std::vector<Real> sum(8, 0), cnt(8, 0);
-        for (Index i = 0; i < w.particles.size(); ++i) {
-          const int b =
-              std::min(7, static_cast<int>((w.particles.x[i] - c).norm() / scene.radius * 4));
-          sum[b] += w.particles.v[i].squaredNorm();
-          cnt[b] += 1;
-        }
-        std::printf("   rms speed by r/R (quarters):");
-        for (int b = 0; b < 8; ++b)
-          std::printf(" %.3f", cnt[b] > 0 ? std::sqrt(sum[b] / cnt[b]) : 0.0);
-        std::printf("\n");
-      }
       const Real h = w.supportRadius();
       const PressureJump jump = measureDropletPressureJump(
           w, w.particles.fields.get<Real>("pressure"),
