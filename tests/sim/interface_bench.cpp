@@ -334,6 +334,8 @@ int main(int argc, char** argv) {
         o.indsph.divergenceSolve = value != "0";
       else if (key == "excess")
         o.massExcess = std::atof(value.c_str());
+      else if (key == "relaxfactor")
+        o.relaxVelocityFactor = std::atof(value.c_str());
       else {
         std::fprintf(stderr, "unknown oscillation option '%s'\n", argv[k]);
         return 2;
@@ -358,7 +360,7 @@ int main(int argc, char** argv) {
       "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [solver=indsph|wcsph] "
       "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] "
       "[expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] "
-      "[jitter=0] [divergence=1] [excess=E] [csv=FILE]\n"
+      "[jitter=0] [divergence=1] [excess=E] [relaxfactor=0] [csv=FILE]\n"
       "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
       "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos]\n"
       "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "

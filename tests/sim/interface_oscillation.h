@@ -64,6 +64,10 @@ struct OscillationSpec {
   bool velocityStart = true;  // kick the relaxed sphere with the linear mode's velocity field;
                               // false: displace the lattice sphere (the old start)
   int relaxSteps = 100;       // velocity-reset steps before the kick (0 = lattice start)
+  // [1] velocities are multiplied by this after each relaxation step: 0 resets them (gradient
+  // descent), a value near 1 lets the fast acoustic mode equilibrate while damping it; they are
+  // reset at the end either way
+  Real relaxVelocityFactor = 0;
   std::string solver = "indsph";
   Real velocitySmoothing = 0;  // [1] XSPH (incompressible solvers; 0 = only physical viscosity)
   Real artificialViscosity = 0.05;  // [1] WCSPH alpha
@@ -171,8 +175,10 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
           interfaceGap(w, scene.oil, scene.aqueous).numberDensityRatio,
           interfaceGap(w, scene.oil, scene.aqueous).meanNearestDistance);
     }
-    for (Vec3& v : w.particles.v) v.setZero();
+    for (Vec3& v : w.particles.v) v *= o.relaxVelocityFactor;
   }
+  if (o.relaxSteps > 0)
+    for (Vec3& v : w.particles.v) v.setZero();
   out.relaxSteps = w.stepCount;
   if (o.velocityStart) {
     const Vec3 c = centreOfMaterial(w, scene.oil);
