@@ -175,10 +175,11 @@ void IndsphWang2023::solveDivergence(World& world, Real dt) {
     for (Index i = 0; i < n; ++i) {
       const bool full = world.fluidNeighbors().end(i) - world.fluidNeighbors().begin(i) >=
                         params_.minNeighborsForDivergence;
-      predicted_[i] = full ? std::max(numberDensityRate(world, i), Real(0)) : 0.0;
+      const Real rate = numberDensityRate(world, i);
+      predicted_[i] = !full ? 0.0 : (twoSided(world, i) ? rate : std::max(rate, Real(0)));
     }
     return reducer_.sum(n, [&](std::size_t i) {
-             return predicted_[i] * world.restVolumeOf(static_cast<Index>(i));
+             return std::abs(predicted_[i]) * world.restVolumeOf(static_cast<Index>(i));
            }) * dt / n;
   };
   Real error = computeRates();
@@ -205,8 +206,13 @@ Real IndsphWang2023::predictNumberDensity(World& world, Real dt) {
     const Real delta0 = 1.0 / world.restVolumeOf(i);
     // Eq. 15 written with the continuity equation (14); only compression is corrected so that a
     // free surface may expand (as in DFSPH).
-    predicted_[i] = std::max(delta[i] + dt * numberDensityRate(world, i), delta0);
+    const Real unclamped = delta[i] + dt * numberDensityRate(world, i);
+    predicted_[i] = twoSided(world, i) ? unclamped : std::max(unclamped, delta0);
   }
+  if (params_.correctBulkExpansion)
+    return reducer_.sum(n, [&](std::size_t i) {
+             return std::abs(predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0);
+           }) / n;
   return reducer_.sum(n, [&](std::size_t i) {
            return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
          }) / n;
@@ -268,7 +274,7 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
   if (staticWalls_) predictWallNumberDensity(world, dt);
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    increment_[i] = predicted_[i] * world.restVolumeOf(i) > 1.0
+    increment_[i] = predicted_[i] * world.restVolumeOf(i) > 1.0 || twoSided(world, i)
                         ? params_.warmStartFactor * warmStart_[i]
                         : 0.0;
     kappa[i] = increment_[i];

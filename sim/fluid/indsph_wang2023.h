@@ -61,6 +61,15 @@ struct IndsphParameters {
   // A particle intruding past the surface layer contributes W(d) d^3 = 8 % and stays covered;
   // the fluid particle's own constraint still sees every wall particle.
   Real minWallDynamicFraction = 0.01;
+  // Closed domains filled with fluid (no free surface): also correct EXPANSION of fluid particles
+  // that have no wall neighbour, i.e. let kappa and p go negative there. The one-sided clamp
+  // (max(delta*, delta0), which lets a free surface expand) pins a closed fluid at rest to p = 0,
+  // so wherever the flow needs a pressure below its mean (-rho dphi/dt < 0 around an oscillating
+  // droplet) the fluid is not pulled but left to rarefy: the l = 2 droplet oscillated at half
+  // Lamb's frequency with the clamp (docs/interface.md, validation 2). Particles next to walls keep
+  // the clamp (a single-layer wall under-fills their number density at rest). The convergence
+  // measures then use |delta* V0 - 1| (two-sided errors must not cancel in the mean). Default off.
+  bool correctBulkExpansion = false;
 };
 
 // Layered-wall (eq. 21) state: wall particles with dynamic neighbours and their pairs, the
@@ -83,6 +92,11 @@ class IndsphWang2023 final : public PressureSolver {
  private:
   Real predictNumberDensity(World& world, Real dt);  // fills predicted_, returns mean compression
   Real numberDensityRate(const World& world, Index i) const;  // D delta_i / Dt, eq. 14 [1/(m^3 s)]
+  // Whether particle i's expansion is corrected too (IndsphParameters::correctBulkExpansion).
+  bool twoSided(const World& world, Index i) const {
+    return params_.correctBulkExpansion &&
+           world.wallNeighbors().begin(i) == world.wallNeighbors().end(i);
+  }
   void solveDivergence(World& world, Real dt);
   // Applies the velocity change of the fluid stiffnesses `kappa` and, when given, of the wall
   // stiffnesses `wallKappa` (layered walls, indexed like world.walls).

@@ -1,5 +1,5 @@
 // Longer interface validations (issue 6) that are too costly for CI, run by hand:
-//   sim_interface_bench oscillation [R_mm] [d_per_R] [periods]  l = 2 oscillation vs Lamb
+//   sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [key=value...]  l = 2 vs Lamb
 //   sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] [R_per_d]
 //                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]
 //                                                      sessile droplet contact angle
@@ -20,6 +20,7 @@
 
 #include "interface_fixtures.h"
 #include "interface_sessile.h"
+#include "interface_oscillation.h"
 #include "sim/measure/droplet_pressure_jump.h"
 #include "sim/measure/sessile_contact_angle.h"
 #include "sim/measure/wall_nearest_material.h"
@@ -32,107 +33,85 @@ double seconds(std::chrono::steady_clock::time_point t0) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
-// Shape moment of the oil: Q = <y^2> - (<x^2> + <z^2>) / 2 about its centre [m^2]; it follows
-// the P2 amplitude of the droplet's shape.
-Real shapeMoment(const World& w, int oil) {
-  const Vec3 c = centreOfMaterial(w, oil);
-  Real q = 0;
-  int n = 0;
-  for (Index i = 0; i < w.particles.size(); ++i)
-    if (w.particles.material[i] == oil) {
-      const Vec3 r = w.particles.x[i] - c;
-      q += r.y() * r.y() - 0.5 * (r.x() * r.x() + r.z() * r.z());
-      ++n;
-    }
-  return q / n;
+// Half-periods, both period estimates and the fit, against Lamb's period 2 pi / omega; Q in units
+// of q0 = (3/5) eps R^2.
+void printAnalysis(const testing::OscillationAnalysis& an, Real omega, Real q0) {
+  const Real period = 2 * std::numbers::pi / omega;
+  for (std::size_t k = 0; k < an.crossings.size(); ++k)
+    std::printf("  zero crossing at t = %.4f s%s\n", an.crossings[k],
+                k > 0 ? (" (half-period " +
+                         std::to_string((an.crossings[k] - an.crossings[k - 1]) * 1e3) + " ms)")
+                            .c_str()
+                      : "");
+  std::printf(
+      "Lamb period %.2f ms\nzero crossings: %zu, period %.2f ms (%+.1f %%)\n"
+      "damped-cosine fit: period %.2f ms (%+.1f %%), damping %.2f 1/s, amplitude %.3f of "
+      "(3/5) eps R^2, mean %+.3f, drift %+.3f per period (of the same), rms %.3f\n",
+      period * 1e3, an.crossings.size(), an.crossingPeriod * 1e3,
+      100 * (an.crossingPeriod / period - 1), an.fittedPeriod * 1e3,
+      100 * (an.fittedPeriod / period - 1), an.fit.damping, an.fit.amplitude / q0, an.fit.mean / q0,
+      an.fit.drift * period / q0, an.fit.rms / q0);
 }
 
-int oscillation(Real radius, Real perR, Real kPeriods) {
-  testing::DropletSpec s;
-  s.radius = radius;
-  s.spacing = radius / perR;
-  s.halfWidth = 2 * radius;
-  s.sigma = 0.04;
-  s.oilViscosity = s.aqueousViscosity = 1e-3;  // water-like: damping 5 nu / R^2 << omega
-  s.massExcess = 0.05;
-  s.p2Amplitude = 0.15;
-  auto scene = testing::dropletScene(s);
-  World& w = *scene.world;
-  const Real rhoI = 970, rhoO = 1000;
-  // Lamb (1932, Hydrodynamics, section 275): a drop of density rhoI in a liquid of density rhoO,
-  //   omega_l^2 = l (l+1) (l-1) (l+2) sigma / (R^3 ((l+1) rhoI + l rhoO));
-  // with rhoO = 0 it is Rayleigh's l (l-1) (l+2) sigma / (rhoI R^3).
-  const Real R = scene.radius;
-  const Real omega = std::sqrt(24 * s.sigma / (R * R * R * (3 * rhoI + 2 * rhoO)));
-  const Real period = 2 * std::numbers::pi / omega;
-  PipelineOptions options;
-  options.solver = "wcsph";
-  options.wcsph.speedOfSound = 12 * std::sqrt(2 * s.sigma / R / 1000);
-  Pipeline pipeline = assemblePipeline(w, options);
-  pipeline.attach(w);
-  std::printf("oscillation: R = %.2f mm, d = R/%.0f, %zu particles, sigma %.3f N/m, Lamb period "
-              "%.2f ms (Rayleigh in vacuum %.2f ms)\n",
-              R * 1e3, perR, w.particles.size(), s.sigma, period * 1e3,
-              2 * std::numbers::pi / std::sqrt(8 * s.sigma / (rhoI * R * R * R)) * 1e3);
-  const auto t0 = std::chrono::steady_clock::now();
-  std::vector<Real> times, q;
-  while (w.time < kPeriods * period) {
-    pipeline.step(w);
-    times.push_back(w.time);
-    q.push_back(shapeMoment(w, scene.oil));
+// Re-analyses a series written with csv=FILE: R_eq [mm] (printed by the run), eps, start.
+int oscillationCsv(const char* file, Real radius, Real eps, bool velocityStart) {
+  FILE* f = std::fopen(file, "r");
+  if (f == nullptr) return 2;
+  std::vector<Real> t, q;
+  char line[256];
+  if (std::fgets(line, sizeof line, f) == nullptr) return 2;  // header
+  double a = 0, b = 0;
+  while (std::fscanf(f, "%lf,%lf", &a, &b) == 2) {
+    t.push_back(a);
+    q.push_back(b);
   }
-  for (std::size_t k = 0; k < q.size(); k += q.size() / 40)
-    std::printf("  t = %.4f s  Q = %+.3e m^2\n", times[k], q[k]);
-  // Least-squares fit Q(t) = a + b t + exp(-g t) (c cos(w t) + e sin(w t)) over a grid of (w, g),
-  // linear in (a, b, c, e): the drift term absorbs the slow relaxation of the lattice droplet's
-  // mean shape, the damping the viscous and artificial dissipation.
-  Real bestW = 0, bestG = 0, bestResidual = std::numeric_limits<Real>::infinity();
-  for (int iw = 0; iw <= 200; ++iw) {
-    const Real wTry = omega * (0.5 + iw / 200.0);
-    for (int ig = 0; ig <= 30; ++ig) {
-      const Real gTry = ig / 30.0 * 3.0 / period;
-      Eigen::Matrix4d ata = Eigen::Matrix4d::Zero();
-      Eigen::Vector4d atb = Eigen::Vector4d::Zero();
-      for (std::size_t k = 0; k < q.size(); ++k) {
-        const Real e = std::exp(-gTry * times[k]);
-        const Eigen::Vector4d row(1, times[k] / period, e * std::cos(wTry * times[k]),
-                                  e * std::sin(wTry * times[k]));
-        ata += row * row.transpose();
-        atb += row * q[k];
-      }
-      const Eigen::Vector4d c = ata.ldlt().solve(atb);
-      Real residual = 0;
-      for (std::size_t k = 0; k < q.size(); ++k) {
-        const Real e = std::exp(-gTry * times[k]);
-        const Real model = c[0] + c[1] * times[k] / period +
-                           e * (c[2] * std::cos(wTry * times[k]) + c[3] * std::sin(wTry * times[k]));
-        residual += (q[k] - model) * (q[k] - model);
-      }
-      if (residual < bestResidual) {
-        bestResidual = residual;
-        bestW = wTry;
-        bestG = gTry;
-      }
-    }
+  std::fclose(f);
+  const Real omega = testing::lambOmega(2, 0.04, radius, 970, 1000);
+  printAnalysis(testing::analyseOscillation(t, q, omega, velocityStart), omega,
+                0.6 * eps * radius * radius);
+  return 0;
+}
+
+// Validation 2: the l = 2 oscillation against Lamb (tests/sim/interface_oscillation.h).
+// Options as key=value after the positional R_mm, d_per_R, periods: solver=indsph|wcsph,
+// eps=0.05 (P2 amplitude), start=velocity|displace, relax=100 (velocity-reset steps), xsph=0,
+// alpha=0.05 (WCSPH), mu=1e-3, box=2 (half-width / R), expansion=1 (INDSPH corrects expansion
+// in the bulk), tol=, miniter=, maxiter=, warm=, omega= (IndsphParameters), csv=FILE (Q(t)).
+int oscillation(testing::OscillationSpec o, const std::string& csv) {
+  const Real period0 = 2 * std::numbers::pi / testing::lambOmega(2, o.sigma, o.radius, 970, 1000);
+  std::printf(
+      "oscillation: R = %.2f mm, d = R/%.0f, box half-width %.2f R, solver %s, eps %.3f, "
+      "%s start after %d relaxation steps, mu %.1e Pa s, XSPH %.3f, alpha %.3f, bulk expansion "
+      "%s; Lamb "
+      "period %.2f ms (Rayleigh in vacuum %.2f ms)\n",
+      o.radius * 1e3, o.perR, o.halfWidthPerR, o.solver.c_str(), o.amplitude,
+      o.velocityStart ? "velocity" : "displacement", o.relaxSteps, o.mu, o.velocitySmoothing,
+      o.artificialViscosity, o.bulkExpansion ? "corrected" : "clamped", period0 * 1e3,
+      2 * std::numbers::pi / testing::lambOmega(2, o.sigma, o.radius, 970, 0) * 1e3);
+  std::fflush(stdout);
+  const testing::OscillationRun run = testing::runOscillation(o, true);
+  const Real period = 2 * std::numbers::pi / run.omega;
+  if (!csv.empty()) {
+    FILE* f = std::fopen(csv.c_str(), "w");
+    std::fprintf(f, "t_s,Q_m2\n");
+    for (std::size_t k = 0; k < run.t.size(); ++k)
+      std::fprintf(f, "%.6e,%.6e\n", run.t[k], run.q[k]);
+    std::fclose(f);
   }
-  // Extrema of a running mean over +-30 samples: the first period read directly (max to max).
-  std::vector<Real> extremaTimes;
-  const std::size_t halfWindow = 30;
-  std::vector<Real> smooth(q.size(), 0);
-  for (std::size_t k = halfWindow; k + halfWindow < q.size(); ++k) {
-    for (std::size_t j = k - halfWindow; j <= k + halfWindow; ++j) smooth[k] += q[j];
-    smooth[k] /= 2 * halfWindow + 1;
-  }
-  for (std::size_t k = halfWindow + 1; k + halfWindow + 1 < q.size(); ++k)
-    if ((smooth[k] - smooth[k - 1]) * (smooth[k + 1] - smooth[k]) < 0) {
-      extremaTimes.push_back(times[k]);
-      std::printf("  extremum at t = %.4f s (Q = %+.3e m^2)\n", times[k], smooth[k]);
-    }
-  const Real measured = 2 * std::numbers::pi / bestW;
-  std::printf("fitted period %.2f ms (damping %.1f 1/s), Lamb %.2f ms: %+.1f %%; %ld steps, "
-              "wall %.1f s\n",
-              measured * 1e3, bestG, period * 1e3, 100 * (measured / period - 1), w.stepCount,
-              seconds(t0));
+  const testing::OscillationAnalysis an =
+      testing::analyseOscillation(run.t, run.q, run.omega, o.velocityStart);
+  printAnalysis(an, run.omega, run.q0);
+  const Real beta = testing::irrotationalDamping(2, run.radius, 970, 1000, o.mu, o.mu);
+  const Real layer =
+      testing::interfaceLayerDamping(2, run.radius, 970, 1000, o.mu, 1000, run.omega);
+  std::printf(
+      "R_eq %.3f mm, %zu particles; Lamb period %.2f ms\n"
+      "viscous damping (mu %.1e): irrotational %.2f 1/s, + interface shear layer (estimate) "
+      "%.2f 1/s = %.2f 1/s; free drop 5 nu / R^2 = %.2f 1/s\n"
+      "%ld relaxation + %ld steps (%.1f pressure iterations per step), wall %.1f s\n",
+      run.radius * 1e3, run.particles, period * 1e3, o.mu, beta, layer, beta + layer,
+      5 * o.mu / 970 / (run.radius * run.radius), run.relaxSteps, run.steps, run.meanIterations,
+      run.wallSeconds);
   return 0;
 }
 
@@ -267,9 +246,71 @@ int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDe
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc >= 2 && std::strcmp(argv[1], "oscillation") == 0)
-    return oscillation(argc > 2 ? std::atof(argv[2]) * 1e-3 : 0.003, argc > 3 ? std::atof(argv[3]) : 6,
-                       argc > 4 ? std::atof(argv[4]) : 2.2);
+  if (argc >= 2 && std::strcmp(argv[1], "oscillation") == 0) {
+    testing::OscillationSpec o;
+    std::string csv;
+    int positional = 0;
+    for (int k = 2; k < argc; ++k) {
+      const char* eq = std::strchr(argv[k], '=');
+      if (eq == nullptr) {
+        const Real v = std::atof(argv[k]);
+        if (positional == 0) o.radius = v * 1e-3;
+        if (positional == 1) o.perR = v;
+        if (positional == 2) o.periods = v;
+        ++positional;
+        continue;
+      }
+      const std::string key(static_cast<const char*>(argv[k]), eq), value(eq + 1);
+      if (key == "solver")
+        o.solver = value;
+      else if (key == "eps")
+        o.amplitude = std::atof(value.c_str());
+      else if (key == "start")
+        o.velocityStart = value == "velocity";
+      else if (key == "relax")
+        o.relaxSteps = std::atoi(value.c_str());
+      else if (key == "xsph")
+        o.velocitySmoothing = std::atof(value.c_str());
+      else if (key == "alpha")
+        o.artificialViscosity = std::atof(value.c_str());
+      else if (key == "mu")
+        o.mu = std::atof(value.c_str());
+      else if (key == "box")
+        o.halfWidthPerR = std::atof(value.c_str());
+      else if (key == "csv")
+        csv = value;
+      else if (key == "expansion")
+        o.bulkExpansion = value != "0";
+      else if (key == "tol")
+        o.indsph.tolerance = std::atof(value.c_str());
+      else if (key == "miniter")
+        o.indsph.minIterations = std::atoi(value.c_str());
+      else if (key == "maxiter")
+        o.indsph.maxIterations = std::atoi(value.c_str());
+      else if (key == "warm")
+        o.indsph.warmStartFactor = std::atof(value.c_str());
+      else if (key == "omega")
+        o.indsph.relaxation = std::atof(value.c_str());
+      else if (key == "dtmax")
+        o.maxTimeStep = std::atof(value.c_str());
+      else if (key == "jitter")
+        o.jitter = std::atof(value.c_str());
+      else if (key == "divergence")
+        o.indsph.divergenceSolve = value != "0";
+      else if (key == "excess")
+        o.massExcess = std::atof(value.c_str());
+      else if (key == "relaxfactor")
+        o.relaxVelocityFactor = std::atof(value.c_str());
+      else {
+        std::fprintf(stderr, "unknown oscillation option '%s'\n", argv[k]);
+        return 2;
+      }
+    }
+    return oscillation(o, csv);
+  }
+  if (argc >= 6 && std::strcmp(argv[1], "oscillation-csv") == 0)
+    return oscillationCsv(argv[2], std::atof(argv[3]) * 1e-3, std::atof(argv[4]),
+                          std::strcmp(argv[5], "velocity") == 0);
   if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0) {
     testing::SessileCase c;
     c.theta = std::atof(argv[2]);
@@ -292,7 +333,11 @@ int main(int argc, char** argv) {
                   argc > 9 && std::atoi(argv[9]) != 0, argc > 10 ? argv[10] : "wcsph");
   std::fprintf(
       stderr,
-      "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods]\n"
+      "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [solver=indsph|wcsph] "
+      "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] "
+      "[expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] "
+      "[jitter=0] [divergence=1] [excess=E] [relaxfactor=0] [csv=FILE]\n"
+      "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
       "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
       "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]\n"
       "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "

@@ -63,6 +63,7 @@ struct DropletSpec {
   // [d] each lattice position moved by up to this much per axis (std::mt19937, seed 7: the same
   // sequence on every platform); the phase is decided at the lattice site.
   Real jitter = 0;
+  Real maxTimeStep = 0;       // [s] WorldParameters::maxTimeStep when > 0
 };
 
 // Fills the closed box on a lattice of spacing d starting kWallGap d from the walls; particles
@@ -89,6 +90,7 @@ inline DropletScene dropletScene(const DropletSpec& s) {
     params.domain.extend(out.spec.innerMin - Vec3::Constant((s.wallLayers + 1) * d));
     params.domain.extend(out.spec.innerMax + Vec3::Constant((s.wallLayers + 1) * d));
   }
+  if (s.maxTimeStep > 0) params.maxTimeStep = s.maxTimeStep;
   out.world = std::make_unique<World>(params);
   World& w = *out.world;
   out.oil = w.materials.add(liquid("oil", s.oilDensity, s.oilViscosity));
