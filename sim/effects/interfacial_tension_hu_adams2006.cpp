@@ -71,7 +71,7 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
         const Index j = nf.indices[k];
         const int cj = colourOf(p.material[j], pair);
         if (cj < 0 || cj == ci) continue;  // (C_j - C_i) = 0 within a phase
-        g += (p.mass[j] / p.density[j]) * Real(cj - ci) * gradF[k].cast<Real>();
+        g += (p.mass[j] / p.density[j]) * Real(cj - ci) * gradF[k];
       }
       const Real norm = g.norm();  // [1/m]
       gradient_[i] = g;
@@ -92,7 +92,7 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
         if (!stressed_[i] && !stressed_[j]) continue;  // both zero (includes non-members)
         const Mat3 sum = stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
                                       : stress_[j];
-        f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k].cast<Real>());
+        f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
       }
       if (stressed_[i] && nw.count(i) > 0) {
         // Mirror image of the stress across the wall: Pi_b = R Pi_i R with the reflection
@@ -103,7 +103,7 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
         // measured: 120 deg requested went past 157 deg.)
         Vec3 wallSum = Vec3::Zero(), m = Vec3::Zero();
         for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-          wallSum += wallVolume[nw.indices[k]] * gradB[k].cast<Real>();
+          wallSum += wallVolume[nw.indices[k]] * gradB[k];
           m += wallNormal[nw.indices[k]] * wallVolume[nw.indices[k]];
         }
         Mat3 mirrored = stress_[i];

@@ -61,7 +61,7 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
         const Vec3 xij = p.x[i] - p.x[j];
         const Real vx = (p.v[i] - p.v[j]).dot(xij);
         a += (p.mass[j] * muj / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
-             gradF[k].cast<Real>();
+             gradF[k];
       }
       p.a[i] += kFactor * a;
       continue;
@@ -81,14 +81,14 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
       if (mu == 0) continue;
       const Real vx = (p.v[i] - p.v[j]).dot(xij);
       a += (p.mass[j] * mu / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
-           gradF[k].cast<Real>();
+           gradF[k];
     }
     if (wallFriction_ && mui > 0) {
       for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
         const Index b = nw.indices[k];
         const Vec3 xib = p.x[i] - walls.x[b];
         const Real vx = p.v[i].dot(xib);
-        a += (walls.volume[b] * mui / p.density[i] * vx / (xib.squaredNorm() + h2)) * gradB[k].cast<Real>();
+        a += (walls.volume[b] * mui / p.density[i] * vx / (xib.squaredNorm() + h2)) * gradB[k];
       }
     }
     p.a[i] += kFactor * a;

@@ -82,10 +82,9 @@ void ViscosityWeiler2018::assemble(const World& world, Real dt) {
       const Index j = nf.indices[k];
       const Real mu = pairViscosity(mui, viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])]);
       const Real c = kDimensionFactor * (p.mass[i] * p.mass[j]) * mu / (p.density[i] * p.density[j]);
-      const Vec3 g = gradF[k].cast<Real>();
-      const Real s = c == 0 ? 0 : pairScale(c, p.x[i] - p.x[j], g, eps);
+      const Real s = c == 0 ? 0 : pairScale(c, p.x[i] - p.x[j], gradF[k], eps);
       fluidPair_[k] = s;
-      block -= (dt * s) * g * g.transpose();
+      block -= (dt * s) * gradF[k] * gradF[k].transpose();
     }
     Vec3 wallForce = Vec3::Zero();  // [N] the part of the wall force set by the wall velocity
     for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
@@ -93,11 +92,10 @@ void ViscosityWeiler2018::assemble(const World& world, Real dt) {
       const Real c = params_.wallFriction
                          ? kDimensionFactor * p.mass[i] * world.walls.volume[b] * mui / p.density[i]
                          : 0.0;
-      const Vec3 g = gradB[k].cast<Real>();
-      const Real s = c == 0 ? 0 : pairScale(c, p.x[i] - world.walls.x[b], g, eps);
+      const Real s = c == 0 ? 0 : pairScale(c, p.x[i] - world.walls.x[b], gradB[k], eps);
       wallPair_[k] = s;
-      block -= (dt * s) * g * g.transpose();
-      if (wallVelocity_ != nullptr) wallForce -= s * g.dot((*wallVelocity_)[b]) * g;
+      block -= (dt * s) * gradB[k] * gradB[k].transpose();
+      if (wallVelocity_ != nullptr) wallForce -= s * gradB[k].dot((*wallVelocity_)[b]) * gradB[k];
     }
     preconditioner_[i] = block.inverse();
     // Right-hand side b = M v* + dt f_wall(v_b) (the wall velocity is known, so it moves over).
@@ -118,14 +116,10 @@ Real ViscosityWeiler2018::multiply(const World& world, Real dt, const std::vecto
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Vec3 f = Vec3::Zero();  // [N] linear part of the viscous force on i
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Vec3 g = gradF[k].cast<Real>();
-      f += (fluidPair_[k] * g.dot(in[i] - in[nf.indices[k]])) * g;
-    }
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-      const Vec3 g = gradB[k].cast<Real>();
-      f += (wallPair_[k] * g.dot(in[i])) * g;
-    }
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
+      f += (fluidPair_[k] * gradF[k].dot(in[i] - in[nf.indices[k]])) * gradF[k];
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+      f += (wallPair_[k] * gradB[k].dot(in[i])) * gradB[k];
     out[i] = p.mass[i] * in[i] - dt * f;
   }
   return reducer_.sum(p.size(), [&](std::size_t i) { return in[i].dot(out[i]); });
@@ -142,14 +136,11 @@ void ViscosityWeiler2018::computeForces(const World& world, const std::vector<Ve
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Vec3 f = Vec3::Zero();
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Vec3 g = gradF[k].cast<Real>();
-      f += (fluidPair_[k] * g.dot(v[i] - v[nf.indices[k]])) * g;
-    }
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
+      f += (fluidPair_[k] * gradF[k].dot(v[i] - v[nf.indices[k]])) * gradF[k];
     for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
       const Vec3 vb = wallVelocity_ != nullptr ? (*wallVelocity_)[nw.indices[k]] : Vec3::Zero();
-      const Vec3 g = gradB[k].cast<Real>();
-      f += (wallPair_[k] * g.dot(v[i] - vb)) * g;
+      f += (wallPair_[k] * gradB[k].dot(v[i] - vb)) * gradB[k];
     }
     out[i] = f;
   }

@@ -137,7 +137,7 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
       if (!stressed_[i] && !stressed_[j]) continue;
       const Mat3 sum = stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
                                     : stress_[j];
-      f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k].cast<Real>());
+      f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
     }
     p.a[i] += f / p.mass[i];
   }

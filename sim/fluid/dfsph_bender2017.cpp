@@ -41,7 +41,7 @@ void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real
     Vec3 dv = Vec3::Zero();
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
       const Index j = nf.indices[k];
-      dv += p.mass[j] * (ki + scaled[j]) * gradF[k].cast<Real>();
+      dv += p.mass[j] * (ki + scaled[j]) * gradF[k];
     }
     dv += ki * wallGradient_[i];
     p.v[i] -= dt * dv;
@@ -54,7 +54,7 @@ Real DfsphBender2017::densityRate(const World& world, Index i) const {
   const auto& gradF = world.fluidGradients();
   Real rate = 0;
   for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
-    rate += p.mass[nf.indices[k]] * (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k].cast<Real>());
+    rate += p.mass[nf.indices[k]] * (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k]);
   return rate + p.v[i].dot(wallGradient_[i]);
 }
 
@@ -124,12 +124,12 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
     Real sumSq = 0;
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
       const Index j = nf.indices[k];
-      const Vec3 gradW = p.mass[j] * gradF[k].cast<Real>();
+      const Vec3 gradW = p.mass[j] * gradF[k];
       g += gradW;
       sumSq += gradW.squaredNorm() * p.mass[i] / p.mass[j];
     }
     Vec3 gw = Vec3::Zero();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k].cast<Real>();
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k];
     wallGradient_[i] = world.restDensityOf(i) * gw;
     g += wallGradient_[i];
     const Real denominator = g.squaredNorm() + sumSq;

@@ -79,7 +79,7 @@ void IndsphWang2023::prepareStaticWalls(const World& world) {
       const Index j = t.dynamic[s];
       const Real c = world.restVolumeOf(j) / walls.volume[b];  // V0_j / V_b
       delta += c * world.kernel.W(p.x[j] - walls.x[b]);
-      diagonal += c * c * gradB[t.pair[s]].cast<Real>().squaredNorm() / p.mass[j];
+      diagonal += c * c * gradB[t.pair[s]].squaredNorm() / p.mass[j];
     }
     wallDensity_[b] = wallStaticDensity_[b] + delta;
     // Small-diagonal guard (IndsphParameters::minWallDynamicFraction): not an unknown.
@@ -101,7 +101,7 @@ Real IndsphWang2023::predictWallNumberDensity(const World& world, Real dt) {
     Real rate = 0;  // eq. 14 with v_b = 0: sum_j (V0_j/V_b) (0 - v_j).gradW_bj, gradW_bj = -gradB
     for (Index s = t.offsets[b]; s < t.offsets[b + 1]; ++s) {
       const Index j = t.dynamic[s];
-      rate += world.restVolumeOf(j) * p.v[j].dot(gradB[t.pair[s]].cast<Real>());
+      rate += world.restVolumeOf(j) * p.v[j].dot(gradB[t.pair[s]]);
     }
     wallPredicted_[b] =
         std::max(wallDensity_[b] + dt * rate / walls.volume[b], 1.0 / walls.volume[b]);
@@ -135,11 +135,11 @@ void IndsphWang2023::beginStep(World& world, const StepContext& context) {
     Vec3 g = Vec3::Zero();
     Real neighbours = 0;
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      g += gradF[k].cast<Real>();
-      neighbours += gradF[k].cast<Real>().squaredNorm() / p.mass[nf.indices[k]];
+      g += gradF[k];
+      neighbours += gradF[k].squaredNorm() / p.mass[nf.indices[k]];
     }
     Vec3 gw = Vec3::Zero();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k].cast<Real>();
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k];
     wallGradient_[i] = gw / world.restVolumeOf(i);
     g += wallGradient_[i];
     diagonal_[i] = g.squaredNorm() / p.mass[i] + neighbours;
@@ -158,7 +158,7 @@ Real IndsphWang2023::numberDensityRate(const World& world, Index i) const {
   const auto& gradF = world.fluidGradients();
   Real rate = 0;  // eq. 14
   for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
-    rate += (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k].cast<Real>());
+    rate += (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k]);
   return rate + p.v[i].dot(wallGradient_[i]);
 }
 
@@ -234,7 +234,7 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
     Vec3 force = Vec3::Zero();  // eq. 19 without the common factor -1
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
       const Index j = nf.indices[k];
-      force += (ki + kappa[j] / delta[j]) * gradF[k].cast<Real>();
+      force += (ki + kappa[j] / delta[j]) * gradF[k];
     }
     // The fluid particle's own stiffness acts on its wall neighbours through its own number
     // density (eq. 19's first term runs over all neighbours, static ones included). With layered
@@ -247,7 +247,7 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
       Vec3 g = Vec3::Zero();
       for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
         const Index b = nw.indices[k];
-        if ((*wallKappa)[b] != 0.0) g += ((*wallKappa)[b] / (wallDensity_[b] * walls.volume[b])) * gradB[k].cast<Real>();
+        if ((*wallKappa)[b] != 0.0) g += ((*wallKappa)[b] / (wallDensity_[b] * walls.volume[b])) * gradB[k];
       }
       force += v0 * g;
     }

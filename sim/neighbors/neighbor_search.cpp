@@ -88,7 +88,7 @@ void growTo(std::vector<T>& v, std::size_t n) {
 
 void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbins,
                                const CellBins& pbins, bool skipSelf, const Kernel* kernel,
-                               NeighborList& out, std::vector<CachedVec3>& grad,
+                               NeighborList& out, std::vector<Vec3>& grad,
                                std::vector<Real>& values) {
   const std::size_t n = qx.size();
   const Real r2 = radius_ * radius_;
@@ -149,7 +149,7 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
         for (std::size_t a = first; a < m; ++a) {
           const Vec3 xij = xi - sortedX[slot[a]];
           const Real r = xij.norm();  // one square root for both
-          buf.gradients[a] = kernel->gradW(xij, r).cast<CachedReal>();
+          buf.gradients[a] = kernel->gradW(xij, r);
           buf.values[a] = kernel->W(r);
         }
       }

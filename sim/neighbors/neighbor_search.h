@@ -75,11 +75,11 @@ class NeighborSearch {
   const NeighborList& dynamicDynamic() const { return dd_; }
   const NeighborList& dynamicStatic() const { return ds_; }
   const NeighborList& staticStatic() const { return ss_; }
-  // [1/m^4] filled by update(x, kernel) only; Kernel::gradW rounded to float (types.h)
-  const std::vector<CachedVec3>& dynamicDynamicGradients() const { return ddGrad_; }
-  const std::vector<CachedVec3>& dynamicStaticGradients() const { return dsGrad_; }
-  // [1/m^3] kernel values W(x_i - x_j), same alignment (double); filled by update(x, kernel),
-  // emptied by update(x). They let density sums skip a square root and a kernel evaluation per pair.
+  // [1/m^4] filled by update(x, kernel) only
+  const std::vector<Vec3>& dynamicDynamicGradients() const { return ddGrad_; }
+  const std::vector<Vec3>& dynamicStaticGradients() const { return dsGrad_; }
+  // [1/m^3] kernel values W(x_i - x_j), same alignment; filled by update(x, kernel), emptied by
+  // update(x). They let density sums skip a square root and a kernel evaluation per pair.
   const std::vector<Real>& dynamicDynamicKernelValues() const { return ddW_; }
   const std::vector<Real>& dynamicStaticKernelValues() const { return dsW_; }
 
@@ -97,14 +97,14 @@ class NeighborSearch {
   // `kernel` non-null: also fill `grad` and `values` (aligned with out.indices); null: `values`
   // is emptied.
   void buildList(const std::vector<Vec3>& qx, const CellBins& qbins, const CellBins& pbins,
-                 bool skipSelf, const Kernel* kernel, NeighborList& out,
-                 std::vector<CachedVec3>& grad, std::vector<Real>& values);
+                 bool skipSelf, const Kernel* kernel, NeighborList& out, std::vector<Vec3>& grad,
+                 std::vector<Real>& values);
   void updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel);
 
   // One thread's share of a list being built: accepted neighbours of its block of query points.
   struct ThreadBuffer {
     std::vector<Index> indices;
-    std::vector<CachedVec3> gradients;
+    std::vector<Vec3> gradients;
     std::vector<Real> values;
     std::size_t count = 0;  // used entries (the vectors only grow)
     std::size_t offset = 0; // where the block starts in the final list
@@ -122,7 +122,7 @@ class NeighborSearch {
   CellBins staticBins_, dynamicBins_;
   std::vector<Vec3> staticX_;
   NeighborList dd_, ds_, ss_;
-  std::vector<CachedVec3> ddGrad_, dsGrad_, noGrad_;
+  std::vector<Vec3> ddGrad_, dsGrad_, noGrad_;
   std::vector<Real> ddW_, dsW_, noW_;
   std::vector<ThreadBuffer> threadBuffers_;
   std::vector<Index> counts_;

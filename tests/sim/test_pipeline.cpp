@@ -16,10 +16,7 @@ testing::Tank smallTank() { return testing::hydrostaticTank(0.03, 0.03, 0.005); 
 
 }  // namespace
 
-// The cache holds the kernel's own gradients rounded to float (types.h: CachedVec3) and its values
-// in double, so the check is exact equality with those, and the pair (j, i) must hold exactly minus the
-// gradient of (i, j): the antisymmetry that keeps pressure forces equal and opposite.
-TEST_CASE("cached kernel gradients (float) and values equal the kernel's per pair", "[unit][world]") {
+TEST_CASE("cached kernel gradients equal the kernel's gradient of each pair", "[unit][world]") {
   auto tank = smallTank();
   World& w = *tank.world;
   const auto& nf = w.fluidNeighbors();
@@ -27,20 +24,10 @@ TEST_CASE("cached kernel gradients (float) and values equal the kernel's per pai
   REQUIRE(nf.totalPairs() > 0);
   REQUIRE(nw.totalPairs() > 0);
   for (Index i = 0; i < w.particles.size(); ++i) {
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
-      const Vec3 xij = w.particles.x[i] - w.particles.x[j];
-      REQUIRE(w.fluidGradients()[k] == w.kernel.gradW(xij).cast<CachedReal>());
-      REQUIRE(w.fluidKernelValues()[k] == w.kernel.W(xij));
-      const Index* back = std::find(nf.begin(j), nf.end(j), i);
-      REQUIRE(back != nf.end(j));
-      REQUIRE(w.fluidGradients()[static_cast<std::size_t>(back - nf.indices.data())] == -w.fluidGradients()[k]);
-    }
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-      const Vec3 xib = w.particles.x[i] - w.walls.x[nw.indices[k]];
-      REQUIRE(w.wallGradients()[k] == w.kernel.gradW(xib).cast<CachedReal>());
-      REQUIRE(w.wallKernelValues()[k] == w.kernel.W(xib));
-    }
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
+      REQUIRE(w.fluidGradients()[k] == w.kernel.gradW(w.particles.x[i] - w.particles.x[nf.indices[k]]));
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+      REQUIRE(w.wallGradients()[k] == w.kernel.gradW(w.particles.x[i] - w.walls.x[nw.indices[k]]));
   }
 }
 
