@@ -401,11 +401,7 @@ TEST_CASE("implicit viscosity conserves linear momentum to round-off without wal
 
 // The operator acts on v_ij . x_ij only, so it vanishes for uniform translation and for rigid
 // rotation v = omega x x (then v_ij . x_ij = (omega x x_ij) . x_ij = 0): both fields must come
-// out of the solve unchanged, and angular momentum with them. Translation: v_ij = 0 exactly, so
-// relative 1e-12 (double round-off). Rotation: the operator reads the direction of x_ij from the
-// cached kernel gradient, stored in float (sim/core/types.h), which is parallel to x_ij only to
-// float rounding (6e-8 per component); measured 1.2e-8, bound 1e-6. An operator that did not
-// annihilate rotation would change it by O(dt nu / d^2) = O(5) here, so the bound still decides.
+// out of the solve unchanged (relative 1e-12, round-off), and angular momentum with them.
 TEST_CASE("implicit viscosity leaves translation and rigid rotation unchanged",
           "[unit][viscosity]") {
   const Vec3 velocity(0.03, -0.02, 0.01), omega(1.0, 2.0, -0.5);  // [m/s], [1/s]
@@ -428,7 +424,7 @@ TEST_CASE("implicit viscosity leaves translation and rigid rotation unchanged",
   std::printf("rigid motion: translation changed by %.1e, rotation by %.1e, angular momentum by "
               "%.1e (relative)\n",
               worst, worstRotation, (angularMomentum(w) - l0).norm() / l0.norm());
-  CHECK(worstRotation < 1e-6);
+  CHECK(worstRotation < 1e-12);
   CHECK((angularMomentum(w) - l0).norm() < 1e-12 * l0.norm());
 }
 
