@@ -6,6 +6,7 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -339,6 +340,42 @@ TEST_CASE("tissue: anchored tissue particles stay at rest in a coupled eye scene
   CHECK(worstFixed < 1e-9);  // [m] round-off of x += dt * 0
 }
 
+// The fluid stays in the cavity next to the elastic sclera (the leak of docs/elasticity.md
+// "Re-run after the session-4 viscosity fix"): the sclera's inner layer lies d/2 beyond the
+// cavity surface, so a fluid particle farther out than that has passed between the tissue's
+// inner particles into the layer. With the lattice-sampled sclera (a staircase whose openings are
+// about a spacing wide) fluid sat 0.5-0.8 d out within 0.02 s all round the globe, and in longer
+// runs some passed through and left the domain at the lens cap's rim. The bound is measured from
+// the rest surface; the sclera's own displacement in these 24 ms is checked to be well below it,
+// so a fluid particle beyond it cannot be one that merely followed the tissue outwards.
+TEST_CASE("tissue: no fluid particle enters the elastic sclera's layer in a coupled eye scene",
+          "[stability][protocol][tissue]") {
+  const PaperRun& run = paperRun();
+  const Scenario& s = run.scenario;
+  const double d = s.accuracy.particleSpacing;
+  const sim::DynamicParticles& particles = s.world->particles;
+  const meshing::MeshQuery cavity(s.cavity);
+  double worst = 0.0;  // [m] largest distance of a fluid particle outside the cavity surface
+  std::size_t beyond = 0, fluid = 0;
+  const double bound = 0.5 * d;  // [m] depth of the tissue's inner layer (meshing/sample_shell_layers.h)
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const int m = particles.material[i];
+    if (m != s.phases[0].materialIndex && m != s.phases[1].materialIndex) continue;
+    ++fluid;
+    if (cavity.isInside(particles.x[i])) continue;
+    const double r = std::sqrt(cavity.squaredDistance(particles.x[i]));
+    worst = std::max(worst, r);
+    beyond += r > bound;
+  }
+  const TissueMeasures m = measureTissues(s, particles.x, particles.id);
+  INFO(fluid << " fluid particles after " << run.summary.steps << " steps: the farthest " << worst / d
+             << " d outside the cavity surface, " << beyond << " beyond " << bound / d
+             << " d; sclera max displacement " << m.maxDisplacement[0] / d << " d");
+  REQUIRE(fluid == s.phases[0].count + s.phases[1].count);
+  CHECK(m.maxDisplacement[0] < 0.1 * d);
+  CHECK(beyond == 0);
+}
+
 TEST_CASE("tissue: bad input is reported at its place with exit code 2", "[unit][protocol][tissue][cli]") {
   const fs::path dir = fs::temp_directory_path() / "tamponade_tissue_bad";
   fs::create_directories(dir);
@@ -430,4 +467,32 @@ TEST_CASE("tissue: a 2 MPa sclera around the filled cavity stays stable, compres
   // Stable in the sense of the issue: nothing flew off (the domain check would have thrown), and
   // the cavity changed by less than the compressed layer's volume, A x 2 p t / E.
   CHECK(std::abs(m.cavityVolumeChange) < s.cavityArea * 2.0 * staticCompression);
+}
+
+// TEMPORARY diagnostic (not committed): penetration per frame of a finished run in /tmp/rim/p10.
+TEST_CASE("tissue: DIAG penetration per frame", "[.diag]") {
+  const Protocol p = parseProtocol(kPaper10.string());
+  const Scenario s = assembleScenario(p);
+  const double d = s.accuracy.particleSpacing;
+  const meshing::MeshQuery cavity(s.cavity);
+  const char* dir = std::getenv("DIAG_DIR");
+  FrameReader reader(fs::path(dir ? dir : "/tmp/rim/p10") / "frames.h5");
+  for (std::size_t f = 0; f < reader.frames().size(); ++f) {
+    const FieldData x = reader.readField(f, "fluid", "position");
+    const FieldData mat = reader.readField(f, "fluid", "material");
+    std::size_t n05 = 0, n15 = 0, n3 = 0;
+    double worst = 0;
+    sim::Vec3 at = sim::Vec3::Zero();
+    for (std::size_t i = 0; i < x.rows; ++i) {
+      const int m = mat.integer(i);
+      if (m != s.phases[0].materialIndex && m != s.phases[1].materialIndex) continue;
+      const sim::Vec3 q(x.real(i, 0), x.real(i, 1), x.real(i, 2));
+      if (cavity.isInside(q)) continue;
+      const double r = std::sqrt(cavity.squaredDistance(q)) / d;
+      n05 += r > 0.5; n15 += r > 1.5; n3 += r > 3;
+      if (r > worst) worst = r, at = q;
+    }
+    WARN("frame " << f << " t " << reader.frames()[f].time << ": fluid beyond 0.5 d " << n05 << ", 1.5 d " << n15
+                  << ", 3 d " << n3 << "; worst " << worst << " d at " << at.transpose() * 1e3 << " mm");
+  }
 }
