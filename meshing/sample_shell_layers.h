@@ -26,11 +26,14 @@ struct ShellLayerOptions {
   int minLayers = 2;  // [1] at least this many layers wherever t > 0 (the elasticity needs two)
 };
 
-// Layers behind `surface` (samples with outward normals and areas, e.g. sampleSurface at spacing
-// d): at a sample with t > 0, n = max(minLayers, round(t / d - 1/2)) particles at depths
-// (k + 1/2) d, k = 0 .. n - 1 (the same count per area as sampleShell's lattice between d/2 and
-// t, which holds (t - d/2) / d particles per d^2), the outermost marked isOuter, each with volume
-// A d (1 + kappa (k + 1/2) d)^2. Points in sample order, layers innermost first.
-ShellSamples sampleShellLayers(const SurfaceSamples& surface, const ShellLayerOptions& options);
+// Layer k lies on `layers[k]` (samples of the surface with outward normals and areas, e.g.
+// sampleSurface at spacing d, each layer with its own seed so that the holes of one random
+// packing do not line up with the next layer's into a channel through the shell): a sample whose
+// surface point has t > 0 and n = max(minLayers, round(t / d - 1/2)) > k (the same count per area
+// as sampleShell's lattice between d/2 and t, which holds (t - d/2) / d particles per d^2) gets a
+// particle at depth (k + 1/2) d along its normal, with volume A d (1 + kappa (k + 1/2) d)^2,
+// marked isOuter when k = n - 1. Throws MeshError when a location needs more layers than given.
+// Points layer by layer, innermost first, in sample order.
+ShellSamples sampleShellLayers(const std::vector<SurfaceSamples>& layers, const ShellLayerOptions& options);
 
 }  // namespace meshing

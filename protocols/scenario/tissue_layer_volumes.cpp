@@ -32,8 +32,27 @@ double kernelHalfSpaceFraction(const sim::Kernel& kernel, double z) {
 
 std::vector<double> calibratedLayerVolumes(const sim::Kernel& kernel, const std::vector<sim::Vec3>& points,
                                            const std::vector<double>& depths,
-                                           const std::vector<sim::Vec3>& others, double d) {
+                                           const std::vector<sim::Vec3>& others,
+                                           const std::vector<sim::Vec3>& walls, double d) {
   const double h2 = kernel.supportRadius() * kernel.supportRadius();  // [m^2]
+  // Akinci volumes of the walls within reach of a tissue particle.
+  std::vector<char> near(walls.size(), 0);
+  for (std::size_t b = 0; b < walls.size(); ++b)
+    for (const sim::Vec3& x : points)
+      if ((x - walls[b]).squaredNorm() < h2) {
+        near[b] = 1;
+        break;
+      }
+  std::vector<double> wallVolume(walls.size(), 0.0);  // [m^3]
+  for (std::size_t b = 0; b < walls.size(); ++b) {
+    if (!near[b]) continue;
+    double sum = 0.0;
+    for (const sim::Vec3& y : walls) {
+      const double r2 = (y - walls[b]).squaredNorm();
+      if (r2 < h2) sum += kernel.W(std::sqrt(r2));
+    }
+    wallVolume[b] = 1.0 / sum;
+  }
   // Phi(z) on the distinct depths (layers share theirs): a small table, exact per layer.
   std::vector<double> phi(points.size());
   for (std::size_t i = 0; i < points.size(); ++i) {
@@ -52,7 +71,13 @@ std::vector<double> calibratedLayerVolumes(const sim::Kernel& kernel, const std:
         const double r2 = (x - points[i]).squaredNorm();
         if (r2 < h2) sum += kernel.W(std::sqrt(r2));
       }
-    volume[i] = 1.0 / sum;
+    double wall = 0.0;  // [1] sum_b V_b W_ib
+    for (std::size_t b = 0; b < walls.size(); ++b) {
+      if (!near[b]) continue;
+      const double r2 = (walls[b] - points[i]).squaredNorm();
+      if (r2 < h2) wall += wallVolume[b] * kernel.W(std::sqrt(r2));
+    }
+    volume[i] = std::max(1.0 - wall, 0.25) / sum;
   }
   return volume;
 }

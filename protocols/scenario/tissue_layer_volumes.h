@@ -24,10 +24,14 @@ namespace protocols {
 double kernelHalfSpaceFraction(const sim::Kernel& kernel, double z);
 
 // [m^3] V0_i for the tissue particles `points` (depths [m] from the fluid's surface, #N), with
-// `others` the other tissue particles that share their kernel support (e.g. the orbital fat).
-// Brute force over pairs (N (N + M) distance checks; ~1e8 at the standard preset, < 1 s).
+// `others` the other tissue particles that share their kernel support (e.g. the orbital fat) and
+// `walls` the static wall particles (e.g. the lens cap next to the sclera's rim). A wall adds
+// sum_b V_b W_ib / V0_i to delta_i (INDSPH eq. 7 with Akinci volumes V_b = 1 / sum_b' W_bb', as
+// sim::World gives them), so V0_i = (1 - sum_b V_b W_ib) / (dynamic sum), at least a quarter of
+// the wall-free value. Brute force over pairs (N (N + M + W) distance checks, < 1 s at draft).
 std::vector<double> calibratedLayerVolumes(const sim::Kernel& kernel, const std::vector<sim::Vec3>& points,
                                            const std::vector<double>& depths,
-                                           const std::vector<sim::Vec3>& others, double spacing);
+                                           const std::vector<sim::Vec3>& others,
+                                           const std::vector<sim::Vec3>& walls, double spacing);
 
 }  // namespace protocols

@@ -225,7 +225,18 @@ void addTissues(const Protocol& p, Scenario& s) {
       o.curvature = 1.0 / radius;  // [1/m] the equivalent sphere's (volumes within ~d / R)
       meshing::ShellSamples samples;
       try {
-        samples = meshing::sampleShellLayers(meshing::sampleSurface(s.cavity, d), o);
+        // One Poisson-disk sampling per layer (own seed: holes do not line up across layers).
+        double thickest = 0.0;  // [m]
+        for (const sim::Vec3& v : s.cavity.vertices) thickest = std::max(thickest, layerAt(v));
+        const int layers = std::max(o.minLayers, static_cast<int>(std::lround(thickest / d - 0.5)) + 1);
+        std::vector<meshing::SurfaceSamples> surfaces;
+        for (int k = 0; k < layers; ++k) {
+          meshing::SurfaceSamplingOptions so;
+          so.spacing = d;
+          so.seed += static_cast<std::uint64_t>(k) * 0x9e3779b97f4a7c15ULL;
+          surfaces.push_back(meshing::sampleSurface(s.cavity, so));
+        }
+        samples = meshing::sampleShellLayers(surfaces, o);
       } catch (const meshing::MeshError& error) {
         fail(e.sclera->where, error.what(), "check the sclera's thickness");
       }
@@ -302,26 +313,6 @@ void addTissues(const Protocol& p, Scenario& s) {
     s.tissues.push_back(std::move(t));
   }
 
-  // The sclera's rest volumes (masses rho V0) from the kernel sums, not the layers' geometric
-  // A d (1 + kappa z)^2 (tissue_layer_volumes.h), with the elastic fat behind it in the sums.
-  if (scleraIndex && s.tissues[*scleraIndex].decision.elastic) {
-    TissueBody& sclera = s.tissues[*scleraIndex];
-    std::vector<sim::Vec3> behind;
-    for (const TissueBody& t : s.tissues)
-      if (&t != &sclera) behind.insert(behind.end(), t.restPositions.begin(), t.restPositions.end());
-    const std::vector<double> volumes =
-        calibratedLayerVolumes(s.world->kernel, sclera.restPositions, scleraDepth, behind, d);
-    double geometric = 0.0, calibrated = 0.0;  // [m^3]
-    for (std::size_t k = 0; k < volumes.size(); ++k) {
-      s.world->particles.mass[static_cast<std::size_t>(sclera.firstId) + k] = sclera.density * volumes[k];
-      geometric += scleraGeometricVolume[k];
-      calibrated += volumes[k];
-    }
-    s.notes.push_back("sclera sampled as " + std::to_string(sclera.count) + " particles in " +
-                      "layers along the cavity surface, rest volumes from the kernel sums (" +
-                      formatNumber(calibrated / geometric, 3) + " x the layers' geometric volume)");
-  }
-
   // Walls over elastic sclera are replaced by it; their retina samples follow the nearest sclera
   // particle (brute force: W x N_sclera distance checks, ~1e8 at the standard preset, < 1 s).
   if (scleraIndex && s.tissues[*scleraIndex].decision.elastic) {
@@ -376,6 +367,27 @@ void addTissues(const Protocol& p, Scenario& s) {
     if (s.phases[1].contactAngleThroughAqueous)
       s.notes.push_back("the retina over the elastic sclera has no wall adhesion (contact angle): "
                         "the engine applies it to wall particles only");
+  }
+  // The sclera's rest volumes (masses rho V0) from the kernel sums, not the layers' geometric
+  // A d (1 + kappa z)^2 (tissue_layer_volumes.h), with the elastic fat behind it and the final
+  // walls (the lens cap at the rim, the backstop) in the sums.
+  if (scleraIndex && s.tissues[*scleraIndex].decision.elastic) {
+    TissueBody& sclera = s.tissues[*scleraIndex];
+    std::vector<sim::Vec3> behind;
+    for (const TissueBody& t : s.tissues)
+      if (&t != &sclera) behind.insert(behind.end(), t.restPositions.begin(), t.restPositions.end());
+    const std::vector<double> volumes =
+        calibratedLayerVolumes(s.world->kernel, sclera.restPositions, scleraDepth, behind,
+                               s.world->walls.x, d);
+    double geometric = 0.0, calibrated = 0.0;  // [m^3]
+    for (std::size_t k = 0; k < volumes.size(); ++k) {
+      s.world->particles.mass[static_cast<std::size_t>(sclera.firstId) + k] = sclera.density * volumes[k];
+      geometric += scleraGeometricVolume[k];
+      calibrated += volumes[k];
+    }
+    s.notes.push_back("sclera sampled as " + std::to_string(sclera.count) + " particles in " +
+                      "layers along the cavity surface, rest volumes from the kernel sums (" +
+                      formatNumber(calibrated / geometric, 3) + " x the layers' geometric volume)");
   }
 }
 
