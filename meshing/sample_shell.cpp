@@ -76,7 +76,6 @@ ShellSamples sampleShell(const TriangleMesh& mesh, const ShellSamplingOptions& o
   ShellSamples out;
   for (const ShellSamples& column : perColumn) {
     out.points.insert(out.points.end(), column.points.begin(), column.points.end());
-    out.volumes.insert(out.volumes.end(), column.points.size(), d * d * d);
     out.depth.insert(out.depth.end(), column.depth.begin(), column.depth.end());
     out.isOuter.insert(out.isOuter.end(), column.isOuter.begin(), column.isOuter.end());
   }

@@ -22,7 +22,6 @@ struct ShellSamples {
   std::vector<Vec3> points;   // [unit] #N, column order as in sampleVolume()
   std::vector<char> isOuter;  // 1 for the outermost layer (within d of the outer surface): anchors
   std::vector<double> depth;  // [unit] distance from the inner surface, #N
-  std::vector<double> volumes;  // [unit^3] volume each point stands for (d^3 on the lattice), #N
 };
 
 // Lattice points p outside the closed, outward mesh with innerGap <= dist(p, S) <= t(q), q the

@@ -12,13 +12,11 @@
 #include "anatomy/sclera_shell.h"
 #include "meshing/mesh_error.h"
 #include "meshing/mesh_query.h"
-#include "meshing/sample_shell_layers.h"
-#include "meshing/sample_surface.h"
+#include "meshing/sample_shell.h"
 #include "meshing/sample_volume.h"
 #include "protocols/format/protocol_error.h"
 #include "protocols/report/report_format.h"
 #include "protocols/scenario/scenario.h"
-#include "protocols/scenario/tissue_layer_volumes.h"
 #include "sim/core/error.h"
 #include "sim/solid/elasticity_peer2018.h"
 #include "sim/solid/fixed_particles.h"
@@ -74,9 +72,8 @@ sim::Material elasticMaterial(const TissueBody& t) {
   return m;
 }
 
-// volumes [m^3] per point (empty: one lattice cube d^3 each)
 void addParticles(Scenario& s, TissueBody& t, const std::vector<sim::Vec3>& points,
-                  const std::vector<char>& anchored, double d, const std::vector<double>& volumes = {}) {
+                  const std::vector<char>& anchored, double d) {
   sim::DynamicParticles& particles = s.world->particles;
   // Written to the frames (the per-particle displacement map), recomputed before each frame.
   particles.fields.addOrGet<sim::Vec3>({kTissueDisplacementField, "m", false, true});
@@ -86,9 +83,9 @@ void addParticles(Scenario& s, TissueBody& t, const std::vector<sim::Vec3>& poin
   t.firstId = static_cast<std::int32_t>(particles.size());
   t.count = points.size();
   t.restPositions = points;
+  const double mass = t.density * d * d * d;  // [kg] one lattice cube
   for (std::size_t k = 0; k < points.size(); ++k) {
     const std::size_t i = particles.size();
-    const double mass = t.density * (volumes.empty() ? d * d * d : volumes[k]);  // [kg]
     particles.add(points[k], sim::Vec3::Zero(), mass, t.materialIndex);
     if (anchored[k]) {
       sim::setFixed(particles, i);
@@ -194,7 +191,6 @@ void addTissues(const Protocol& p, Scenario& s) {
   // An elastic sclera held at its outer surface gets a rigid backstop wall behind it (below).
   bool scleraBackstop = false;
   std::vector<double> scleraLayer;  // [m] sampled thickness per retina sample (0 on the cap)
-  std::vector<double> scleraDepth, scleraGeometricVolume;  // [m], [m^3] per sclera particle
   // Sampled sclera layer at the wall point nearest q: anatomical, at least
   // kMinTissueLayerSpacings d (see the header); 0 on the lens/IOL cap.
   const auto layerAt = [&](const sim::Vec3& q) {
@@ -217,26 +213,12 @@ void addTissues(const Protocol& p, Scenario& s) {
       }
       t.layerThickness = area > 0.0 ? layerArea / area : minLayer;
       t.simulatedModulus = area > 0.0 ? t.youngsModulus * tArea / layerArea : t.youngsModulus;
-      // Layers along the cavity surface (not the lattice: its staircase inner face let fluid in,
-      // see meshing/sample_shell_layers.h), on Poisson-disk samples at the fluid's spacing.
-      meshing::ShellLayerOptions o;
+      meshing::ShellSamplingOptions o;
       o.spacing = d;
       o.thickness = layerAt;
-      o.curvature = 1.0 / radius;  // [1/m] the equivalent sphere's (volumes within ~d / R)
       meshing::ShellSamples samples;
       try {
-        // One Poisson-disk sampling per layer (own seed: holes do not line up across layers).
-        double thickest = 0.0;  // [m]
-        for (const sim::Vec3& v : s.cavity.vertices) thickest = std::max(thickest, layerAt(v));
-        const int layers = std::max(o.minLayers, static_cast<int>(std::lround(thickest / d - 0.5)) + 1);
-        std::vector<meshing::SurfaceSamples> surfaces;
-        for (int k = 0; k < layers; ++k) {
-          meshing::SurfaceSamplingOptions so;
-          so.spacing = d;
-          so.seed += static_cast<std::uint64_t>(k) * 0x9e3779b97f4a7c15ULL;
-          surfaces.push_back(meshing::sampleSurface(s.cavity, so));
-        }
-        samples = meshing::sampleShellLayers(surfaces, o);
+        samples = meshing::sampleShell(s.cavity, o);
       } catch (const meshing::MeshError& error) {
         fail(e.sclera->where, error.what(), "check the sclera's thickness");
       }
@@ -248,10 +230,7 @@ void addTissues(const Protocol& p, Scenario& s) {
         anchored = samples.isOuter;
         scleraBackstop = true;
       }
-      // Masses are set from the kernel sums once the fat behind is known (below).
-      addParticles(s, t, samples.points, anchored, d, samples.volumes);
-      scleraDepth = samples.depth;
-      scleraGeometricVolume = samples.volumes;
+      addParticles(s, t, samples.points, anchored, d);
       if (t.simulatedModulus != t.youngsModulus)
         s.notes.push_back("sclera thinner than " + formatNumber(kMinTissueLayerSpacings, 2) +
                           " particle spacings: sampled as a " + mm(t.layerThickness) +
@@ -367,27 +346,6 @@ void addTissues(const Protocol& p, Scenario& s) {
     if (s.phases[1].contactAngleThroughAqueous)
       s.notes.push_back("the retina over the elastic sclera has no wall adhesion (contact angle): "
                         "the engine applies it to wall particles only");
-  }
-  // The sclera's rest volumes (masses rho V0) from the kernel sums, not the layers' geometric
-  // A d (1 + kappa z)^2 (tissue_layer_volumes.h), with the elastic fat behind it and the final
-  // walls (the lens cap at the rim, the backstop) in the sums.
-  if (scleraIndex && s.tissues[*scleraIndex].decision.elastic) {
-    TissueBody& sclera = s.tissues[*scleraIndex];
-    std::vector<sim::Vec3> behind;
-    for (const TissueBody& t : s.tissues)
-      if (&t != &sclera) behind.insert(behind.end(), t.restPositions.begin(), t.restPositions.end());
-    const std::vector<double> volumes =
-        calibratedLayerVolumes(s.world->kernel, sclera.restPositions, scleraDepth, behind,
-                               s.world->walls.x, d);
-    double geometric = 0.0, calibrated = 0.0;  // [m^3]
-    for (std::size_t k = 0; k < volumes.size(); ++k) {
-      s.world->particles.mass[static_cast<std::size_t>(sclera.firstId) + k] = sclera.density * volumes[k];
-      geometric += scleraGeometricVolume[k];
-      calibrated += volumes[k];
-    }
-    s.notes.push_back("sclera sampled as " + std::to_string(sclera.count) + " particles in " +
-                      "layers along the cavity surface, rest volumes from the kernel sums (" +
-                      formatNumber(calibrated / geometric, 3) + " x the layers' geometric volume)");
   }
 }
 

@@ -11,13 +11,10 @@
 // towards "elastic".
 //
 // Rigid: nothing changes (the cavity wall particles stay, no tissue particles).
-// Elastic sclera: meshing::sampleShellLayers, layers at depths d/2, 3d/2, ... along the normals of
-//   Poisson-disk samples of the cavity surface at spacing d, as many as the local thickness holds
-//   (at least two), each particle's mass rho x its layer volume. (Until session 6 it was the
-//   fluid's lattice between d/2 and the thickness: on the curved wall its inner face was a
-//   staircase with openings about a spacing wide, which fluid entered and, at the lens cap's rim,
-//   passed through; docs/elasticity.md.) The outermost layer (ShellSamples::isOuter) is anchored
-//   with sim::setFixed when anchoring is "outer_surface". The cavity wall particles over the sclera (all but the lens/IOL cap, which
+// Elastic sclera: meshing::sampleShell on the fluid's lattice (same origin and spacing d, so the
+//   tissue's inner layer continues the fluid's lattice) between d/2 and the local thickness; its
+//   outermost layer (ShellSamples::isOuter) anchored with sim::setFixed when anchoring is
+//   "outer_surface". The cavity wall particles over the sclera (all but the lens/IOL cap, which
 //   has no sclera) are removed: the fluid touches the tissue directly (the INDSPH paper's set-up).
 //   When the outer surface is anchored they reappear kBackstopGapSpacings d behind the layer as a
 //   rigid backstop (the orbit), except where elastic fat lies behind it.
@@ -52,11 +49,11 @@ struct Scenario;
 // [1] thinnest sampled tissue layer in particle spacings: d/2 gap + two lattice layers.
 inline constexpr double kMinTissueLayerSpacings = 2.5;
 // [1] gap between an anchored sclera layer's outer surface and the rigid backstop wall placed
-// behind it, in particle spacings. Added when the sclera's inner face was lattice-sampled, a
-// staircase with openings about a spacing wide: fluid particles entered it (0.5-0.8 d beyond the
-// cavity surface within 0.02 s, paper_sclera_10kpa.toml) and, in the upright posture, some passed
-// all the way through and fell out of the domain (0.45 s). The orbit holds the globe there anyway
-// (the outer surface is anchored), so a wall behind it keeps any fluid in the globe. Two spacings
+// behind it, in particle spacings. The sclera's lattice-sampled inner face is a staircase with
+// openings about a spacing wide: fluid particles enter it (measured: 0.5-0.8 d beyond the cavity
+// surface within 0.02 s, paper_sclera_10kpa.toml) and, in the upright posture, some passed all
+// the way through and fell out of the domain (0.45 s). The orbit holds the globe there anyway
+// (the outer surface is anchored), so a wall behind it keeps the fluid in the globe. Two spacings
 // (the kernel's support): closer, the wall compressed the anchored layer, whose pressure then
 // pushed the free inner layer into the cavity (2 MPa sclera test: 0.3 mm instead of 2 um).
 inline constexpr double kBackstopGapSpacings = 2.0;
