@@ -343,6 +343,45 @@ TEST_CASE("tissue: anchored tissue particles stay at rest in a coupled eye scene
   CHECK(worstFixed < 1e-9);  // [m] round-off of x += dt * 0
 }
 
+// The fluid stays in the cavity next to the elastic sclera (the open leak of docs/elasticity.md,
+// "Re-run after the session-4 viscosity fix, and the open leak"): the sclera's inner face lies
+// d/2 beyond the cavity surface at rest (its lattice points are at least d/2 out) and no tissue
+// particle has moved by more than u_max since, so a fluid particle farther out than d/2 + u_max
+// from the rest surface has passed between the tissue's inner particles into the layer.
+// HIDDEN ([.]): it fails on today's lattice-sampled sclera, whose inner face on the curved wall is
+// a staircase with openings about a spacing wide (measured: farthest fluid 0.82 d out, 6
+// particles beyond d/2 + u_max = 0.64 d after 24 ms). It passed with the sclera sampled as layers
+// on per-layer Poisson-disk samplings (0.39 d, none beyond; a16db34 less its wall term in the
+// volumes), which did not close the leak in 0.3 s runs and broke the 2 MPa test
+// (docs/elasticity.md, session 6). Run it with `protocols_tests "[leak]"`; un-hide it with the fix.
+TEST_CASE("tissue: no fluid particle enters the elastic sclera's layer in a coupled eye scene",
+          "[.][leak][protocol]") {
+  const PaperRun& run = paperRun();
+  const Scenario& s = run.scenario;
+  const double d = s.accuracy.particleSpacing;
+  const sim::DynamicParticles& particles = s.world->particles;
+  const TissueMeasures m = measureTissues(s, particles.x, particles.id);
+  const meshing::MeshQuery cavity(s.cavity);
+  // [m] depth of the tissue's inner face (meshing::sampleShell's inner gap) plus its largest movement
+  const double bound = 0.5 * d + m.maxDisplacement[0];
+  double worst = 0.0;  // [m] largest distance of a fluid particle outside the cavity surface
+  std::size_t beyond = 0, fluid = 0;
+  for (std::size_t i = 0; i < particles.size(); ++i) {
+    const int material = particles.material[i];
+    if (material != s.phases[0].materialIndex && material != s.phases[1].materialIndex) continue;
+    ++fluid;
+    if (cavity.isInside(particles.x[i])) continue;
+    const double r = std::sqrt(cavity.squaredDistance(particles.x[i]));
+    worst = std::max(worst, r);
+    beyond += r > bound;
+  }
+  INFO(fluid << " fluid particles after " << run.summary.steps << " steps: the farthest " << worst / d
+             << " d outside the cavity surface, " << beyond << " beyond d/2 + u_max = " << bound / d
+             << " d (u_max the sclera's largest displacement)");
+  REQUIRE(fluid == s.phases[0].count + s.phases[1].count);
+  CHECK(beyond == 0);
+}
+
 TEST_CASE("tissue: bad input is reported at its place with exit code 2", "[unit][protocol][tissue][cli]") {
   const fs::path dir = fs::temp_directory_path() / "tamponade_tissue_bad";
   fs::create_directories(dir);
@@ -435,3 +474,4 @@ TEST_CASE("tissue: a 2 MPa sclera around the filled cavity stays stable, compres
   // the cavity changed by less than the compressed layer's volume, A x 2 p t / E.
   CHECK(std::abs(m.cavityVolumeChange) < s.cavityArea * 2.0 * staticCompression);
 }
+
