@@ -155,23 +155,30 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
   const auto t0 = std::chrono::steady_clock::now();
+  // Diagnostics of the verbose runs: the fastest particle and the droplet's pressure jump [Pa].
+  const auto maxSpeed = [&] {
+    Real vmax = 0;
+    for (const Vec3& v : w.particles.v) vmax = std::max(vmax, v.norm());
+    return vmax;
+  };
+  const auto pressureJump = [&] {
+    const Real h = w.supportRadius();
+    return measureDropletPressureJump(
+               w, w.particles.fields.get<Real>("pressure"),
+               {centreOfMaterial(w, scene.oil), scene.radius, h, scene.oil, scene.radius + 2 * h})
+        .jump;
+  };
   // Relaxed start: the lattice sphere is not the droplet's rest state (the diffuse interface
   // and the lattice's staircase rearrange under the tension); steps with the velocities reset
   // after each let it settle without storing the rearrangement as motion.
   for (int k = 0; k < o.relaxSteps; ++k) {
     pipeline.step(w);
     if (verbose && (k + 1) % 20 == 0) {
-      Real vmax = 0;
-      for (const Vec3& v : w.particles.v) vmax = std::max(vmax, v.norm());
-      const Real h = w.supportRadius();
-      const PressureJump jump = measureDropletPressureJump(
-          w, w.particles.fields.get<Real>("pressure"),
-          {centreOfMaterial(w, scene.oil), scene.radius, h, scene.oil, scene.radius + 2 * h});
       std::printf(
           "  relaxation step %d: max speed before the reset %.2e m/s, Q %+.3e m^2, "
           "pressure jump %.2f Pa (2 sigma / R = %.2f Pa), interface number density %.3f, "
           "nearest other phase %.2f d\n",
-          k + 1, vmax, shapeMoment(w, scene.oil), jump.jump, 2 * o.sigma / scene.radius,
+          k + 1, maxSpeed(), shapeMoment(w, scene.oil), pressureJump(), 2 * o.sigma / scene.radius,
           interfaceGap(w, scene.oil, scene.aqueous).numberDensityRatio,
           interfaceGap(w, scene.oil, scene.aqueous).meanNearestDistance);
     }
@@ -196,17 +203,11 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
     out.meanIterations += pipeline.solver().stats().densityIterations;
     out.q.push_back(shapeMoment(w, scene.oil));
     if (verbose && out.t.size() % 20 == 0) {
-      Real vmax = 0;
-      for (const Vec3& v : w.particles.v) vmax = std::max(vmax, v.norm());
-      const Real h = w.supportRadius();
-      const PressureJump jump = measureDropletPressureJump(
-          w, w.particles.fields.get<Real>("pressure"),
-          {centreOfMaterial(w, scene.oil), scene.radius, h, scene.oil, scene.radius + 2 * h});
       std::printf(
           "  t = %.4f s  Q = %+.3e m^2 (%+.3f of (3/5) eps R^2)  dt %.2e s  max speed %.3f "
           "m/s  jump %.3f of 2 sigma/R  wall %.0f s\n",
-          out.t.back(), out.q.back(), out.q.back() / out.q0, w.lastTimeStep, vmax,
-          jump.jump * scene.radius / (2 * o.sigma),
+          out.t.back(), out.q.back(), out.q.back() / out.q0, w.lastTimeStep, maxSpeed(),
+          pressureJump() * scene.radius / (2 * o.sigma),
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count());
       std::fflush(stdout);
     }
