@@ -170,7 +170,7 @@ void chooseGravityReference(const ScenarioOptions& options, Scenario& s) {
       return;
     }
   const FluidPhase& reference = s.phases[0].count > 0 ? s.phases[0] : s.phases[1];
-  s.gravityReferenceDensity = reference.density;
+  // The frames' pressures are then p' = p - rho_ref g.x (the reference fluid's hydrostatic part out).
   s.world->gravityReferenceDensity = reference.density;
   char line[256];
   std::snprintf(line, sizeof line,

@@ -147,9 +147,6 @@ struct Scenario {
   double startMeanFraction = 0.0;     // [1]
   double startMaxFraction = 0.0;      // [1]
   double heldVolumeRatio = 0.0;       // [1]
-  // [kg/m^3] 0: plain gravity. Otherwise the world's gravityReferenceDensity: the frames'
-  // pressures are p' = p - rho_ref g.x (the hydrostatic part of the reference fluid removed).
-  double gravityReferenceDensity = 0.0;
 
   // Tamponade flags of the world's dynamic particles in their current order, for the coverage
   // metric (1 = tamponade material).

@@ -93,6 +93,10 @@ int oscillation(testing::OscillationSpec o, const std::string& csv) {
   const Real period = 2 * std::numbers::pi / run.omega;
   if (!csv.empty()) {
     FILE* f = std::fopen(csv.c_str(), "w");
+    if (f == nullptr) {
+      std::fprintf(stderr, "oscillation: cannot write csv=%s (check the folder exists)\n", csv.c_str());
+      return 1;
+    }
     std::fprintf(f, "t_s,Q_m2\n");
     for (std::size_t k = 0; k < run.t.size(); ++k)
       std::fprintf(f, "%.6e,%.6e\n", run.t[k], run.q[k]);

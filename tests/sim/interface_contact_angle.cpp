@@ -26,13 +26,10 @@ testing::SessileResult settle(Real theta) {
   return testing::runSessile(c);
 }
 
-}  // namespace
-
 // +-5 deg: the acceptance for 30-150 deg. The cap fit reads the start hemisphere at
 // 90.2 deg (the lattice's own shape error is below 1 deg); the 90 deg run (no wall force at all)
 // ends at 87.2 deg, the bias of the tension's wall treatment at this resolution (R = 6 d).
 // Measured (window mean over the last fifth): 59.9 deg for 60, 118.4 deg for 120.
-namespace {
 void checkSessileAngle(Real requested) {
   const testing::SessileResult r = settle(requested);
   std::printf("sessile %.0f deg requested: %.1f deg measured (%.1f at the end), %ld steps, %.1f s\n",
@@ -41,6 +38,7 @@ void checkSessileAngle(Real requested) {
   REQUIRE(r.finite);
   CHECK(r.angle == Approx(requested).margin(5.0));
 }
+
 }  // namespace
 
 TEST_CASE("Sessile droplet spreads to a 60 deg contact angle (through oil)",
