@@ -3,6 +3,7 @@
 #include <limits>
 #include <sstream>
 
+#include "sim/effects/background_pressure.h"
 #include "sim/effects/gravity.h"
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/effects/wall_adhesion_young.h"
@@ -41,6 +42,30 @@ StageDecision viscosityDecision(const World& w, const PipelineOptions& o, bool i
   if (t.viscous && other != o.forced.end() && other->second == Force::kOn)
     return StageDecision{name, false, false, "the other viscosity stage is forced on instead"};
   return StageDecision{name, t.viscous && t.implicit == implicitStage, false, t.reason};
+}
+
+// Rule of the background_pressure stage (sim/effects/background_pressure.h): a closed scene with
+// interfacial tension under INDSPH, whose pressure has no offset of its own.
+StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& o) {
+  const std::string name = "background_pressure";
+  const InterfacialTension* t = presentTensionPair(w);
+  if (t == nullptr) return {name, false, false, "no interfacial tension (nothing under tension to clump)"};
+  if (o.backgroundPressure == 0) return {name, false, false, "background pressure set to 0"};
+  if (o.solver != "indsph")
+    return {name, false, false,
+            "solver '" + o.solver + "': implemented in INDSPH's pair form only (WCSPH's equation "
+            "of state carries its own offset when its masses are compressed)"};
+  const std::size_t surface = countFreeSurfaceParticles(w);
+  if (surface > 0)
+    return {name, false, false,
+            std::to_string(surface) + " fluid particles at a free surface (number density below 0.9 "
+            "of rest): a background pressure would pull the surface in; the surface stress then "
+            "clumps the interface and under-states sigma (docs/interface.md, validation 1)"};
+  std::ostringstream why;
+  why << "closed scene with interfacial tension under INDSPH: p_bg = "
+      << (o.backgroundPressure >= 0 ? o.backgroundPressure : backgroundPressureFor(w, *t))
+      << " Pa keeps the surface stress from clumping the interface (tensile instability)";
+  return {name, true, false, why.str()};
 }
 
 }  // namespace
@@ -130,6 +155,15 @@ const std::vector<EffectEntry>& effectRegistry() {
        },
        [](const World&, const PipelineOptions&) {
          return std::make_unique<InterfacialTensionHuAdams2006>();
+       }},
+      {"background_pressure", "constant pressure offset against the surface stress's clumping",
+       backgroundPressureDecision,
+       [](const World& w, const PipelineOptions& o) {
+         const InterfacialTension* t = presentTensionPair(w);
+         require(t != nullptr, "background_pressure needs an interfacial tension pair in the scene");
+         const Real rho = 0.5 * (w.materials[t->materialA].restDensity + w.materials[t->materialB].restDensity);
+         return std::make_unique<BackgroundPressure>(
+             o.backgroundPressure >= 0 ? o.backgroundPressure : backgroundPressureFor(w, *t), rho);
        }},
       {"elasticity", "implicit corotated linear elasticity (Peer et al. 2018), elastic tissue",
        [](const World& w, const PipelineOptions&) {

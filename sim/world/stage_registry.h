@@ -36,6 +36,9 @@ struct PipelineOptions {
   ElasticityParameters elasticity;
   bool wallFriction = true;              // no-slip viscous walls
   Real velocitySmoothing = 0.05;         // [1] XSPH strength for incompressible solvers (0 = off)
+  // [Pa] background_pressure stage's p_bg; < 0: automatic, kBackgroundPressurePerTension sigma / d
+  // (sim/effects/background_pressure.h)
+  Real backgroundPressure = -1;
   std::map<std::string, Force> forced;   // effect name -> forced on/off
 };
 

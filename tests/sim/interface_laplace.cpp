@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 
 #include <cstdio>
+#include <string>
 
 #include "interface_fixtures.h"
 #include "sim/measure/droplet_pressure_jump.h"
@@ -22,7 +23,12 @@ constexpr Real kRunTaus = 1.5;  // [1] run length in capillary times
 // Runs the droplet for 1.5 capillary times tau = sqrt(rho R^3 / sigma) and averages the jump
 // from 0.5 tau on (the first half capillary time lets the lattice sphere relax and the start-up acoustic
 // wave decay).
-LaplaceResult runLaplace(Real radius, Real sigma) {
+//
+// WCSPH: DFSPH's rest state is not yet calm (engine-notes KNOWN PROBLEM). INDSPH: the eye
+// scenes' solver, with the background_pressure stage (on by its rule: closed scene, tension) or
+// forced off; rest masses (a closed box cannot shed a mass excess under an incompressible solve).
+LaplaceResult runLaplace(Real radius, Real sigma, const std::string& solver = "wcsph",
+                         Force background = Force::kAuto) {
   testing::DropletSpec s;
   s.radius = radius;
   s.spacing = radius / 6;  // d = R/6: 3 kernel supports per radius (issue 6 suggests R/6..R/8)
@@ -34,19 +40,23 @@ LaplaceResult runLaplace(Real radius, Real sigma) {
   // Viscosity does not enter the static jump; 0.05 Pa s (Ohnesorge ~0.1-0.2) damps the
   // capillary oscillation of the relaxing lattice sphere within the run.
   s.oilViscosity = s.aqueousViscosity = 0.05;
-  s.massExcess = 0.05;  // background pressure ~ 100 Pa keeps every particle above the p = 0 clamp
+  // WCSPH: background pressure ~ 200 Pa keeps every particle above the p = 0 clamp.
+  s.massExcess = solver == "wcsph" ? 0.05 : 0.0;
   auto scene = testing::dropletScene(s);
   World& w = *scene.world;
   const Real expected = 2 * sigma / scene.radius;
   PipelineOptions options;
-  options.solver = "wcsph";  // DFSPH's rest state is not yet calm (engine-notes KNOWN PROBLEM)
+  options.solver = solver;
   // c = 12 sqrt(dp / rho): the jump compresses the droplet by dp / (rho c^2) < 1 %.
   options.wcsph.speedOfSound = 12 * std::sqrt(expected / 1000.0);
   // alpha 0.5 damps the box's acoustic modes excited by the compressed start; artificial
   // viscosity vanishes at rest and cannot shift a static balance.
   options.wcsph.artificialViscosity = 0.5;
+  options.forced["background_pressure"] = background;
   Pipeline pipeline = assemblePipeline(w, options);
   REQUIRE(pipeline.hasStage("interfacial_tension"));
+  REQUIRE(pipeline.hasStage("background_pressure") ==
+          (solver == "indsph" && background != Force::kOff));
   pipeline.attach(w);
   const auto& pressure = w.particles.fields.get<Real>("pressure");
   const Real tau = std::sqrt(1000.0 * radius * radius * radius / sigma);  // [s]
@@ -65,12 +75,12 @@ LaplaceResult runLaplace(Real radius, Real sigma) {
   return {sum / samples, expected, w.stepCount};
 }
 
-void checkLaplace(Real radius, Real sigma) {
-  const LaplaceResult r = runLaplace(radius, sigma);
-  std::printf("Laplace R = %.1f mm, sigma = %.3f N/m: dp = %.2f Pa, 2 sigma / R = %.2f Pa (%+.1f %%), "
-              "%ld steps\n",
-              radius * 1e3, sigma, r.measured, r.expected, 100 * (r.measured / r.expected - 1),
-              r.steps);
+void checkLaplace(Real radius, Real sigma, const std::string& solver = "wcsph") {
+  const LaplaceResult r = runLaplace(radius, sigma, solver);
+  std::printf("Laplace (%s) R = %.1f mm, sigma = %.3f N/m: dp = %.2f Pa, 2 sigma / R = %.2f Pa "
+              "(%+.1f %%), %ld steps\n",
+              solver.c_str(), radius * 1e3, sigma, r.measured, r.expected,
+              100 * (r.measured / r.expected - 1), r.steps);
   // 10 %: the issue's acceptance. The sources of error are the diffuse interface (width 2h =
   // 2R/3 at this resolution: the jump is the stress integral weighted by 1/r over the layer,
   // about 3 % above 2 sigma / R here, see docs/interface.md) and the residual parasitic
@@ -91,4 +101,24 @@ TEST_CASE("Laplace pressure of a 2 mm oil droplet, sigma 40 and 20 mN/m",
           "[validation][interface][laplace]") {
   checkLaplace(0.002, 0.040);
   checkLaplace(0.002, 0.020);
+}
+
+// The eye scenes' solver. Without the background pressure the surface stress clumps the
+// interface (sum V |gradC| falls to half the sphere's area) and the jump reads 0.3 of 2 sigma / R
+// (docs/interface.md, validation 1); with it, 0.97-1.09 over the run at this resolution.
+TEST_CASE("Laplace pressure under INDSPH: 3 mm at 40 mN/m and 2 mm at 20 mN/m",
+          "[validation][interface][laplace][indsph]") {
+  checkLaplace(0.003, 0.040, "indsph");
+  checkLaplace(0.002, 0.020, "indsph");
+}
+
+// The control: the same droplet with the stage forced off must lose most of its jump, so the
+// test above passes because of the stage and not by chance. 0.6: measured 0.28-0.38 of 2 sigma /
+// R over the averaging window; any model that held 60 % would be a different finding.
+TEST_CASE("Laplace pressure under INDSPH without the background pressure is under-stated",
+          "[validation][interface][laplace][indsph]") {
+  const LaplaceResult r = runLaplace(0.003, 0.040, "indsph", Force::kOff);
+  std::printf("Laplace (indsph, no background) R = 3 mm, sigma = 0.040 N/m: dp = %.2f Pa of %.2f\n",
+              r.measured, r.expected);
+  CHECK(r.measured < 0.6 * r.expected);
 }

@@ -1,0 +1,61 @@
+#include "sim/effects/background_pressure.h"
+
+#include <cmath>
+
+#include "sim/fluid/indsph_wang2023.h"
+
+namespace sim {
+
+BackgroundPressure::BackgroundPressure(Real pressure, Real referenceDensity)
+    : pressure_(pressure), referenceDensity_(referenceDensity) {
+  require(pressure > 0 && std::isfinite(pressure), "background pressure must be a positive number of Pa");
+  require(referenceDensity > 0, "background pressure needs a positive reference density");
+}
+
+Real BackgroundPressure::maxTimeStep(const World& world) const {
+  return kBackgroundCourant * world.supportRadius() / std::sqrt(pressure_ / referenceDensity_);
+}
+
+void BackgroundPressure::apply(World& world, const StepContext&) {
+  auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    if (!world.materials.isFluid(p.material[i])) continue;
+    const Real vi = p.mass[i] / p.density[i];
+    const Real vi2 = vi * vi;
+    Vec3 bracket = Vec3::Zero();
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+      const Index j = nf.indices[k];
+      const Real vj = p.mass[j] / p.density[j];
+      bracket += (vi2 + vj * vj) * gradF[k];
+    }
+    Vec3 wall = Vec3::Zero();
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) wall += walls.volume[nw.indices[k]] * gradB[k];
+    bracket += (2.0 * vi2 / world.restVolumeOf(i)) * wall;
+    p.a[i] -= (pressure_ / p.mass[i]) * bracket;
+  }
+}
+
+Real backgroundPressureFor(const World& world, const InterfacialTension& tension) {
+  return kBackgroundPressurePerTension * tension.sigma / world.particleSpacing();
+}
+
+std::size_t countFreeSurfaceParticles(const World& world, Real fraction) {
+  std::vector<Real> delta;
+  computeNumberDensities(world, delta);
+  const NeighborList& nw = world.wallNeighbors();
+  std::size_t count = 0;
+  for (Index i = 0; i < world.particles.size(); ++i)
+    if (world.materials.isFluid(world.particles.material[i]) && nw.begin(i) == nw.end(i) &&
+        delta[i] * world.restVolumeOf(i) < fraction)
+      ++count;
+  return count;
+}
+
+}  // namespace sim

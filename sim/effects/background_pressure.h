@@ -1,0 +1,70 @@
+// Background pressure for the surface stress in a closed incompressible scene (issue 6).
+//
+// Why: the surface stress of the interfacial_tension stage (Hu & Adams 2006) is a tension along
+// the interface, sigma |gradC| / 3 per unit area, i.e. a negative pressure tangentially. A
+// particle method under a net tension clumps (the tensile instability): the interface particles
+// rearrange so that the colour gradient collapses. Measured on the Laplace droplet under INDSPH
+// (d = R/6, no background): sum V |gradC| fell from 1.04 to 0.51 of the sphere's area within a
+// capillary time and the pressure jump with it, from 1.0 to 0.3 of 2 sigma / R, while the
+// solver's projection itself is exact (an analytic radial gradient force gave 0.95 of its jump).
+// Hu & Adams keep the total pressure positive with a background pressure in their equation of
+// state (WCSPH here gets one from the test's 5 % mass excess, ~200 Pa, and reads 0.95). An
+// incompressible solver has no such offset: its pressure is the Lagrange multiplier of the
+// density constraint, zero at rest.
+//
+// What: a constant pressure p_bg added in the pressure force's own pair form (the INDSPH force
+// with p = p_bg everywhere, walls mirrored at p_bg as the Akinci pressure mirror does),
+//   a_i -= (p_bg / m_i) [ sum_j (V_i^2 + V_j^2) gradW_ij + 2 V_i^2 sum_b (V_b / V0_i) gradW_ib ],
+// V = m / rho (= 1 / delta under INDSPH). In a closed domain a constant pressure is exact physics
+// (only its gradient acts, and it has none); discretely the bracket is the kernel's consistency
+// error, zero on a complete regular neighbourhood, so the term only pushes particles towards a
+// uniform arrangement, against the clumping. At a free surface it would pull the surface in,
+// so the stage runs only in closed scenes (rule in stage_registry.cpp). Fluid particles only:
+// elastic particles carry their own stress, and a fluid particle next to tissue counts the
+// tissue particles as neighbours, so its bracket stays complete.
+//
+// How large: p_bg = kBackgroundPressurePerTension sigma / d (the tension's scale: |gradC| ~ 1/d).
+// Time step: the term is explicit, with the stiffness of a fluid of sound speed
+// c_bg = sqrt(p_bg / rho); dt <= kBackgroundCourant h / c_bg, h the kernel support radius (2 d). Measured on the same droplet
+// (R = 3 mm, sigma 0.04 N/m, d = 0.5 mm): c_bg dt / h = 0.20 calm (max speed 4-6 mm/s) for
+// p_bg = 1, 2 and 3 sigma / d; 0.28 agitated (0.1-0.2 m/s); 0.44 unstable (docs/interface.md).
+#pragma once
+
+#include "sim/effects/effect.h"
+
+namespace sim {
+
+// [1] p_bg in units of sigma / d. Laplace droplet under INDSPH at its step limit: 1 -> 0.88-0.91
+// of 2 sigma / R (R/6 and R/8, two sigma, two R), 2 -> 0.97-1.09, 3 -> 0.91-1.02
+// (docs/interface.md, validation 1).
+inline constexpr Real kBackgroundPressurePerTension = 2.0;
+// [1] c_bg dt / h at the stage's time-step limit (measured, see above).
+inline constexpr Real kBackgroundCourant = 0.2;
+
+class BackgroundPressure final : public Effect {
+ public:
+  // pressure [Pa] > 0; referenceDensity [kg/m^3] > 0 for the time-step limit.
+  BackgroundPressure(Real pressure, Real referenceDensity);
+  std::string_view name() const override { return "background_pressure"; }
+  void apply(World& world, const StepContext& context) override;
+  Real maxTimeStep(const World& world) const override;
+  Real pressure() const { return pressure_; }
+
+ private:
+  Real pressure_;          // [Pa]
+  Real referenceDensity_;  // [kg/m^3]
+};
+
+// The background pressure an interfacial tension calls for [Pa]:
+// kBackgroundPressurePerTension sigma / d.
+Real backgroundPressureFor(const World& world, const InterfacialTension& tension);
+
+// Fluid particles away from walls whose kernel support is not filled at the current state
+// (number density below `fraction` of the rest value): a free surface. 0 in a closed scene.
+// 0.9: the top layer of a lattice under a free surface has 0.85 of the rest number density
+// (cubic spline, support 2 d), the bulk of a closed fill 0.95-1. Particles with wall neighbours
+// are not counted: an Akinci wall leaves the corners of a closed box below 0.9 (8 particles in
+// the droplet box of the tests), and a free surface lies mostly away from walls.
+std::size_t countFreeSurfaceParticles(const World& world, Real fraction = 0.9);
+
+}  // namespace sim
