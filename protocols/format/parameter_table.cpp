@@ -166,6 +166,8 @@ const ParameterSpec kParameters[] = {
    .doc = "Force a physical effect on (true) or off (false); \"auto\" or absent = inferred from the scene."},
   {.key = "effects.interfacial_tension", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
    .doc = "Interfacial tension between agent and aqueous (inferred: two fluid phases)."},
+  {.key = "effects.background_pressure", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "false",
+   .doc = "Background pressure 2 sigma / d against the interface's clumping (inferred: interfacial tension under INDSPH in the filled cavity)."},
   {.key = "effects.wall_adhesion", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
    .doc = "Wall wetting at the contact angle (inferred: two fluid phases touching a wall)."},
   {.key = "effects.viscosity", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",

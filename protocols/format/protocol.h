@@ -50,8 +50,9 @@ inline constexpr std::string_view kCustomAgent = "custom";
 // Tissue materials of the material library.
 inline constexpr std::array<std::string_view, 2> kTissueMaterialNames = {"sclera", "orbital_fat"};
 // Effects a protocol may force on or off, by the name of their pipeline stage.
-inline constexpr std::array<std::string_view, 5> kEffectNames = {
-    "interfacial_tension", "wall_adhesion", "viscosity", "implicit_viscosity", "elasticity"};
+inline constexpr std::array<std::string_view, 6> kEffectNames = {
+    "interfacial_tension", "background_pressure", "wall_adhesion",
+    "viscosity",           "implicit_viscosity",  "elasticity"};
 
 struct RetinalBreak {
   Located<std::string> name;

@@ -387,6 +387,8 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     fail(p.solver.where, "solver '" + s.pipelineOptions.solver + "' is not in this build",
          "use one of: " + names);
   }
+  // The cavity is filled with oil and aqueous: no free surface (background_pressure's rule).
+  s.pipelineOptions.closedDomain = sim::Force::kOn;
   s.pipelineOptions.dfsph.densityTolerance = s.accuracy.solverTolerance;
   s.pipelineOptions.dfsph.divergenceTolerance = s.accuracy.solverTolerance;
   // WCSPH: c = 10 x the free-fall speed over the cavity, sqrt(2 g L), bounds density errors near

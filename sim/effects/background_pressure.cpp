@@ -16,8 +16,14 @@ Real BackgroundPressure::maxTimeStep(const World& world) const {
   return kBackgroundCourant * world.supportRadius() / std::sqrt(pressure_ / referenceDensity_);
 }
 
-void BackgroundPressure::apply(World& world, const StepContext&) {
+void BackgroundPressure::attach(World& world) {
+  shift_ = &world.particles.fields.addOrGet<Vec3>({field::kTransportShift, "m/s", false, false});
+}
+
+void BackgroundPressure::apply(World& world, const StepContext& context) {
   auto& p = world.particles;
+  auto& shift = *shift_;
+  const Real dt = context.dt;
   const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
@@ -26,6 +32,7 @@ void BackgroundPressure::apply(World& world, const StepContext&) {
   const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
+    shift[i].setZero();
     if (!world.materials.isFluid(p.material[i])) continue;
     const Real vi = p.mass[i] / p.density[i];
     const Real vi2 = vi * vi;
@@ -38,7 +45,7 @@ void BackgroundPressure::apply(World& world, const StepContext&) {
     Vec3 wall = Vec3::Zero();
     for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) wall += walls.volume[nw.indices[k]] * gradB[k];
     bracket += (2.0 * vi2 / world.restVolumeOf(i)) * wall;
-    p.a[i] -= (pressure_ / p.mass[i]) * bracket;
+    shift[i] = (-dt * pressure_ / p.mass[i]) * bracket;
   }
 }
 

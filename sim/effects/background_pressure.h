@@ -12,16 +12,23 @@
 // incompressible solver has no such offset: its pressure is the Lagrange multiplier of the
 // density constraint, zero at rest.
 //
-// What: a constant pressure p_bg added in the pressure force's own pair form (the INDSPH force
-// with p = p_bg everywhere, walls mirrored at p_bg as the Akinci pressure mirror does),
-//   a_i -= (p_bg / m_i) [ sum_j (V_i^2 + V_j^2) gradW_ij + 2 V_i^2 sum_b (V_b / V0_i) gradW_ib ],
-// V = m / rho (= 1 / delta under INDSPH). In a closed domain a constant pressure is exact physics
-// (only its gradient acts, and it has none); discretely the bracket is the kernel's consistency
-// error, zero on a complete regular neighbourhood, so the term only pushes particles towards a
-// uniform arrangement, against the clumping. At a free surface it would pull the surface in,
-// so the stage runs only in closed scenes (rule in stage_registry.cpp). Fluid particles only:
-// elastic particles carry their own stress, and a fluid particle next to tissue counts the
-// tissue particles as neighbours, so its bracket stays complete.
+// What: the background pressure of the transport-velocity formulation (Adami, Hu & Adams 2013,
+// J. Comput. Phys. 241:292, eq. 14): particles are advected with v + dv instead of v,
+//   dv_i = -(dt p_bg / m_i) [ sum_j (V_i^2 + V_j^2) gradW_ij + 2 V_i^2 sum_b (V_b / V0_i) gradW_ib ],
+// V = m / rho (= 1 / delta under INDSPH), walls mirrored at p_bg as the Akinci pressure mirror
+// does. The bracket is the kernel's consistency error, zero on a complete regular
+// neighbourhood, so dv only moves particles towards a uniform arrangement, against the clumping;
+// the momentum equation does not see it (the formulation's extra stress rho v (v~ - v) is of
+// second order in dv and left out). Why not in the momentum equation: tried first, the same
+// bracket as a force. It held the jump as well, but it resists every rearrangement of the
+// particles like an elastic lattice: the l = 2 droplet ran 22 % fast and damped at 45 1/s
+// (physical 4), and in the eye (default_eye.toml, upright) the oil rose to the superior
+// quadrant 4x slower (coverage 0.66 -> 0.675 instead of -> 0.805 in 0.6 s): the pinning of
+// slow buoyant motion that the gravity reference removed (docs/interface.md, validation 1b).
+// At a free surface the shift would pull the surface in, so the stage runs only in closed
+// scenes (rule in stage_registry.cpp). Fluid particles only: elastic particles carry their own
+// stress, and a fluid particle next to tissue counts the tissue particles as neighbours, so its
+// bracket stays complete.
 //
 // How large: p_bg = kBackgroundPressurePerTension sigma / d (the tension's scale: |gradC| ~ 1/d).
 // Time step: the term is explicit, with the stiffness of a fluid of sound speed
@@ -30,9 +37,17 @@
 // p_bg = 1, 2 and 3 sigma / d; 0.28 agitated (0.1-0.2 m/s); 0.44 unstable (docs/interface.md).
 #pragma once
 
+#include <vector>
+
 #include "sim/effects/effect.h"
 
 namespace sim {
+
+namespace field {
+// [m/s] transport-velocity correction dv: Pipeline::step integrates x += dt (v + dv) when the
+// field exists (written by background_pressure each step).
+inline constexpr const char* kTransportShift = "transport_shift";
+}  // namespace field
 
 // [1] p_bg in units of sigma / d. Laplace droplet under INDSPH at its step limit: 1 -> 0.88-0.91
 // of 2 sigma / R (R/6 and R/8, two sigma, two R), 2 -> 0.97-1.09, 3 -> 0.91-1.02
@@ -46,6 +61,8 @@ class BackgroundPressure final : public Effect {
   // pressure [Pa] > 0; referenceDensity [kg/m^3] > 0 for the time-step limit.
   BackgroundPressure(Real pressure, Real referenceDensity);
   std::string_view name() const override { return "background_pressure"; }
+  void attach(World& world) override;
+  // Writes dv into the transport_shift field (does not touch the accelerations).
   void apply(World& world, const StepContext& context) override;
   Real maxTimeStep(const World& world) const override;
   Real pressure() const { return pressure_; }
@@ -53,6 +70,7 @@ class BackgroundPressure final : public Effect {
  private:
   Real pressure_;          // [Pa]
   Real referenceDensity_;  // [kg/m^3]
+  std::vector<Vec3>* shift_ = nullptr;  // [m/s] the transport_shift field
 };
 
 // The background pressure an interfacial tension calls for [Pa]:

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "sim/core/reduction.h"
+#include "sim/effects/background_pressure.h"
 #include "sim/effects/viscosity_monaghan2005.h"
 #include "sim/solid/fixed_particles.h"
 
@@ -45,6 +46,8 @@ void Pipeline::attach(World& world) {
   for (std::size_t k = 0; k + 1 < effects_.size(); ++k)
     if (auto* v = dynamic_cast<ViscosityMonaghan2005*>(effects_[k].get()))
       if (auto* x = dynamic_cast<XsphMonaghan1989*>(effects_[k + 1].get())) v->absorbSmoothing(*x);
+  auto& fields = world.particles.fields;
+  transportShift_ = fields.has(field::kTransportShift) ? &fields.get<Vec3>(field::kTransportShift) : nullptr;
   attached_ = true;
 }
 
@@ -103,8 +106,15 @@ Real Pipeline::step(World& world) {
   const Real dt = lastStep_.dt;
   {
     ScopedStageTimer t(timers_, integrateSlot_);
+    if (transportShift_ != nullptr) {
+      // Transport-velocity correction of the background_pressure stage: advected with v + dv.
+      const std::vector<Vec3>& dv = *transportShift_;
 #pragma omp parallel for schedule(static)
-    for (std::size_t i = 0; i < n; ++i) p.x[i] += dt * p.v[i];
+      for (std::size_t i = 0; i < n; ++i) p.x[i] += dt * (p.v[i] + dv[i]);
+    } else {
+#pragma omp parallel for schedule(static)
+      for (std::size_t i = 0; i < n; ++i) p.x[i] += dt * p.v[i];
+    }
   }
   world.time += dt;
   world.lastTimeStep = dt;
@@ -166,7 +176,9 @@ std::string Pipeline::describe() const {
     if (e->kind() == Effect::Kind::kImplicit) out << "  " << k++ << ". " << e->name() << "\n";
   out << "  " << k++ << ". " << solver_->name() << ".solve         pressure correction\n";
   out << "  " << k++ << ". constrain            fixed (anchored) particles keep v = 0\n";
-  out << "  " << k++ << ". integrate            x += dt v\n";
+  out << "  " << k++ << ". integrate            "
+      << (hasStage("background_pressure") ? "x += dt (v + dv), dv the transport correction" : "x += dt v")
+      << "\n";
   out << "stage decisions:\n";
   for (const auto& d : decisions_)
     out << "  " << (d.active ? "[on]  " : "[off] ") << d.name << (d.forced ? " (forced)" : "")

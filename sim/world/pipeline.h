@@ -66,6 +66,8 @@ class Pipeline {
 
   TimeStepInfo lastStep_;
   std::vector<Vec3> velocityAtStart_;  // [m/s] for redoing a rejected step
+  // [m/s] background_pressure's transport correction dv (x += dt (v + dv)); nullptr without it
+  const std::vector<Vec3>* transportShift_ = nullptr;
   long rejectedSteps_ = 0;
   bool attached_ = false;
 };

@@ -55,14 +55,20 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
     return {name, false, false,
             "solver '" + o.solver + "': implemented in INDSPH's pair form only (WCSPH's equation "
             "of state carries its own offset when its masses are compressed)"};
-  const std::size_t surface = countFreeSurfaceParticles(w);
+  const char* consequence =
+      ": a background pressure would pull the surface in; the surface stress then clumps the "
+      "interface and under-states sigma (docs/interface.md, validation 1b)";
+  if (o.closedDomain == Force::kOff)
+    return {name, false, false, std::string("the scene has a free surface") + consequence};
+  const std::size_t surface = o.closedDomain == Force::kOn ? 0 : countFreeSurfaceParticles(w);
   if (surface > 0)
     return {name, false, false,
             std::to_string(surface) + " fluid particles at a free surface (number density below 0.9 "
-            "of rest): a background pressure would pull the surface in; the surface stress then "
-            "clumps the interface and under-states sigma (docs/interface.md, validation 1)"};
+            "of rest)" + consequence};
   std::ostringstream why;
-  why << "closed scene with interfacial tension under INDSPH: p_bg = "
+  why.precision(3);
+  why << (o.closedDomain == Force::kOn ? "closed scene (declared)" : "closed scene")
+      << " with interfacial tension under INDSPH: p_bg = "
       << (o.backgroundPressure >= 0 ? o.backgroundPressure : backgroundPressureFor(w, *t))
       << " Pa keeps the surface stress from clumping the interface (tensile instability)";
   return {name, true, false, why.str()};

@@ -39,6 +39,11 @@ struct PipelineOptions {
   // [Pa] background_pressure stage's p_bg; < 0: automatic, kBackgroundPressurePerTension sigma / d
   // (sim/effects/background_pressure.h)
   Real backgroundPressure = -1;
+  // Whether the fluid fills a closed container (no free surface), which the background_pressure
+  // stage needs: kOn / kOff as the scene knows it (the eye's filled cavity), kAuto: detected
+  // from the number densities at assembly (countFreeSurfaceParticles; a jittered lattice can
+  // read as a free surface there).
+  Force closedDomain = Force::kAuto;
   std::map<std::string, Force> forced;   // effect name -> forced on/off
 };
 

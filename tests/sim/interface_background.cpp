@@ -83,6 +83,12 @@ TEST_CASE("background_pressure stays off where a free surface exists", "[unit][i
   CHECK(p.hasStage("interfacial_tension"));
   CHECK_FALSE(p.hasStage("background_pressure"));
   CHECK_THAT(decision(p, "background_pressure").reason, Contains("free surface"));
+  // A scene that knows better overrides the detection, both ways.
+  o.closedDomain = Force::kOn;
+  CHECK(assemblePipeline(w, o).hasStage("background_pressure"));
+  auto closed = closedDroplet();
+  o.closedDomain = Force::kOff;
+  CHECK_FALSE(assemblePipeline(*closed.world, o).hasStage("background_pressure"));
 }
 
 TEST_CASE("background_pressure's time-step limit is 0.2 h / sqrt(p_bg / rho)", "[unit][interface]") {
@@ -94,6 +100,8 @@ TEST_CASE("background_pressure's time-step limit is 0.2 h / sqrt(p_bg / rho)", "
   CHECK_THROWS_AS(BackgroundPressure(-1.0, 985.0), SimError);
 }
 
+constexpr Real kDt = 1e-4;  // [s]
+
 // The stage's accelerations alone, with densities as INDSPH sets them (m delta, so V = 1 / delta:
 // d^3 on the lattice for both phases, which mass-density summation would not give next to the
 // interface).
@@ -102,8 +110,10 @@ void applyStage(World& w, BackgroundPressure& stage) {
   computeNumberDensities(w, delta);
   for (Index i = 0; i < w.particles.size(); ++i) w.particles.density[i] = w.particles.mass[i] * delta[i];
   stage.attach(w);
-  for (auto& a : w.particles.a) a.setZero();
-  stage.apply(w, StepContext{1e-4});
+  stage.apply(w, StepContext{kDt});
+  // The stage writes the transport correction dv = dt a_bg; the tests read a_bg = dv / dt.
+  const auto& dv = w.particles.fields.get<Vec3>(field::kTransportShift);
+  for (Index i = 0; i < w.particles.size(); ++i) w.particles.a[i] = dv[i] / kDt;
 }
 
 TEST_CASE("background_pressure exerts no force inside a regular lattice", "[unit][interface]") {

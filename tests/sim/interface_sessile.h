@@ -70,8 +70,11 @@ inline SessileResult runSessile(const SessileCase& c) {
   // Free slip: on a no-slip wall a contact line cannot move at all (Huh & Scriven 1971); the
   // SPH wall friction pinned it (measured: 2 deg in 0.05 s).
   options.wallFriction = false;
+  // The box is full (its jittered start would read as a free surface to the automatic rule).
+  options.closedDomain = Force::kOn;
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
+  if (c.print) std::printf("%s", pipeline.describe().c_str());
   SessileResult r;
   r.adhesion = pipeline.hasStage("wall_adhesion");
   const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
