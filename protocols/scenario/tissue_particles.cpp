@@ -327,6 +327,7 @@ void addTissues(const Protocol& p, Scenario& s) {
     std::vector<int> addedTag;
     std::vector<sim::Vec3> covered;  // wall points over the sclera (for the rim's layer and tags)
     std::vector<double> coveredLayer;
+    std::vector<sim::Vec3> coveredNormal;
     std::vector<int> coveredTag;
     for (std::size_t w = 0; w < walls.size(); ++w) {
       const double layer = layerAt(walls.x[w]);  // [m]
@@ -336,6 +337,7 @@ void addTissues(const Protocol& p, Scenario& s) {
       }
       covered.push_back(walls.x[w]);
       coveredLayer.push_back(layer);
+      coveredNormal.push_back(walls.normal[w]);
       coveredTag.push_back(walls.tag[w]);
       if (!scleraBackstop) continue;
       const sim::Vec3 x = walls.x[w] + (layer + kBackstopGapSpacings * d) * walls.normal[w];
@@ -347,7 +349,8 @@ void addTissues(const Protocol& p, Scenario& s) {
     const std::size_t backstopCount = added.size();
     // The limbus: the cap's rim walls (within 1.5 d of a sclera particle) get a collar of wall
     // particles along their normal, every d/2 from d/2 out to the backstop's depth, closing the
-    // seam between the cap and the sclera layer where fluid left the globe (docs/elasticity.md).
+    // seam between the cap and the sclera layer where fluid left the globe (docs/elasticity.md),
+    // and a fan at that depth over to the nearest sclera column's backstop point.
     // Then every sclera particle within kLimbusClampSpacings d of a cap or collar wall is anchored.
     std::size_t collarCount = 0;
     if (scleraBackstop) {
@@ -361,12 +364,26 @@ void addTissues(const Protocol& p, Scenario& s) {
         const long c = coveredGrid.nearest(x, 4.0 * d);
         const double layer = c >= 0 ? coveredLayer[static_cast<std::size_t>(c)] : kMinTissueLayerSpacings * d;
         const double depth = layer + kBackstopGapSpacings * d;  // [m]
-        for (double step = 0.5 * d; step <= depth + 1e-6 * d; step += 0.5 * d) {
-          added.push_back(x + step * walls.normal[w]);
-          addedNormal.push_back(walls.normal[w]);
+        const auto put = [&](const sim::Vec3& at, const sim::Vec3& normal) {
+          added.push_back(at);
+          addedNormal.push_back(normal);
           addedTag.push_back(walls.tag[w]);
-          clamp.push_back(added.back());
+          clamp.push_back(at);
           ++collarCount;
+        };
+        for (double step = 0.5 * d; step <= depth + 1e-6 * d; step += 0.5 * d) put(x + step * walls.normal[w], walls.normal[w]);
+        // The cap meets the globe at a crease (the lens surface and the sclera's normals differ
+        // by tens of degrees), so the collar's end and the backstop's first column diverge: a fan
+        // of wall particles at the backstop's depth, spacing <= d/2, closes that wedge.
+        if (c < 0) continue;
+        const sim::Vec3& xc = covered[static_cast<std::size_t>(c)];
+        const sim::Vec3& nc = coveredNormal[static_cast<std::size_t>(c)];
+        const double angle = std::acos(std::clamp(walls.normal[w].dot(nc), -1.0, 1.0));  // [rad]
+        const int pieces = static_cast<int>(std::ceil(angle * depth / (0.5 * d)));
+        for (int k = 1; k < pieces; ++k) {
+          const double f = static_cast<double>(k) / pieces;
+          const sim::Vec3 normal = ((1.0 - f) * walls.normal[w] + f * nc).normalized();
+          put((1.0 - f) * x + f * xc + depth * normal, normal);
         }
       }
       const PointGrid clampGrid(clamp, kLimbusClampSpacings * d);
