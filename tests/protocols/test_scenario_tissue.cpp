@@ -416,21 +416,29 @@ TEST_CASE("tissue: the leak counter finds fluid in and beyond the sclera layer, 
   for (std::size_t i = 0; i < particles.size() && fluid.size() < 3; ++i)
     if (particles.material[i] == s.phases[0].materialIndex) fluid.push_back(i);
   REQUIRE(fluid.size() == 3);
-  // A retina sample over the sclera, away from the cap, and the sclera particle it follows.
+  // A retina sample over the sclera, away from the cap, and the sclera particle it follows (the
+  // innermost of its column), whose depth leaves room for a point 1.2 d behind it in the layer.
   const RetinaSamples& r = s.retinaSamples;
+  const auto depthOf = [&](const sim::Vec3& p) { return std::sqrt(cavity.squaredDistance(p)); };
+  const auto followed = [&](std::size_t k) {
+    return sclera.restPositions[static_cast<std::size_t>(r.followsId[k] - sclera.firstId)];
+  };
   std::size_t w = 0;
-  while (w < r.restPositions.size() && (r.scleraLayer[w] <= 0.0 || r.restPositions[w].z() > 0.0)) ++w;
+  while (w < r.restPositions.size() &&
+         (r.scleraLayer[w] <= 0.0 || r.restPositions[w].z() > 0.0 || depthOf(followed(w)) + 1.3 * d > r.scleraLayer[w]))
+    ++w;
   REQUIRE(w < r.restPositions.size());
   const sim::Vec3 surface = r.restPositions[w], normal = r.normals[w];
-  // (1) into an opening of the face: next to the followed (innermost) sclera particle, at its depth.
-  const sim::Vec3 innermost = sclera.restPositions[static_cast<std::size_t>(r.followsId[w] - sclera.firstId)];
+  const sim::Vec3 innermost = followed(w);
+  // (1) into an opening of the face: next to the innermost sclera particle, at its depth.
   x[fluid[0]] = innermost + 0.3 * d * normal.unitOrthogonal();
   TissueMeasures m = measureTissues(s, x, ids);
   CHECK(m.fluidInTissue == 0);
   CHECK(m.deepestFluid > 0.0);
-  // (2) inside the layer: 2 d behind the surface, among the tissue's particles.
-  x[fluid[1]] = surface + 2.0 * d * normal;
-  REQUIRE(std::sqrt(cavity.squaredDistance(x[fluid[1]])) < r.scleraLayer[w]);
+  // (2) inside the layer: 1.2 d behind the innermost particle (more than the counter's d), still
+  // within the sampled layer.
+  x[fluid[1]] = innermost + 1.2 * d * normal;
+  REQUIRE(depthOf(x[fluid[1]]) < r.scleraLayer[w]);
   m = measureTissues(s, x, ids);
   CHECK(m.fluidInTissue == 1);
   CHECK(m.fluidThroughTissue == 0);
