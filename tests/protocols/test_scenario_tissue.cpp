@@ -454,15 +454,18 @@ TEST_CASE("tissue: the leak counter finds fluid in and beyond the sclera layer, 
   for (const std::string& line : tissueReportLines(s, rest, 0.1)) CHECK(line.find("warning") == std::string::npos);
 }
 
-// The fluid stays out of the elastic sclera in a coupled eye scene (issue 7's leak): after the
-// 24 ms run no fluid particle is inside the tissue by the leak counter's criterion (a full
-// spacing behind a sclera particle near it; tissue_particles.h). Fluid in the openings of the
+// The fluid stays out of the elastic sclera in the first 24 ms of a coupled eye scene (issue 7's
+// leak): no fluid particle is inside the tissue by the leak counter's criterion (a full spacing
+// behind a sclera particle near it; tissue_particles.h). Fluid in the openings of the
 // lattice-sampled face (the staircase's hollows, up to ~1 d outside the cavity surface) is
 // allowed: that is the surface's discretisation, not penetration. The earlier criterion (no fluid
-// beyond d/2 + u_max outside the surface) failed on those hollows (0.82 d, 6 particles). The
-// counter itself is tested on constructed cases above.
-TEST_CASE("tissue: no fluid particle enters the elastic sclera's layer in a coupled eye scene",
-          "[.][leak][protocol]") {
+// beyond d/2 + u_max outside the surface) failed on those hollows (0.82 d, 6 particles), so the
+// test was hidden. The counter does find real leaks: the 2 x 0.3 s run of the same protocol
+// counts 3 fluid particles in the tissue at 0.1 s and 42 at 0.6 s (docs/elasticity.md, "The
+// limbus clamp and the bony orbit"); a sampling that lets fluid in at once (session 6's layers:
+// 2.03 d deep in 24 ms) would fail here. The counter itself is tested on constructed cases above.
+TEST_CASE("tissue: no fluid particle enters the elastic sclera's layer in the first 24 ms of a coupled eye scene",
+          "[stability][leak][protocol][tissue]") {
   const PaperRun& run = paperRun();
   const Scenario& s = run.scenario;
   const double d = s.accuracy.particleSpacing;
