@@ -17,7 +17,8 @@ class PointGrid {
  public:
   // `cell` [m] should be about the largest query radius (each query visits 27 cells or more).
   PointGrid(const std::vector<sim::Vec3>& points, double cell) : points_(points), cell_(cell) {
-    for (std::size_t k = 0; k < points_.size(); ++k) cells_[key(coordinates(points_[k]))].push_back(k);
+    for (std::size_t k = 0; k < points_.size(); ++k)
+      cells_[key(coordinates(points_[k]))].push_back(k);
   }
 
   // Index of the point nearest to x within `radius` [m], or -1 when there is none.
@@ -62,12 +63,15 @@ class PointGrid {
     std::int64_t operator[](int a) const { return v[a]; }
   };
   Coordinates coordinates(const sim::Vec3& x) const {
-    return {{static_cast<std::int64_t>(std::floor(x.x() / cell_)), static_cast<std::int64_t>(std::floor(x.y() / cell_)),
+    return {{static_cast<std::int64_t>(std::floor(x.x() / cell_)),
+             static_cast<std::int64_t>(std::floor(x.y() / cell_)),
              static_cast<std::int64_t>(std::floor(x.z() / cell_))}};
   }
   static std::uint64_t key(const Coordinates& c) {
     // 21 bits per axis: cells of >= 1e-5 m cover +-10 m, far beyond any eye scene.
-    const auto part = [](std::int64_t v) { return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1FFFFFu; };
+    const auto part = [](std::int64_t v) {
+      return static_cast<std::uint64_t>(v + (1 << 20)) & 0x1FFFFFu;
+    };
     return part(c[0]) | (part(c[1]) << 21) | (part(c[2]) << 42);
   }
 
