@@ -155,6 +155,12 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
       names.emplace_back("retina max displacement [m]");
       row.push_back(lastTissue.cavityVolumeChange);
       names.emplace_back("cavity volume change [m^3]");
+      if (!s.retinaSamples.scleraLayer.empty()) {  // the leak counter (tissue_particles.h)
+        row.push_back(static_cast<double>(lastTissue.fluidInTissue));
+        names.emplace_back("fluid particles in the tissue [1]");
+        row.push_back(static_cast<double>(lastTissue.fluidThroughTissue));
+        names.emplace_back("fluid particles beyond the tissue layer [1]");
+      }
       writer->appendSeries("tissue", world.time, row, names);
     }
     frames.push_back(measureFrameCoverage(s.retina, lastFractions, world.time));

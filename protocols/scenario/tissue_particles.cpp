@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 #include <sstream>
@@ -16,6 +17,7 @@
 #include "meshing/sample_volume.h"
 #include "protocols/format/protocol_error.h"
 #include "protocols/report/report_format.h"
+#include "protocols/scenario/point_grid.h"
 #include "protocols/scenario/scenario.h"
 #include "sim/core/error.h"
 #include "sim/solid/elasticity_peer2018.h"
@@ -118,7 +120,8 @@ double tissueDomainPadding(const Protocol& p, double d) {
   double pad = 0.0;  // [m]
   if (p.eye.sclera || p.eye.orbitalFat)
     pad += std::max(1.5e-3, kMinTissueLayerSpacings * d) + (kBackstopGapSpacings + 1.0) * d;
-  if (p.eye.orbitalFat) pad += anatomy::OrbitalFatParameters{}.thickness + d;
+  // The fat, and the bony orbit up to (kOrbitGapSpacings + 1) d beyond its outermost particles.
+  if (p.eye.orbitalFat) pad += anatomy::OrbitalFatParameters{}.thickness + (kOrbitGapSpacings + 1.0) * d;
   return pad;
 }
 
@@ -295,8 +298,9 @@ void addTissues(const Protocol& p, Scenario& s) {
   // Walls over elastic sclera are replaced by it; their retina samples follow the nearest sclera
   // particle (brute force: W x N_sclera distance checks, ~1e8 at the standard preset, < 1 s).
   if (scleraIndex && s.tissues[*scleraIndex].decision.elastic) {
-    const TissueBody& sclera = s.tissues[*scleraIndex];
+    TissueBody& sclera = s.tissues[*scleraIndex];
     RetinaSamples& r = s.retinaSamples;
+    r.scleraLayer = scleraLayer;
     const long n = static_cast<long>(r.restPositions.size());
 #pragma omp parallel for schedule(static)
     for (long w = 0; w < n; ++w) {
@@ -316,38 +320,185 @@ void addTissues(const Protocol& p, Scenario& s) {
     std::vector<sim::Vec3> fat;
     for (const TissueBody& t : s.tissues)
       if (t.name == "orbital fat" && t.decision.elastic) fat.insert(fat.end(), t.restPositions.begin(), t.restPositions.end());
-    const double fatClear2 = (2.0 * d) * (2.0 * d);  // [m^2]
-    const auto nearFat = [&](const sim::Vec3& x) {
-      return std::any_of(fat.begin(), fat.end(), [&](const sim::Vec3& f) { return (f - x).squaredNorm() < fatClear2; });
-    };
+    const PointGrid fatGrid(fat, 2.0 * d);
+    const auto nearFat = [&](const sim::Vec3& x) { return fatGrid.anyWithin(x, 2.0 * d); };
     std::vector<sim::Index> keep;
-    std::vector<sim::Vec3> backstop, backstopNormal;
-    std::vector<int> backstopTag;
+    std::vector<sim::Vec3> added, addedNormal;  // backstop, then collar, then orbit
+    std::vector<int> addedTag;
+    std::vector<sim::Vec3> covered;  // wall points over the sclera (for the rim's layer and tags)
+    std::vector<double> coveredLayer;
+    std::vector<sim::Vec3> coveredNormal;
+    std::vector<int> coveredTag;
     for (std::size_t w = 0; w < walls.size(); ++w) {
       const double layer = layerAt(walls.x[w]);  // [m]
       if (layer <= 0.0) {
         keep.push_back(static_cast<sim::Index>(w));
-      } else if (scleraBackstop) {
-        const sim::Vec3 x = walls.x[w] + (layer + kBackstopGapSpacings * d) * walls.normal[w];
-        if (nearFat(x)) continue;
-        backstop.push_back(x);
-        backstopNormal.push_back(walls.normal[w]);
-        backstopTag.push_back(walls.tag[w]);
+        continue;
       }
+      covered.push_back(walls.x[w]);
+      coveredLayer.push_back(layer);
+      coveredNormal.push_back(walls.normal[w]);
+      coveredTag.push_back(walls.tag[w]);
+      if (!scleraBackstop) continue;
+      const sim::Vec3 x = walls.x[w] + (layer + kBackstopGapSpacings * d) * walls.normal[w];
+      if (nearFat(x)) continue;
+      added.push_back(x);
+      addedNormal.push_back(walls.normal[w]);
+      addedTag.push_back(walls.tag[w]);
+    }
+    const std::size_t backstopCount = added.size();
+    // The limbus: the cap's rim walls (within 1.5 d of a sclera particle) get a collar of wall
+    // particles along their normal, every d/2 from d/2 out to the backstop's depth, closing the
+    // seam between the cap and the sclera layer where fluid left the globe (docs/elasticity.md),
+    // and a fan at that depth over to the nearest sclera column's backstop point.
+    // Then every sclera particle within kLimbusClampSpacings d of a cap or collar wall is anchored.
+    std::size_t collarCount = 0;
+    if (scleraBackstop) {
+      const PointGrid scleraGrid(sclera.restPositions, 1.5 * d);
+      const PointGrid coveredGrid(covered, d);
+      std::vector<sim::Vec3> clamp;  // cap and collar walls
+      for (const sim::Index w : keep) {
+        const sim::Vec3& x = walls.x[w];
+        clamp.push_back(x);
+        if (!scleraGrid.anyWithin(x, 1.5 * d)) continue;
+        const long c = coveredGrid.nearest(x, 4.0 * d);
+        const double layer = c >= 0 ? coveredLayer[static_cast<std::size_t>(c)] : kMinTissueLayerSpacings * d;
+        const double depth = layer + kBackstopGapSpacings * d;  // [m]
+        const auto put = [&](const sim::Vec3& at, const sim::Vec3& normal) {
+          added.push_back(at);
+          addedNormal.push_back(normal);
+          addedTag.push_back(walls.tag[w]);
+          clamp.push_back(at);
+          ++collarCount;
+        };
+        for (double step = 0.5 * d; step <= depth + 1e-6 * d; step += 0.5 * d) put(x + step * walls.normal[w], walls.normal[w]);
+        // The cap meets the globe at a crease (the lens surface and the sclera's normals differ
+        // by tens of degrees), so the collar's end and the backstop's first column diverge: a fan
+        // of wall particles at the backstop's depth, spacing <= d/2, closes that wedge.
+        if (c < 0) continue;
+        const sim::Vec3& xc = covered[static_cast<std::size_t>(c)];
+        const sim::Vec3& nc = coveredNormal[static_cast<std::size_t>(c)];
+        const double angle = std::acos(std::clamp(walls.normal[w].dot(nc), -1.0, 1.0));  // [rad]
+        const int pieces = static_cast<int>(std::ceil(angle * depth / (0.5 * d)));
+        for (int k = 1; k < pieces; ++k) {
+          const double f = static_cast<double>(k) / pieces;
+          const sim::Vec3 normal = ((1.0 - f) * walls.normal[w] + f * nc).normalized();
+          put((1.0 - f) * x + f * xc + depth * normal, normal);
+        }
+      }
+      const PointGrid clampGrid(clamp, kLimbusClampSpacings * d);
+      sim::DynamicParticles& particles = s.world->particles;
+      for (std::size_t k = 0; k < sclera.count; ++k) {
+        const std::size_t i = static_cast<std::size_t>(sclera.firstId) + k;  // not yet re-sorted
+        if (sim::isFixed(particles, i) || !clampGrid.anyWithin(sclera.restPositions[k], kLimbusClampSpacings * d))
+          continue;
+        sim::setFixed(particles, i);
+        ++sclera.anchored;
+        ++sclera.limbusClamped;
+      }
+    }
+    // The bony orbit around the fat: lattice points (spacing d/2) at [kOrbitGapSpacings,
+    // kOrbitGapSpacings + 1) d from the nearest fat particle and at least 2 d from every sclera
+    // particle (no wall inside a tissue particle's support), normals pointing away from the fat.
+    std::size_t orbitCount = 0;
+    if (!fat.empty() && scleraBackstop) {
+      Eigen::AlignedBox3d box;
+      for (const sim::Vec3& f : fat) box.extend(f);
+      const double reach = (kOrbitGapSpacings + 1.0) * d;  // [m]
+      const double h = 0.5 * d;
+      const PointGrid scleraGrid(sclera.restPositions, 2.0 * d);
+      const PointGrid fatReach(fat, reach);
+      const PointGrid coveredGrid(covered, 4.0 * d);
+      const sim::Vec3 lo = box.min() - sim::Vec3::Constant(reach), hi = box.max() + sim::Vec3::Constant(reach);
+      for (double x = lo.x(); x <= hi.x(); x += h)
+        for (double y = lo.y(); y <= hi.y(); y += h)
+          for (double z = lo.z(); z <= hi.z(); z += h) {
+            const sim::Vec3 q(x, y, z);
+            const long f = fatReach.nearest(q, reach);
+            if (f < 0) continue;
+            const sim::Vec3 away = q - fat[static_cast<std::size_t>(f)];
+            if (away.norm() < kOrbitGapSpacings * d || scleraGrid.anyWithin(q, 2.0 * d)) continue;
+            long c = -1;
+            for (double around = 4.0 * d; c < 0 && around < 64.0 * d; around *= 2.0) c = coveredGrid.nearest(q, around);
+            added.push_back(q);
+            addedNormal.push_back(away.normalized());
+            addedTag.push_back(c >= 0 ? coveredTag[static_cast<std::size_t>(c)] : 0);
+            ++orbitCount;
+          }
     }
     walls.fields.permute(keep);
     walls.fields.resize(keep.size());
-    for (std::size_t b = 0; b < backstop.size(); ++b) walls.add(backstop[b], backstopNormal[b], backstopTag[b]);
-    if (!backstop.empty())
+    for (std::size_t b = 0; b < added.size(); ++b) walls.add(added[b], addedNormal[b], addedTag[b]);
+    if (backstopCount > 0)
       s.notes.push_back("sclera held at its outer surface: a rigid wall (the orbit) stands " +
                         formatNumber(kBackstopGapSpacings, 2) +
                         " particle spacings behind it where no orbital fat is, so fluid that passes the tissue layer "
                         "stays in the globe");
+    if (collarCount > 0)
+      s.notes.push_back("sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL cap): " +
+                        std::to_string(sclera.limbusClamped) + " sclera particles within " +
+                        formatNumber(kLimbusClampSpacings, 2) + " spacings of the cap's wall or of a rigid collar (" +
+                        std::to_string(collarCount) + " wall particles from the cap's edge out to the backstop) anchored");
+    if (orbitCount > 0)
+      s.notes.push_back("the bony orbit: " + std::to_string(orbitCount) + " rigid wall particles " +
+                        formatNumber(kOrbitGapSpacings, 2) + "-" + formatNumber(kOrbitGapSpacings + 1.0, 2) +
+                        " spacings around the orbital fat, so the tissue assembly is enclosed by walls");
     if (s.phases[1].contactAngleThroughAqueous)
       s.notes.push_back("the retina over the elastic sclera has no wall adhesion (contact angle): "
                         "the engine applies it to wall particles only");
   }
 }
+
+namespace {
+
+// TissueMeasures::fluidInTissue / fluidThroughTissue / deepestFluid (criteria in the header).
+void countFluidInTissue(const Scenario& s, const std::vector<sim::Vec3>& x, const std::vector<std::int32_t>& ids,
+                        TissueMeasures& m) {
+  const RetinaSamples& r = s.retinaSamples;
+  const TissueBody* sclera = nullptr;
+  for (const TissueBody& t : s.tissues)
+    if (t.name == "sclera" && t.count > 0) sclera = &t;
+  if (!sclera || r.scleraLayer.size() != r.restPositions.size()) return;
+  const double d = s.accuracy.particleSpacing;  // [m]
+  const auto inBody = [](const TissueBody& t, std::int32_t id) {
+    return id >= t.firstId && id < t.firstId + static_cast<std::int32_t>(t.count);
+  };
+  std::vector<char> tissue(x.size(), 0);
+  std::vector<sim::Vec3> scleraNow;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    for (const TissueBody& t : s.tissues)
+      if (t.count > 0 && inBody(t, ids[i])) {
+        tissue[i] = 1;
+        if (&t == sclera) scleraNow.push_back(x[i]);
+      }
+  const meshing::MeshQuery cavity(s.cavity);
+  const PointGrid scleraGrid(scleraNow, 1.5 * d);
+  const PointGrid samples(r.restPositions, d);
+  std::vector<double> depth(scleraNow.size(), std::numeric_limits<double>::quiet_NaN());
+  const auto depthOf = [&](std::size_t j) {  // [m] signed: > 0 outside the rest cavity surface
+    if (std::isnan(depth[j])) {
+      const double dist = std::sqrt(cavity.squaredDistance(scleraNow[j]));
+      depth[j] = cavity.isInside(scleraNow[j]) ? -dist : dist;
+    }
+    return depth[j];
+  };
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    if (tissue[i] || cavity.isInside(x[i])) continue;
+    const double depthHere = std::sqrt(cavity.squaredDistance(x[i]));  // [m]
+    m.deepestFluid = std::max(m.deepestFluid, depthHere);
+    const std::vector<std::size_t> near = scleraGrid.within(x[i], 1.5 * d);
+    bool in = near.empty() ? depthHere > d
+                           : std::any_of(near.begin(), near.end(), [&](std::size_t j) { return depthOf(j) < depthHere - d; });
+    const long w = samples.nearest(cavity.closestPoint(x[i]), 2.0 * d);
+    const double layer = w >= 0 ? r.scleraLayer[static_cast<std::size_t>(w)] : 0.0;  // [m]
+    const bool through = depthHere > std::max(layer, d);
+    in = in || through;
+    m.fluidInTissue += in ? 1 : 0;
+    m.fluidThroughTissue += through ? 1 : 0;
+  }
+}
+
+}  // namespace
 
 std::vector<sim::Vec3> retinaPositions(const Scenario& s, const std::vector<sim::Vec3>& x,
                                        const std::vector<std::int32_t>& ids) {
@@ -409,6 +560,7 @@ TissueMeasures measureTissues(const Scenario& s, const std::vector<sim::Vec3>& x
   m.regionMeanOutward.resize(kReportedRegions.size());
   for (std::size_t k = 0; k < area.size(); ++k)
     m.regionMeanOutward[k] = area[k] > 0.0 ? outward[k] / area[k] : 0.0;
+  countFluidInTissue(s, x, ids, m);
   return m;
 }
 
@@ -458,6 +610,15 @@ std::vector<std::string> tissueReportLines(const Scenario& s, const TissueMeasur
                       " rad/s) is not resolved and the elastic stage, solved before the pressure solve, "
                       "answers the fluid's load softened by 1 + (omega_1 dt)^2 (docs/elasticity.md, "
                       "\"Anchored pad under water\"); the coverage does not depend on it");
+  }
+  if (!s.retinaSamples.scleraLayer.empty()) {
+    // Fluid that entered or passed the tissue (TissueMeasures): a leaking run says so.
+    std::string line = "fluid in the tissue: " + std::to_string(last.fluidInTissue) +
+                       " particles more than d behind a sclera particle near them, " +
+                       std::to_string(last.fluidThroughTissue) + " beyond the sampled layer (deepest fluid " +
+                       formatNumber(last.deepestFluid / d, 3) + " d outside the cavity surface)" + at;
+    if (last.fluidInTissue > 0) line = "warning: " + line + "; the tissue leaks, its numbers are suspect";
+    lines.push_back(line);
   }
   lines.push_back("retina maximum displacement " + mm(last.retinaMaxDisplacement) + at);
   lines.push_back("cavity volume change " + formatNumber(last.cavityVolumeChange * 1e9, 3) +

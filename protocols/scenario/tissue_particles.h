@@ -57,6 +57,21 @@ inline constexpr double kMinTissueLayerSpacings = 2.5;
 // (the kernel's support): closer, the wall compressed the anchored layer, whose pressure then
 // pushed the free inner layer into the cavity (2 MPa sclera test: 0.3 mm instead of 2 um).
 inline constexpr double kBackstopGapSpacings = 2.0;
+// [1] the limbus clamp (docs/elasticity.md "The limbus clamp and the bony orbit"): the sclera's
+// anterior edge joins the cornea, here the rigid lens/IOL cap. Every sclera particle within this
+// many spacings of a cap wall particle, or of the rigid collar that closes the seam from the cap's
+// edge out to the backstop, is anchored, so the collar cannot push the free rim (it did,
+// 0.14-0.3 mm, when those particles were free: session 5). Measured on the 2 MPa sclera test
+// (10 ms): with 2 d (the kernel's support) two free particles 2.2-2.5 d from the collar moved 2.3
+// and 4.6 um (bound 4.1 um, elsewhere 0.1 um); with 3 d the largest displacement is 0.10 um, as
+// without collar and clamp.
+inline constexpr double kLimbusClampSpacings = 3.0;
+// [1] the bony orbit around the elastic orbital fat: rigid wall particles (spacing d/2) at
+// distances [kOrbitGapSpacings, kOrbitGapSpacings + 1) d from the nearest fat particle, outside
+// the sclera's backstop shell, so the tissue assembly is enclosed by walls and fluid that gets
+// through the tissue stays in the scene. Two spacings: no wall particle within the kernel's
+// support of a fat particle (the sclera backstop's rule).
+inline constexpr double kOrbitGapSpacings = 2.0;
 
 struct TissueBody {
   std::string name;                  // "sclera" or "orbital fat"
@@ -79,6 +94,7 @@ struct TissueBody {
   std::int32_t firstId = 0;          // particle ids firstId .. firstId + count - 1
   std::size_t count = 0;
   std::size_t anchored = 0;
+  std::size_t limbusClamped = 0;     // sclera: of `anchored`, those anchored by the limbus clamp
   std::vector<sim::Vec3> restPositions;  // [m] by id - firstId
   std::string describe() const;      // one line for `tamponade plan` and notes
 };
@@ -88,6 +104,9 @@ struct RetinaSamples {
   std::vector<sim::Vec3> restPositions;  // [m]
   std::vector<sim::Vec3> normals;        // [1] outward (into the wall)
   std::vector<std::int32_t> followsId;   // tissue particle id the sample moves with, -1 = fixed
+  // [m] sampled elastic sclera layer behind each sample (0: rigid wall or the lens/IOL cap); empty
+  // when the sclera is not sampled. The leak counter (TissueMeasures) reads it.
+  std::vector<double> scleraLayer;
   bool moves() const;
 };
 
@@ -113,6 +132,19 @@ struct TissueMeasures {
   double cavityVolumeChange = 0.0;
   // [m] area-weighted mean outward displacement per reported region (kReportedRegions order).
   std::vector<double> regionMeanOutward;
+  // Fluid in the tissue (issue 7's leak; counted only when the sclera is sampled). A fluid
+  // particle outside the cavity surface at depth r (distance to the rest surface) is
+  // - `fluidInTissue` when some sclera particle within 1.5 d of it lies more than d shallower
+  //   (r_j < r - d), or none lies within 1.5 d and r > d: it sits behind a tissue particle, inside
+  //   the layer. Fluid in the openings of the lattice-sampled face (the staircase's hollows, up to
+  //   ~1 d deep) is not counted: it is no deeper than the innermost tissue particle of its own
+  //   column (<= 1.37 d: the first lattice point past d/2 along a tilted column), and the
+  //   shallowest one nearby is >= d/2 deep, so it is < 0.87 d + (relative tissue motion) deeper.
+  // - `fluidThroughTissue` (a subset) when r > max(t_layer, d), t_layer the sampled layer at its
+  //   nearest retina sample (0 on the cap): it has passed the whole layer (or the cap's wall).
+  std::size_t fluidInTissue = 0;
+  std::size_t fluidThroughTissue = 0;
+  double deepestFluid = 0.0;  // [m] largest r of a fluid particle outside the cavity surface
 };
 
 // Current retina sample positions from the dynamic particles' positions and ids (#F each; any
