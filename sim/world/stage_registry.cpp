@@ -55,6 +55,15 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
     return {name, false, false,
             "solver '" + o.solver + "': implemented in INDSPH's pair form only (WCSPH's equation "
             "of state carries its own offset when its masses are compressed)"};
+  // Elastic tissue: with the stage the paper's 10 kPa eye (paper_sclera_10kpa.toml, 2 x 0.3 s)
+  // lost an oil particle out of the domain at 0.46 s, through the lattice-sampled sclera that
+  // already lets fluid in (docs/elasticity.md); without it none left. Not understood; off there.
+  for (std::size_t i = 0; i < w.particles.size(); ++i)
+    if (w.materials[w.particles.material[i]].kind == MaterialKind::kElastic)
+      return {name, false, false,
+              "elastic tissue in the scene: the shift pushed fluid through the sampled tissue "
+              "(a particle left the 10 kPa paper eye at 0.46 s with it, none without; "
+              "docs/interface.md, validation 1b)"};
   const char* consequence =
       ": a background pressure would pull the surface in; the surface stress then clumps the "
       "interface and under-states sigma (docs/interface.md, validation 1b)";

@@ -55,6 +55,18 @@ TEST_CASE("background_pressure runs in closed INDSPH scenes with interfacial ten
   o.backgroundPressure = -1;
   o.forced["background_pressure"] = Force::kOff;
   CHECK_FALSE(assemblePipeline(w, o).hasStage("background_pressure"));
+  o.forced.clear();
+  // With an elastic material the rule keeps it off (docs/interface.md, validation 1b).
+  Material tissue;
+  tissue.name = "tissue";
+  tissue.kind = MaterialKind::kElastic;
+  tissue.restDensity = 1000;
+  tissue.youngsModulus = 1e5;
+  tissue.poissonRatio = 0.3;
+  w.particles.material[0] = w.materials.add(tissue);
+  const Pipeline elastic = assemblePipeline(w, o);
+  CHECK_FALSE(elastic.hasStage("background_pressure"));
+  CHECK_THAT(decision(elastic, "background_pressure").reason, Contains("elastic tissue"));
 }
 
 TEST_CASE("background_pressure stays off where a free surface exists", "[unit][interface]") {
