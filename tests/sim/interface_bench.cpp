@@ -3,6 +3,8 @@
 //   sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] [R_per_d]
 //                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]
 //                                                      sessile droplet contact angle
+//   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R]
+//                                      the cap fit on a static cap of exactly THETA
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
 //                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
 //                                      equilibrium tamponade shape in a spherical cavity
@@ -131,6 +133,34 @@ int sessile(const testing::SessileCase& c) {
       c.perR, r.angle, r.finalAngle, c.tEnd, r.particles, r.steps, r.seconds,
       r.finite ? "" : " (NOT FINITE)");
   return r.finite ? 0 : 1;
+}
+
+// The measurement alone: a static cap of exactly THETA (the lattice sites inside the sphere cap
+// are oil), no step, read by fitSessileCap with several exclusion heights above the floor.
+int sessileStatic(const testing::SessileCase& c) {
+  testing::SessileCase run = c;
+  run.startCos = -std::cos(c.theta * std::numbers::pi / 180);
+  auto scene = testing::sessileScene(run);
+  const World& w = *scene.world;
+  const Real d = w.particleSpacing();
+  const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
+  std::printf("static cap %.1f deg, d = R0/%.0f, jitter %.2f d, %zu particles\n", c.theta, c.perR,
+              c.jitter, w.particles.size());
+  for (const Real exclude : {0.0, 0.5, 1.0, 1.5}) {
+    const CapFit fit = fitSessileCap(w, scene.oil, floor, exclude * d);
+    std::vector<Vec3> points = interfacePairMidpoints(w, scene.oil);
+    std::erase_if(points, [&](const Vec3& x) { return x.y() < exclude * d; });
+    const SphereFit geo = fitSphereGeometric(points, fit.sphere);
+    const Real geoAngle = std::acos(std::clamp(-geo.centre.y() / geo.radius, Real(-1), Real(1))) *
+                          180 / std::numbers::pi;
+    std::printf("  exclude %.1f d: volume cap %.2f deg (R = %.3f mm); free sphere: algebraic "
+                "%.2f deg (R = %.3f mm, rms %.3f mm), geometric %.2f deg (R = %.3f mm); %d "
+                "points\n",
+                exclude, fit.contactAngle, fit.capRadius * 1e3, fit.sphereAngle,
+                fit.sphere.radius * 1e3, fit.sphere.rmsResidual * 1e3, geoAngle, geo.radius * 1e3,
+                fit.pointCount);
+  }
+  return 0;
 }
 
 // Validation 5 (tests/sim/interface_cavity.cpp runs the same scenes for the CI): the oil starts
@@ -315,6 +345,15 @@ int main(int argc, char** argv) {
   if (argc >= 6 && std::strcmp(argv[1], "oscillation-csv") == 0)
     return oscillationCsv(argv[2], std::atof(argv[3]) * 1e-3, std::atof(argv[4]),
                           std::strcmp(argv[5], "velocity") == 0);
+  if (argc >= 3 && std::strcmp(argv[1], "sessile-static") == 0) {
+    testing::SessileCase c;
+    c.theta = std::atof(argv[2]);
+    if (argc > 3) c.perR = std::atof(argv[3]);
+    if (argc > 4) c.jitter = std::atof(argv[4]);
+    if (argc > 5) c.halfWidthPerR = std::atof(argv[5]);
+    c.wallLayers = 3;
+    return sessileStatic(c);
+  }
   if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0) {
     testing::SessileCase c;
     c.theta = std::atof(argv[2]);
@@ -344,6 +383,7 @@ int main(int argc, char** argv) {
       "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
       "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
       "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]\n"
+      "       sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R]\n"
       "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
       "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;
