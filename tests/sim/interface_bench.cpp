@@ -23,6 +23,9 @@
 #include "interface_fixtures.h"
 #include "interface_sessile.h"
 #include "interface_oscillation.h"
+#include "sim/effects/interfacial_tension_hu_adams2006.h"
+#include "sim/effects/wall_adhesion_young.h"
+#include "sim/fluid/density.h"
 #include "sim/measure/droplet_pressure_jump.h"
 #include "sim/measure/sessile_contact_angle.h"
 #include "sim/measure/wall_nearest_material.h"
@@ -160,6 +163,49 @@ int sessileStatic(const testing::SessileCase& c) {
                 fit.sphere.radius * 1e3, fit.sphere.rmsResidual * 1e3, geoAngle, geo.radius * 1e3,
                 fit.pointCount);
   }
+  // Static forces on the cap as built (densities by summation), each stage alone: the radial
+  // sums sum_i m_i a_i.e_r over the particles within `reach` of the axis. Exact cap of radius R, angle theta, base a =
+  // R sin(theta): Young's wall line force is +2 pi a sigma cos(theta). The stress-form tension
+  // truncated at the wall gives -2 pi sigma R theta in total: its normal part -2 pi sigma R
+  // (theta - sin cos), which the Laplace pressure balances, plus the contact-line pull
+  // -2 pi a sigma cos(theta); the pull is read as the total minus the exact normal part.
+  World& mw = *scene.world;
+  const Real sigma = 0.04, theta = c.theta * std::numbers::pi / 180, u = std::cos(theta);
+  const Real capRadius = 0.003 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u)));
+  const Real base = capRadius * std::sin(theta);
+  const Vec3 centre(scene.centre.x(), 0, scene.centre.z());
+  // Within a + 3 h of the axis, as the hemisphere unit test: the layer's other end, at the
+  // floor's edge, stays outside when the box is wide enough (half-width 3 R0 for 30 deg).
+  const Real reach = base + 3 * mw.supportRadius();
+  auto radialSum = [&] {
+    Real f = 0;
+    for (Index i = 0; i < mw.particles.size(); ++i) {
+      Vec3 r = mw.particles.x[i] - centre;
+      r.y() = 0;
+      if (r.norm() == 0 || r.norm() > reach) continue;
+      f += mw.particles.mass[i] * mw.particles.a[i].dot(r.normalized());
+    }
+    return f;
+  };
+  computeDensities(mw, mw.particles.density);
+  WallAdhesionYoung adhesion;
+  adhesion.attach(mw);
+  for (auto& a : mw.particles.a) a.setZero();
+  adhesion.apply(mw, StepContext{1e-4});
+  const Real wallForce = radialSum();
+  InterfacialTensionHuAdams2006 tension;
+  tension.attach(mw);
+  for (auto& a : mw.particles.a) a.setZero();
+  tension.apply(mw, StepContext{1e-4});
+  const Real tensionForce = radialSum();
+  const Real line = 2 * std::numbers::pi * base * sigma * u;
+  const Real normalPart = -2 * std::numbers::pi * sigma * capRadius * (theta - std::sin(theta) * u);
+  std::printf("  wall line force %.4e N = %.3f x 2 pi a sigma cos(theta) (a = %.2f mm)\n",
+              wallForce, wallForce / line, base * 1e3);
+  std::printf("  tension radial sum %.4e N = %.3f x -2 pi sigma R theta; contact-line pull "
+              "(sum - exact normal part) = %.3f x -2 pi a sigma cos(theta); wall / pull %.3f\n",
+              tensionForce, tensionForce / (-2 * std::numbers::pi * sigma * capRadius * theta),
+              (tensionForce - normalPart) / -line, wallForce / -(tensionForce - normalPart));
   return 0;
 }
 

@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "interface_fixtures.h"
+#include "interface_sessile.h"
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/effects/wall_adhesion_young.h"
 #include "sim/fluid/density.h"
@@ -226,4 +227,55 @@ TEST_CASE("Sphere fit recovers a sphere and the cap angle from points on it",
   CHECK(fit.radius == Approx(2.0).epsilon(1e-9));
   CHECK(fit.rmsResidual < 1e-9);
   CHECK_THROWS_AS(fitSphere({Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY()}), SimError);
+}
+
+TEST_CASE("Geometric sphere fit and the volume cap recover exact caps", "[unit][interface]") {
+  // Points on the cap of a sphere of radius 2 whose centre is z_c = -cos(theta) R above the
+  // plane y = 0 (theta = 40 deg through the cap); the cap volume pi R^3 (2 + u)(1 - u)^2 / 3,
+  // u = cos(theta). Exact data: both fits must return the sphere to round-off.
+  const Real theta = 40 * std::numbers::pi / 180, radius = 2, u = std::cos(theta);
+  const Vec3 c(0.3, -u * radius, -0.2);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 40; ++j) {
+      const Real polar = theta * (i + 0.5) / 20;
+      const Real az = 2 * std::numbers::pi * j / 40;
+      points.push_back(c + radius * Vec3(std::sin(polar) * std::cos(az), std::cos(polar),
+                                         std::sin(polar) * std::sin(az)));
+    }
+  SphereFit start;
+  start.centre = c + Vec3(0.1, -0.3, 0.05);
+  start.radius = 1.5;
+  const SphereFit fit = fitSphereGeometric(points, start);
+  CHECK((fit.centre - c).norm() < 1e-8);
+  CHECK(fit.radius == Approx(radius).epsilon(1e-8));
+  const Real volume = std::numbers::pi * radius * radius * radius * (2 + u) * (1 - u) * (1 - u) / 3;
+  const WallPlane plane{Vec3::Zero(), Vec3::UnitY()};
+  CHECK(capAngleOfVolume(points, plane, Vec3(c.x(), 0.5, c.z()), volume) ==
+        Approx(40.0).margin(1e-6));
+}
+
+TEST_CASE("The sessile cap fit reads static lattice caps of 30 to 165 deg at their angle",
+          "[unit][interface]") {
+  // The measurement of validation 3 on the droplet as built, no step: the lattice sites inside a
+  // cap of exactly theta (the hemisphere's volume, R0 = 6 d, the 0.2 d jittered lattice and the
+  // three wall layers of the [contact_angle] runs) are oil. Tolerance 2 deg: the lattice cap is
+  // the sphere resolved to +-d/2 at each point, and at R0 = 6 d a shift of the cap's centre by
+  // 0.1 d is already 1 deg at 90 deg (measured: 30.2, 43.9, 58.3, 88.7, 119.6, 149.7, 165.9).
+  // The free algebraic sphere through the same points reads 33.6 for 30 and 168.0 for 165 deg
+  // (short arcs, docs/interface.md validation 3): the reason the fit is volume-constrained.
+  for (const Real theta : {30.0, 45.0, 60.0, 90.0, 120.0, 150.0, 165.0}) {
+    testing::SessileCase c;
+    c.theta = theta;
+    c.startCos = -std::cos(theta * std::numbers::pi / 180);
+    c.wallLayers = 3;
+    c.jitter = 0.2;
+    auto scene = testing::sessileScene(c);
+    const World& w = *scene.world;
+    const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
+    const CapFit fit = fitSessileCap(w, scene.oil, floor, w.particleSpacing());
+    INFO("static cap " << theta << " deg reads " << fit.contactAngle << " deg (free sphere "
+                       << fit.sphereAngle << ")");
+    CHECK(fit.contactAngle == Approx(theta).margin(2.0));
+  }
 }
