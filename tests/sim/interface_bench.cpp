@@ -1,8 +1,8 @@
 // Longer interface validations (issue 6) that are too costly for CI, run by hand:
 //   sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [key=value...]  l = 2 vs Lamb
 //   sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] [R_per_d]
-//                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]
-//                                                      sessile droplet contact angle
+//                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm]
+//                               [box_height_per_R]     sessile droplet contact angle
 //   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R]
 //                                      the cap fit on a static cap of exactly THETA
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
@@ -171,7 +171,7 @@ int sessileStatic(const testing::SessileCase& c) {
   // -2 pi a sigma cos(theta); the pull is read as the total minus the exact normal part.
   World& mw = *scene.world;
   const Real sigma = 0.04, theta = c.theta * std::numbers::pi / 180, u = std::cos(theta);
-  const Real capRadius = 0.003 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u)));
+  const Real capRadius = c.r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u)));
   const Real base = capRadius * std::sin(theta);
   const Vec3 centre(scene.centre.x(), 0, scene.centre.z());
   // Within a + 3 h of the axis, as the hemisphere unit test: the layer's other end, at the
@@ -412,6 +412,8 @@ int main(int argc, char** argv) {
     if (argc > 9) c.jitter = std::atof(argv[9]);
     if (argc > 10) c.relaxSteps = std::atoi(argv[10]);
     if (argc > 11) c.halfWidthPerR = std::atof(argv[11]);
+    if (argc > 12) c.r0 = std::atof(argv[12]) * 1e-3;
+    if (argc > 13) c.boxHeightPerR = std::atof(argv[13]);
     return sessile(c);
   }
   if (argc >= 3 && std::strcmp(argv[1], "cavity") == 0)
@@ -428,7 +430,8 @@ int main(int argc, char** argv) {
       "[jitter=0] [divergence=1] [excess=E] [relaxfactor=0] [csv=FILE]\n"
       "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
       "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
-      "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]\n"
+      "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm] "
+      "[box_height_per_R]\n"
       "       sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R]\n"
       "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
       "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");

@@ -29,6 +29,8 @@ struct SessileCase {
   bool print = false;      // print the angle ten times during the run
   Real jitter = 0;         // [d] DropletSpec::jitter of the start lattice
   int relaxSteps = 0;      // steps with the velocities reset after each, before the run
+  Real r0 = 0.003;         // [m] radius of the hemisphere whose volume the droplet has
+  Real boxHeightPerR = 1.6;  // [1] inner box height over R0 (flat caps fit a lower box)
 };
 
 struct SessileResult {
@@ -44,12 +46,13 @@ struct SessileResult {
 // The scene of a sessile case before any step: the droplet as the cap of start angle
 // acos(-startCos) and the hemisphere's volume, the requested angle set on the floor.
 inline DropletScene sessileScene(const SessileCase& c) {
-  const Real r0 = 0.003;  // [m]
+  const Real r0 = c.r0;  // [m]
   DropletSpec s;
   s.spacing = r0 / c.perR;
   s.halfWidth = c.halfWidthPerR * r0;  // at 2 R0 the 120 deg cap (base 0.73 R) stays 5 h from
                                        // the side walls
-  s.boxHeight = 1.6 * r0;              // its top (1.26 R) stays 2 h below the lid
+  s.boxHeight = c.boxHeightPerR * r0;  // 1.6: the 120 deg cap's top (1.26 R) stays 2 h below
+                                       // the lid
   s.sigma = 0.04;
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
   s.wallLayers = c.wallLayers;
