@@ -41,11 +41,11 @@ Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, co
                       Real volume);
 
 struct CapFit {
-  SphereFit sphere;          // the algebraic fit (Kasa) of the interface points
-  Real sphereAngle = 0.0;    // [deg] its angle acos(-z_c / R), through the droplet's material
-  Real contactAngle = 0.0;   // [deg] the cap of the droplet's volume that fits the points best
-  Real capRadius = 0.0;      // [m] that cap's sphere radius
-  Real volume = 0.0;         // [m^3] the droplet's volume, sum of m_i / rho_i
+  SphereFit sphere;         // the algebraic fit (Kasa) of the interface points
+  Real sphereAngle = 0.0;   // [deg] its angle acos(-z_c / R), through the droplet's material
+  Real contactAngle = 0.0;  // [deg] the cap of the droplet's volume that fits the points best
+  Real capRadius = 0.0;     // [m] that cap's sphere radius
+  Real volume = 0.0;        // [m^3] the droplet's volume, sum of m_i / rho_i
   int pointCount = 0;
 };
 
