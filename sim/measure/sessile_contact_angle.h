@@ -55,10 +55,11 @@ struct CapFit {
 // droplet's own volume, on the vertical axis through the droplet's centroid, that fits the
 // remaining points best (capAngleOfVolume). Why not the free sphere: for a flat cap the points
 // span a short arc (a 30 deg cap at R0 = 6 d is 2.7 d tall, 1.7 d above the excluded layer), on
-// which the algebraic fit is biased towards small radii (Kasa 1976 fits are known to be, e.g.
-// Chernov 2010 ch. 7): it read static lattice caps of 30 / 45 / 165 deg at 33.6 / 46.9 / 168.0
-// deg; the volume-constrained cap reads them at 30.2 / 43.9 / 165.9 (docs/interface.md,
-// validation 3). The droplet's volume V_i = m_i / rho_i uses the solver's density where it is set
+// which the algebraic fit is biased towards small radii (a known property of the Kasa fit, e.g.
+// Chernov 2010, Circular and Linear Regression): it read static lattice caps of 30 / 45 deg at 33.6
+// / 46.9 deg; the volume-constrained cap reads them at 30.5 / 44.3 (docs/interface.md, validation
+// 3). Near 180 deg neither helps: at 165 deg both read 168 (0.02 d of centre height is 1 deg
+// there). The droplet's volume V_i = m_i / rho_i uses the solver's density where it is set
 // (> 0), else the rest density. sphere / sphereAngle keep the free fit for comparison.
 CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& wall,
                      Real excludeNearWall);

@@ -396,6 +396,7 @@ int main(int argc, char** argv) {
     if (argc > 4) c.jitter = std::atof(argv[4]);
     if (argc > 5) c.halfWidthPerR = std::atof(argv[5]);
     c.wallLayers = 3;
+    c.solver = "indsph";  // the [contact_angle] set-up: rest mass, no excess
     return sessileStatic(c);
   }
   if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0) {
