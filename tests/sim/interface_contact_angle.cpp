@@ -27,7 +27,7 @@ testing::SessileResult settle(Real theta) {
 }
 
 // +-5 deg: the acceptance for 30-150 deg. The cap fit (the cap of the droplet's volume,
-// sim/measure/sessile_contact_angle.h) reads static lattice caps of 30-165 deg within 1.7 deg
+// sim/measure/sessile_contact_angle.h) reads static lattice caps of 30-150 deg within 1.3 deg
 // (interface_units.cpp) and the start hemisphere at 89.8 deg; the 90 deg run (no wall force at
 // all) ends at 87.5 deg, the bias of the tension's wall treatment at this resolution (R = 6 d).
 // Measured (window mean over the last fifth): 59.4 deg for 60, 118.4 deg for 120.
