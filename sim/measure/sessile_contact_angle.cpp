@@ -39,6 +39,109 @@ SphereFit fitSphere(const std::vector<Vec3>& points) {
   return fit;
 }
 
+SphereFit fitSphereGeometric(const std::vector<Vec3>& points, const SphereFit& start) {
+  require(points.size() >= 4, "sphere fit needs at least 4 points");
+  // Gauss-Newton on r_k = |x_k - c| - R (unknowns c, R): the Jacobian row is (-(x_k - c)/|x_k - c|,
+  // -1). Started from the algebraic fit it converges in a few iterations; the step is halved
+  // while it does not lower the residual (a damped Gauss-Newton).
+  Vec3 c = start.centre;
+  Real radius = start.radius;
+  auto cost = [&](const Vec3& cc, Real rr) {
+    Real sum = 0;
+    for (const Vec3& x : points) {
+      const Real e = (x - cc).norm() - rr;
+      sum += e * e;
+    }
+    return sum;
+  };
+  Real current = cost(c, radius);
+  for (int iteration = 0; iteration < 50; ++iteration) {
+    Eigen::Matrix4d jtj = Eigen::Matrix4d::Zero();
+    Eigen::Vector4d jtr = Eigen::Vector4d::Zero();
+    for (const Vec3& x : points) {
+      const Vec3 r = x - c;
+      const Real dist = r.norm();
+      if (dist == 0) continue;
+      const Eigen::Vector4d row(-r.x() / dist, -r.y() / dist, -r.z() / dist, -1.0);
+      jtj += row * row.transpose();
+      jtr += row * (dist - radius);
+    }
+    const Eigen::Vector4d step = jtj.ldlt().solve(-jtr);
+    if (!step.allFinite()) break;
+    Real scale = 1;
+    bool lowered = false;
+    for (int halving = 0; halving < 30 && !lowered; ++halving, scale *= 0.5) {
+      const Vec3 cc = c + scale * step.head<3>();
+      const Real rr = radius + scale * step[3];
+      const Real trial = cost(cc, rr);
+      if (rr > 0 && trial < current) {
+        lowered = true;
+        const Real change = current - trial;
+        c = cc;
+        radius = rr;
+        current = trial;
+        if (change <= 1e-14 * current) iteration = 50;  // converged
+      }
+    }
+    if (!lowered) break;
+  }
+  SphereFit fit;
+  fit.centre = c;
+  fit.radius = radius;
+  fit.rmsResidual = std::sqrt(current / static_cast<Real>(points.size()));
+  return fit;
+}
+
+Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, const Vec3& axisPoint,
+                      Real volume) {
+  require(points.size() >= 4 && volume > 0, "cap fit needs points and a positive volume");
+  const Vec3 n = wall.normal.normalized();
+  const Vec3 foot = axisPoint - (axisPoint - wall.point).dot(n) * n;  // the axis meets the wall
+  // Cap of angle theta (through the droplet) and volume V: V = pi R^3 (2 + cos)(1 - cos)^2 / 3,
+  // centre -R cos(theta) above the wall on the axis.
+  auto cost = [&](Real theta) {
+    const Real u = std::cos(theta);
+    const Real radius = std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
+    const Vec3 c = foot - radius * u * n;
+    Real sum = 0;
+    for (const Vec3& x : points) {
+      const Real e = (x - c).norm() - radius;
+      sum += e * e;
+    }
+    return sum;
+  };
+  // Coarse scan in 1 deg steps, then golden-section search in the bracket of the best sample.
+  const Real degree = std::numbers::pi / 180;
+  Real best = 1 * degree, bestCost = cost(best);
+  for (int k = 2; k <= 179; ++k) {
+    const Real c = cost(k * degree);
+    if (c < bestCost) {
+      bestCost = c;
+      best = k * degree;
+    }
+  }
+  Real lo = best - degree, hi = best + degree;
+  const Real g = 0.5 * (std::sqrt(5.0) - 1);
+  Real a = hi - g * (hi - lo), b = lo + g * (hi - lo);
+  Real ca = cost(a), cb = cost(b);
+  for (int k = 0; k < 60; ++k) {
+    if (ca < cb) {
+      hi = b;
+      b = a;
+      cb = ca;
+      a = hi - g * (hi - lo);
+      ca = cost(a);
+    } else {
+      lo = a;
+      a = b;
+      ca = cb;
+      b = lo + g * (hi - lo);
+      cb = cost(b);
+    }
+  }
+  return 0.5 * (lo + hi) / degree;
+}
+
 std::vector<Vec3> interfacePairMidpoints(const World& world, int material) {
   const auto& p = world.particles;
   const NeighborList& nf = world.fluidNeighbors();
@@ -61,12 +164,27 @@ CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& w
   std::vector<Vec3> points = interfacePairMidpoints(world, dropletMaterial);
   std::erase_if(points, [&](const Vec3& x) { return (x - wall.point).dot(n) < excludeNearWall; });
   require(points.size() >= 4, "sessile cap fit: fewer than 4 interface points above the wall");
+  const auto& p = world.particles;
+  const Real restDensity = world.materials[dropletMaterial].restDensity;
+  Vec3 centroid = Vec3::Zero();
+  Real volume = 0;
+  for (Index i = 0; i < p.size(); ++i) {
+    if (p.material[i] != dropletMaterial) continue;
+    const Real v = p.mass[i] / (p.density[i] > 0 ? p.density[i] : restDensity);  // [m^3]
+    centroid += v * p.x[i];
+    volume += v;
+  }
+  centroid /= volume;
   CapFit out;
   out.sphere = fitSphere(points);
   out.pointCount = static_cast<int>(points.size());
   const Real zc = (out.sphere.centre - wall.point).dot(n);
-  out.contactAngle =
+  out.sphereAngle =
       std::acos(std::clamp(-zc / out.sphere.radius, Real(-1), Real(1))) * 180.0 / std::numbers::pi;
+  out.volume = volume;
+  out.contactAngle = capAngleOfVolume(points, wall, centroid, volume);
+  const Real u = std::cos(out.contactAngle * std::numbers::pi / 180.0);
+  out.capRadius = std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
   return out;
 }
 

@@ -1,10 +1,10 @@
 // Contact angle of a sessile droplet on a flat wall from a fitted spherical cap (issue 6
 // validation 3). The interface is sampled at the midpoints of neighbouring droplet/other-phase
 // particle pairs closer than 1.5 d (the sharp interface lies between the two phases' particles);
-// a sphere is fitted to those points by algebraic least squares (|x|^2 = 2 c.x + k, linear in
-// c and k; Kasa 1976), and with the sphere centre at signed height z_c above the wall plane,
-// the angle measured through the droplet is theta = acos(-z_c / R). Points closer than
-// `excludeNearWall` to the wall are dropped: the wall layer distorts the colour field there.
+// the cap of the droplet's volume that fits those points best gives the angle (fitSessileCap).
+// Also here: the algebraic least-squares sphere (|x|^2 = 2 c.x + k, linear in c and k; Kasa
+// 1976) and the orthogonal-distance sphere; with the sphere centre at signed height z_c above the
+// wall plane, the angle measured through the droplet is theta = acos(-z_c / R).
 #pragma once
 
 #include <vector>
@@ -26,17 +26,41 @@ SphereFit fitSphere(const std::vector<Vec3>& points);
 // samples of the sharp interface, which lies between the two phases' particles [m].
 std::vector<Vec3> interfacePairMidpoints(const World& world, int material);
 
+// Orthogonal-distance sphere fit (minimises sum (|x - c| - R)^2), damped Gauss-Newton from `start`.
+SphereFit fitSphereGeometric(const std::vector<Vec3>& points, const SphereFit& start);
+
 struct WallPlane {
   Vec3 point = Vec3::Zero();   // [m] a point on the wall surface
   Vec3 normal = Vec3::UnitY(); // [1] unit normal pointing into the fluid
 };
 
+// Angle [deg] through the droplet of the spherical cap of the given volume [m^3] on the wall,
+// its axis through axisPoint, that best fits the points (least squares of the orthogonal
+// distances, a 1-D search over the angle).
+Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, const Vec3& axisPoint,
+                      Real volume);
+
 struct CapFit {
-  SphereFit sphere;
-  Real contactAngle = 0.0;  // [deg] measured through the droplet's material
+  SphereFit sphere;         // the algebraic fit (Kasa) of the interface points
+  Real sphereAngle = 0.0;   // [deg] its angle acos(-z_c / R), through the droplet's material
+  Real contactAngle = 0.0;  // [deg] the cap of the droplet's volume that fits the points best
+  Real capRadius = 0.0;     // [m] that cap's sphere radius
+  Real volume = 0.0;        // [m^3] the droplet's volume, sum of m_i / rho_i
   int pointCount = 0;
 };
 
+// The contact angle of a droplet of `dropletMaterial` sitting on the wall plane: the interface
+// points (interfacePairMidpoints) closer than excludeNearWall to the wall are dropped (the wall
+// layer distorts the colour field there), and the angle is that of the spherical cap of the
+// droplet's own volume, on the vertical axis through the droplet's centroid, that fits the
+// remaining points best (capAngleOfVolume). Why not the free sphere: for a flat cap the points
+// span a short arc (a 30 deg cap at R0 = 6 d is 2.7 d tall, 1.7 d above the excluded layer), on
+// which the algebraic fit is biased towards small radii (a known property of the Kasa fit, e.g.
+// Chernov 2010, Circular and Linear Regression): it read static lattice caps of 30 / 45 deg at 33.6
+// / 46.9 deg; the volume-constrained cap reads them at 30.5 / 44.3 (docs/interface.md, validation
+// 3). Near 180 deg neither helps: at 165 deg both read 168 (0.02 d of centre height is 1 deg
+// there). The droplet's volume V_i = m_i / rho_i uses the solver's density where it is set
+// (> 0), else the rest density. sphere / sphereAngle keep the free fit for comparison.
 CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& wall,
                      Real excludeNearWall);
 

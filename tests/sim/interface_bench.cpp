@@ -1,8 +1,10 @@
 // Longer interface validations (issue 6) that are too costly for CI, run by hand:
 //   sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [key=value...]  l = 2 vs Lamb
 //   sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] [R_per_d]
-//                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]
-//                                                      sessile droplet contact angle
+//                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm]
+//                               [box_height_per_R]     sessile droplet contact angle
+//   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R]
+//                                      the cap fit on a static cap of exactly THETA
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
 //                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
 //                                      equilibrium tamponade shape in a spherical cavity
@@ -19,8 +21,11 @@
 #include <vector>
 
 #include "interface_fixtures.h"
-#include "interface_sessile.h"
 #include "interface_oscillation.h"
+#include "interface_sessile.h"
+#include "sim/effects/interfacial_tension_hu_adams2006.h"
+#include "sim/effects/wall_adhesion_young.h"
+#include "sim/fluid/density.h"
 #include "sim/measure/droplet_pressure_jump.h"
 #include "sim/measure/sessile_contact_angle.h"
 #include "sim/measure/wall_nearest_material.h"
@@ -132,6 +137,75 @@ int sessile(const testing::SessileCase& c) {
       c.perR, r.angle, r.finalAngle, c.tEnd, r.particles, r.steps, r.seconds,
       r.finite ? "" : " (NOT FINITE)");
   return r.finite ? 0 : 1;
+}
+
+// The measurement alone: a static cap of exactly THETA (the lattice sites inside the sphere cap
+// are oil), no step, read by fitSessileCap with several exclusion heights above the floor.
+int sessileStatic(const testing::SessileCase& c) {
+  testing::SessileCase run = c;
+  run.startCos = -std::cos(c.theta * std::numbers::pi / 180);
+  auto scene = testing::sessileScene(run);
+  const World& w = *scene.world;
+  const Real d = w.particleSpacing();
+  const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
+  std::printf("static cap %.1f deg, d = R0/%.0f, jitter %.2f d, %zu particles\n", c.theta, c.perR,
+              c.jitter, w.particles.size());
+  for (const Real exclude : {0.0, 0.5, 1.0, 1.5}) {
+    const CapFit fit = fitSessileCap(w, scene.oil, floor, exclude * d);
+    std::vector<Vec3> points = interfacePairMidpoints(w, scene.oil);
+    std::erase_if(points, [&](const Vec3& x) { return x.y() < exclude * d; });
+    const SphereFit geo = fitSphereGeometric(points, fit.sphere);
+    const Real geoAngle = std::acos(std::clamp(-geo.centre.y() / geo.radius, Real(-1), Real(1))) *
+                          180 / std::numbers::pi;
+    std::printf(
+        "  exclude %.1f d: volume cap %.2f deg (R = %.3f mm); free sphere: algebraic "
+        "%.2f deg (R = %.3f mm, rms %.3f mm), geometric %.2f deg (R = %.3f mm); %d "
+        "points\n",
+        exclude, fit.contactAngle, fit.capRadius * 1e3, fit.sphereAngle, fit.sphere.radius * 1e3,
+        fit.sphere.rmsResidual * 1e3, geoAngle, geo.radius * 1e3, fit.pointCount);
+  }
+  // Static forces on the cap as built (densities by summation), each stage alone: the radial
+  // sums sum_i m_i a_i.e_r over the particles within `reach` of the axis. Exact cap of radius R,
+  // angle theta, base a = R sin(theta): Young's wall line force is +2 pi a sigma cos(theta). The
+  // tension's sum is printed against -2 pi sigma R theta, the sharp stress sigma (I - n n) delta
+  // truncated at the wall; it is a comparison between angles only, not a closed form for this
+  // discretisation (the stress form's isotropic part sigma |gradC| / 3 and the wall mirror both
+  // add to it), so the contact-line pull is not separated from it.
+  World& mw = *scene.world;
+  const Real sigma = 0.04, theta = c.theta * std::numbers::pi / 180, u = std::cos(theta);
+  const Real capRadius = c.r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u)));
+  const Real base = capRadius * std::sin(theta);
+  const Vec3 centre(scene.centre.x(), 0, scene.centre.z());
+  // Within a + 3 h of the axis, as the hemisphere unit test: the layer's other end, at the
+  // floor's edge, stays outside when the box is wide enough (half-width 3 R0 for 30 deg).
+  const Real reach = base + 3 * mw.supportRadius();
+  auto radialSum = [&] {
+    Real f = 0;
+    for (Index i = 0; i < mw.particles.size(); ++i) {
+      Vec3 r = mw.particles.x[i] - centre;
+      r.y() = 0;
+      if (r.norm() == 0 || r.norm() > reach) continue;
+      f += mw.particles.mass[i] * mw.particles.a[i].dot(r.normalized());
+    }
+    return f;
+  };
+  computeDensities(mw, mw.particles.density);
+  WallAdhesionYoung adhesion;
+  adhesion.attach(mw);
+  for (auto& a : mw.particles.a) a.setZero();
+  adhesion.apply(mw, StepContext{1e-4});
+  const Real wallForce = radialSum();
+  InterfacialTensionHuAdams2006 tension;
+  tension.attach(mw);
+  for (auto& a : mw.particles.a) a.setZero();
+  tension.apply(mw, StepContext{1e-4});
+  const Real tensionForce = radialSum();
+  const Real line = 2 * std::numbers::pi * base * sigma * u;
+  std::printf("  wall line force %.4e N = %.3f x 2 pi a sigma cos(theta) (a = %.2f mm)\n",
+              wallForce, wallForce / line, base * 1e3);
+  std::printf("  tension radial sum %.4e N = %.3f x -2 pi sigma R theta\n", tensionForce,
+              tensionForce / (-2 * std::numbers::pi * sigma * capRadius * theta));
+  return 0;
 }
 
 // Validation 5 (tests/sim/interface_cavity.cpp runs the same scenes for the CI): the oil starts
@@ -318,6 +392,16 @@ int main(int argc, char** argv) {
   if (argc >= 6 && std::strcmp(argv[1], "oscillation-csv") == 0)
     return oscillationCsv(argv[2], std::atof(argv[3]) * 1e-3, std::atof(argv[4]),
                           std::strcmp(argv[5], "velocity") == 0);
+  if (argc >= 3 && std::strcmp(argv[1], "sessile-static") == 0) {
+    testing::SessileCase c;
+    c.theta = std::atof(argv[2]);
+    if (argc > 3) c.perR = std::atof(argv[3]);
+    if (argc > 4) c.jitter = std::atof(argv[4]);
+    if (argc > 5) c.halfWidthPerR = std::atof(argv[5]);
+    c.wallLayers = 3;
+    c.solver = "indsph";  // the [contact_angle] set-up: rest mass, no excess
+    return sessileStatic(c);
+  }
   if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0) {
     testing::SessileCase c;
     c.theta = std::atof(argv[2]);
@@ -330,6 +414,8 @@ int main(int argc, char** argv) {
     if (argc > 9) c.jitter = std::atof(argv[9]);
     if (argc > 10) c.relaxSteps = std::atoi(argv[10]);
     if (argc > 11) c.halfWidthPerR = std::atof(argv[11]);
+    if (argc > 12) c.r0 = std::atof(argv[12]) * 1e-3;
+    if (argc > 13) c.boxHeightPerR = std::atof(argv[13]);
     return sessile(c);
   }
   if (argc >= 3 && std::strcmp(argv[1], "cavity") == 0)
@@ -346,7 +432,10 @@ int main(int argc, char** argv) {
       "[jitter=0] [divergence=1] [excess=E] [relaxfactor=0] [bg=off|PA] [csv=FILE]\n"
       "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
       "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
-      "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R]\n"
+      "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm] "
+      "[box_height_per_R]\n"
+      "       sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] "
+      "[half_width_per_R]\n"
       "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
       "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;

@@ -29,6 +29,8 @@ struct SessileCase {
   bool print = false;      // print the angle ten times during the run
   Real jitter = 0;         // [d] DropletSpec::jitter of the start lattice
   int relaxSteps = 0;      // steps with the velocities reset after each, before the run
+  Real r0 = 0.003;         // [m] radius of the hemisphere whose volume the droplet has
+  Real boxHeightPerR = 1.6;  // [1] inner box height over R0 (flat caps fit a lower box)
 };
 
 struct SessileResult {
@@ -41,13 +43,16 @@ struct SessileResult {
   bool adhesion = false;  // the pipeline has the wall_adhesion stage
 };
 
-inline SessileResult runSessile(const SessileCase& c) {
-  const Real r0 = 0.003;  // [m]
+// The scene of a sessile case before any step: the droplet as the cap of start angle
+// acos(-startCos) and the hemisphere's volume, the requested angle set on the floor.
+inline DropletScene sessileScene(const SessileCase& c) {
+  const Real r0 = c.r0;  // [m]
   DropletSpec s;
   s.spacing = r0 / c.perR;
   s.halfWidth = c.halfWidthPerR * r0;  // at 2 R0 the 120 deg cap (base 0.73 R) stays 5 h from
                                        // the side walls
-  s.boxHeight = 1.6 * r0;              // its top (1.26 R) stays 2 h below the lid
+  s.boxHeight = c.boxHeightPerR * r0;  // 1.6: the 120 deg cap's top (1.26 R) stays 2 h below
+                                       // the lid
   s.sigma = 0.04;
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
   s.wallLayers = c.wallLayers;
@@ -61,8 +66,14 @@ inline SessileResult runSessile(const SessileCase& c) {
   const Real u = -c.startCos;
   s.radius = r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u)));
   auto scene = dropletScene(s);
+  scene.world->materials.setContactAngle(scene.oil, kFloorTag, c.theta);
+  return scene;
+}
+
+inline SessileResult runSessile(const SessileCase& c) {
+  auto scene = sessileScene(c);
   World& w = *scene.world;
-  w.materials.setContactAngle(scene.oil, kFloorTag, c.theta);
+  const Real spacing = w.particleSpacing();
   PipelineOptions options;
   options.solver = c.solver;
   options.wcsph.speedOfSound = 2;  // 12 x sqrt(2 sigma / (rho R)): density error < 1 %
@@ -79,7 +90,7 @@ inline SessileResult runSessile(const SessileCase& c) {
   r.adhesion = pipeline.hasStage("wall_adhesion");
   const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
   // Interface points closer than d to the floor are left out: the wall layer distorts them.
-  auto angleNow = [&] { return fitSessileCap(w, scene.oil, floor, s.spacing).contactAngle; };
+  auto angleNow = [&] { return fitSessileCap(w, scene.oil, floor, spacing).contactAngle; };
   const auto t0 = std::chrono::steady_clock::now();
   for (int k = 0; k < c.relaxSteps; ++k) {
     pipeline.step(w);
@@ -95,12 +106,12 @@ inline SessileResult runSessile(const SessileCase& c) {
       ++samples;
     }
     if (c.print && w.time - tStart >= next) {
-      const CapFit fit = fitSessileCap(w, scene.oil, floor, s.spacing);
+      const CapFit fit = fitSessileCap(w, scene.oil, floor, spacing);
       std::printf(
-          "  t = %.4f s  theta = %.1f deg (through oil)  R = %.2f mm  rms %.3f mm  "
-          "steps %ld\n",
-          w.time, fit.contactAngle, fit.sphere.radius * 1e3, fit.sphere.rmsResidual * 1e3,
-          w.stepCount);
+          "  t = %.4f s  theta = %.1f deg (through oil; free sphere %.1f deg, R = %.2f mm, "
+          "rms %.3f mm)  steps %ld\n",
+          w.time, fit.contactAngle, fit.sphereAngle, fit.sphere.radius * 1e3,
+          fit.sphere.rmsResidual * 1e3, w.stepCount);
       std::fflush(stdout);
       next += c.tEnd / 10;
     }

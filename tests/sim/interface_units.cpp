@@ -6,6 +6,7 @@
 #include <numbers>
 
 #include "interface_fixtures.h"
+#include "interface_sessile.h"
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/effects/wall_adhesion_young.h"
 #include "sim/fluid/density.h"
@@ -226,4 +227,59 @@ TEST_CASE("Sphere fit recovers a sphere and the cap angle from points on it",
   CHECK(fit.radius == Approx(2.0).epsilon(1e-9));
   CHECK(fit.rmsResidual < 1e-9);
   CHECK_THROWS_AS(fitSphere({Vec3::Zero(), Vec3::UnitX(), Vec3::UnitY()}), SimError);
+}
+
+TEST_CASE("Geometric sphere fit and the volume cap recover exact caps", "[unit][interface]") {
+  // Points on the cap of a sphere of radius 2 whose centre is z_c = -cos(theta) R above the
+  // plane y = 0 (theta = 40 deg through the cap); the cap volume pi R^3 (2 + u)(1 - u)^2 / 3,
+  // u = cos(theta). Exact data: both fits must return the sphere to round-off.
+  const Real theta = 40 * std::numbers::pi / 180, radius = 2, u = std::cos(theta);
+  const Vec3 c(0.3, -u * radius, -0.2);
+  std::vector<Vec3> points;
+  for (int i = 0; i < 20; ++i)
+    for (int j = 0; j < 40; ++j) {
+      const Real polar = theta * (i + 0.5) / 20;
+      const Real az = 2 * std::numbers::pi * j / 40;
+      points.push_back(c + radius * Vec3(std::sin(polar) * std::cos(az), std::cos(polar),
+                                         std::sin(polar) * std::sin(az)));
+    }
+  SphereFit start;
+  start.centre = c + Vec3(0.1, -0.3, 0.05);
+  start.radius = 1.5;
+  const SphereFit fit = fitSphereGeometric(points, start);
+  CHECK((fit.centre - c).norm() < 1e-8);
+  CHECK(fit.radius == Approx(radius).epsilon(1e-8));
+  const Real volume = std::numbers::pi * radius * radius * radius * (2 + u) * (1 - u) * (1 - u) / 3;
+  const WallPlane plane{Vec3::Zero(), Vec3::UnitY()};
+  CHECK(capAngleOfVolume(points, plane, Vec3(c.x(), 0.5, c.z()), volume) ==
+        Approx(40.0).margin(1e-6));
+}
+
+TEST_CASE("The sessile cap fit reads static lattice caps of 30 to 165 deg at their angle",
+          "[unit][interface]") {
+  // The measurement of validation 3 on the droplet as built, no step: the lattice sites inside a
+  // cap of exactly theta (the hemisphere's volume, R0 = 6 d, the 0.2 d jittered lattice and the
+  // three wall layers of the [contact_angle] runs) are oil. The angle follows from the cap's
+  // centre height z_c = -R cos(theta): an error dz in it is dz / (R sin theta) in theta, and the
+  // lattice cap defines its surface only to within the cell, about 0.1 d in the mean over the
+  // points, i.e. 1 deg at 90 deg. Tolerance 2 deg for 30-150 deg (measured 30.5, 44.3, 58.7,
+  // 89.2, 120.2, 150.8); at 165 deg the same 0.1 d is 4.6 deg (sin 165 = 0.26, the contact disc
+  // is 1.2 d in radius), so 5 deg there (measured 168.1). The free algebraic sphere through the
+  // same points reads 33.6 for 30 deg (a short arc, docs/interface.md validation 3): the reason
+  // the fit is volume-constrained.
+  for (const Real theta : {30.0, 45.0, 60.0, 90.0, 120.0, 150.0, 165.0}) {
+    testing::SessileCase c;
+    c.theta = theta;
+    c.startCos = -std::cos(theta * std::numbers::pi / 180);
+    c.wallLayers = 3;
+    c.jitter = 0.2;
+    c.solver = "indsph";  // rest mass as in the runs: the volume sum m / rho0 is the lattice's
+    auto scene = testing::sessileScene(c);
+    const World& w = *scene.world;
+    const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
+    const CapFit fit = fitSessileCap(w, scene.oil, floor, w.particleSpacing());
+    INFO("static cap " << theta << " deg reads " << fit.contactAngle << " deg (free sphere "
+                       << fit.sphereAngle << ")");
+    CHECK(fit.contactAngle == Approx(theta).margin(theta > 150 ? 5.0 : 2.0));
+  }
 }
