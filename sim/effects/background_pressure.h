@@ -31,10 +31,11 @@
 // bracket stays complete.
 //
 // How large: p_bg = kBackgroundPressurePerTension sigma / d (the tension's scale: |gradC| ~ 1/d).
-// Time step: the term is explicit, with the stiffness of a fluid of sound speed
-// c_bg = sqrt(p_bg / rho); dt <= kBackgroundCourant h / c_bg, h the kernel support radius (2 d). Measured on the same droplet
-// (R = 3 mm, sigma 0.04 N/m, d = 0.5 mm): c_bg dt / h = 0.20 calm (max speed 4-6 mm/s) for
-// p_bg = 1, 2 and 3 sigma / d; 0.28 agitated (0.1-0.2 m/s); 0.44 unstable (docs/interface.md).
+// Time step: dt <= kBackgroundCourant h / c_bg, c_bg = sqrt(p_bg / rho), h the kernel support
+// radius (2 d). Measured with the force form on the same droplet (R = 3 mm, sigma 0.04 N/m,
+// d = 0.5 mm): c_bg dt / h = 0.20 calm (max speed 4-6 mm/s) for p_bg = 1, 2 and 3 sigma / d; 0.28
+// agitated (0.1-0.2 m/s); 0.44 unstable (docs/interface.md). The transport form was run at this
+// limit only; its own stability bound was not measured.
 #pragma once
 
 #include <vector>
@@ -49,9 +50,9 @@ namespace field {
 inline constexpr const char* kTransportShift = "transport_shift";
 }  // namespace field
 
-// [1] p_bg in units of sigma / d. Laplace droplet under INDSPH at its step limit: 1 -> 0.88-0.91
-// of 2 sigma / R (R/6 and R/8, two sigma, two R), 2 -> 0.97-1.09, 3 -> 0.91-1.02
-// (docs/interface.md, validation 1).
+// [1] p_bg in units of sigma / d. Laplace droplet under INDSPH (d = R/6) at the step limit, jump
+// over 2 sigma / R after the first 10 ms: 1 -> 0.72, 1.5 -> 0.82, 2 -> 0.86, 4 -> 0.83, 8 -> 0.70
+// (2 at R/8: 0.88-0.90; docs/interface.md, validation 1b).
 inline constexpr Real kBackgroundPressurePerTension = 2.0;
 // [1] c_bg dt / h at the stage's time-step limit (measured, see above).
 inline constexpr Real kBackgroundCourant = 0.2;

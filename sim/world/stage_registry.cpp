@@ -44,6 +44,19 @@ StageDecision viscosityDecision(const World& w, const PipelineOptions& o, bool i
   return StageDecision{name, t.viscous && t.implicit == implicitStage, false, t.reason};
 }
 
+// Dynamic particles of elastic materials (the elasticity stage's rule; background_pressure's too).
+std::size_t elasticParticleCount(const World& w) {
+  std::size_t count = 0;
+  for (std::size_t i = 0; i < w.particles.size(); ++i)
+    count += w.materials[w.particles.material[i]].kind == MaterialKind::kElastic;
+  return count;
+}
+
+// p_bg [Pa]: the options' value, or the tension's automatic one when that is negative.
+Real chosenBackgroundPressure(const World& w, const PipelineOptions& o, const InterfacialTension& t) {
+  return o.backgroundPressure >= 0 ? o.backgroundPressure : backgroundPressureFor(w, t);
+}
+
 // Rule of the background_pressure stage (sim/effects/background_pressure.h): a closed scene with
 // interfacial tension under INDSPH, whose pressure has no offset of its own.
 StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& o) {
@@ -58,12 +71,11 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
   // Elastic tissue: with the stage the paper's 10 kPa eye (paper_sclera_10kpa.toml, 2 x 0.3 s)
   // lost an oil particle out of the domain at 0.46 s, through the lattice-sampled sclera that
   // already lets fluid in (docs/elasticity.md); without it none left. Not understood; off there.
-  for (std::size_t i = 0; i < w.particles.size(); ++i)
-    if (w.materials[w.particles.material[i]].kind == MaterialKind::kElastic)
-      return {name, false, false,
-              "elastic tissue in the scene: the shift pushed fluid through the sampled tissue "
-              "(a particle left the 10 kPa paper eye at 0.46 s with it, none without; "
-              "docs/interface.md, validation 1b)"};
+  if (elasticParticleCount(w) > 0)
+    return {name, false, false,
+            "elastic tissue in the scene: the shift pushed fluid through the sampled tissue "
+            "(a particle left the 10 kPa paper eye at 0.46 s with it, none without; "
+            "docs/interface.md, validation 1b)"};
   const char* consequence =
       ": a background pressure would pull the surface in; the surface stress then clumps the "
       "interface and under-states sigma (docs/interface.md, validation 1b)";
@@ -78,7 +90,7 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
   why.precision(3);
   why << (o.closedDomain == Force::kOn ? "closed scene (declared)" : "closed scene")
       << " with interfacial tension under INDSPH: p_bg = "
-      << (o.backgroundPressure >= 0 ? o.backgroundPressure : backgroundPressureFor(w, *t))
+      << chosenBackgroundPressure(w, o, *t)
       << " Pa keeps the surface stress from clumping the interface (tensile instability)";
   return {name, true, false, why.str()};
 }
@@ -177,14 +189,11 @@ const std::vector<EffectEntry>& effectRegistry() {
          const InterfacialTension* t = presentTensionPair(w);
          require(t != nullptr, "background_pressure needs an interfacial tension pair in the scene");
          const Real rho = 0.5 * (w.materials[t->materialA].restDensity + w.materials[t->materialB].restDensity);
-         return std::make_unique<BackgroundPressure>(
-             o.backgroundPressure >= 0 ? o.backgroundPressure : backgroundPressureFor(w, *t), rho);
+         return std::make_unique<BackgroundPressure>(chosenBackgroundPressure(w, o, *t), rho);
        }},
       {"elasticity", "implicit corotated linear elasticity (Peer et al. 2018), elastic tissue",
        [](const World& w, const PipelineOptions&) {
-         std::size_t count = 0;
-         for (std::size_t i = 0; i < w.particles.size(); ++i)
-           count += w.materials[w.particles.material[i]].kind == MaterialKind::kElastic;
+         const std::size_t count = elasticParticleCount(w);
          return StageDecision{"elasticity", count > 0, false,
                               count > 0 ? std::to_string(count) + " particles of elastic materials"
                                         : "no particle has an elastic material"};
