@@ -73,9 +73,9 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
   // already lets fluid in (docs/elasticity.md); without it none left. Not understood; off there.
   if (elasticParticleCount(w) > 0)
     return {name, false, false,
-            "elastic tissue in the scene: the shift pushed fluid through the sampled tissue "
-            "(a particle left the 10 kPa paper eye at 0.46 s with it, none without; "
-            "docs/interface.md, validation 1b)"};
+            "elastic material in the scene: the shift pushed fluid through the sampled elastic "
+            "layer (with it a fluid particle left the domain, without it none; docs/interface.md, "
+            "validation 1b)"};
   const char* consequence =
       ": a background pressure would pull the surface in; the surface stress then clumps the "
       "interface and under-states sigma (docs/interface.md, validation 1b)";
