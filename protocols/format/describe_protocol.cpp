@@ -146,6 +146,7 @@ std::string describeProtocol(const Protocol& p) {
           a.solverTolerance.where);
   out.add("accuracy.min_time_step", formatQuantity(a.minTimeStep.value, Dimension::kDuration), a.minTimeStep.where);
   out.add("accuracy.max_time_step", formatQuantity(a.maxTimeStep.value, Dimension::kDuration), a.maxTimeStep.where);
+  out.add("accuracy.surface_stress", quoted(std::string(toString(a.surfaceStress.value))), a.surfaceStress.where);
 
   const OutputsSpec& o = p.outputs;
   out.add("outputs.folder", quoted(o.folder.value), o.folder.where);

@@ -193,6 +193,9 @@ const ParameterSpec kParameters[] = {
   {.key = "accuracy.max_time_step", .kind = K::kQuantity, .dimension = D::kDuration, .displayUnit = "s",
    .min = 0, .max = 1, .minInclusive = false, .defaultText = "preset", .example = "\"1 ms\"",
    .doc = "Largest time step (the CFL and effect limits may choose smaller)."},
+  {.key = "accuracy.surface_stress", .kind = K::kChoice, .choices = kSurfaceStressNames, .defaultText = "auto",
+   .example = "\"symmetric\"",
+   .doc = "Interfacial tension's discretisation: corrected (first-order consistent on disordered particles), symmetric (momentum-exact; INDSPH Laplace jump -16 %), auto: symmetric under WCSPH, corrected otherwise (docs/interface.md)."},
 
   {.key = "outputs", .kind = K::kTable, .defaultText = "all defaults", .doc = "What the run writes."},
   {.key = "outputs.folder", .kind = K::kString, .defaultText = "runs/<protocol file name>",

@@ -320,7 +320,9 @@ void ProtocolParser::readAccuracy(const Table& root, Protocol& p) {
   a.solverTolerance = {preset.solverTolerance, defaultAt_};
   a.minTimeStep = {preset.minTimeStep, defaultAt_};
   a.maxTimeStep = {preset.maxTimeStep, defaultAt_};
+  a.surfaceStress = {SurfaceStressName::kAuto, defaultAt_};
   if (!t) return;
+  a.surfaceStress = choiceOr(*t, "surface_stress", SurfaceStressName::kAuto);
   if (auto v = reader_.quantity(*t, "particle_spacing")) a.particleSpacing = *v;
   if (auto v = reader_.quantity(*t, "solver_tolerance")) a.solverTolerance = *v;
   if (auto v = reader_.quantity(*t, "min_time_step")) a.minTimeStep = *v;

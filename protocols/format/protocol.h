@@ -42,6 +42,10 @@ inline constexpr std::array<std::string_view, 5> kSolverNames = {"indsph", "dfsp
 enum class AccuracyPreset { kDraft, kStandard, kFine };
 inline constexpr std::array<std::string_view, 3> kAccuracyPresetNames = {"draft", "standard",
                                                                          "fine"};
+// Discretisation of the interfacial surface stress (sim's SurfaceStressForm).
+enum class SurfaceStressName { kAuto, kCorrected, kSymmetric };
+inline constexpr std::array<std::string_view, 3> kSurfaceStressNames = {"auto", "corrected",
+                                                                        "symmetric"};
 // Tamponade agents of the material library (anatomy's data/materials), plus "custom".
 inline constexpr std::array<std::string_view, 6> kTamponadeAgentNames = {
     "silicone_oil_1000", "silicone_oil_5000", "densiron_68",
@@ -140,6 +144,7 @@ struct AccuracySpec {
   Located<double> solverTolerance;  // [1] relative density error the pressure solve stops at
   Located<double> minTimeStep;      // [s]
   Located<double> maxTimeStep;      // [s]
+  Located<SurfaceStressName> surfaceStress;  // not part of the presets
 };
 
 // Provisional preset values, to be recalibrated against the engine's accuracy study (issue 5
@@ -189,6 +194,7 @@ std::string_view toString(PostureName v);  // "custom" for kCustom
 std::string_view toString(EffectSetting v);
 std::string_view toString(SolverName v);
 std::string_view toString(AccuracyPreset v);
+std::string_view toString(SurfaceStressName v);
 // The preset called `name` ("draft", "standard", "fine"), or nothing for any other name.
 std::optional<AccuracyPreset> accuracyPresetFromName(std::string_view name);
 

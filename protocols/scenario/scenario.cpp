@@ -389,6 +389,11 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   }
   // The cavity is filled with oil and aqueous: no free surface (background_pressure's rule).
   s.pipelineOptions.closedDomain = sim::Force::kOn;
+  switch (p.accuracy.surfaceStress.value) {
+    case SurfaceStressName::kAuto: s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kAuto; break;
+    case SurfaceStressName::kCorrected: s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kCorrected; break;
+    case SurfaceStressName::kSymmetric: s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kSymmetric; break;
+  }
   s.pipelineOptions.dfsph.densityTolerance = s.accuracy.solverTolerance;
   s.pipelineOptions.dfsph.divergenceTolerance = s.accuracy.solverTolerance;
   // WCSPH: c = 10 x the free-fall speed over the cavity, sqrt(2 g L), bounds density errors near

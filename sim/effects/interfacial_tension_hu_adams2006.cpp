@@ -14,6 +14,20 @@ inline int colourOf(int m, const InterfacialTension& pair) {
 
 }  // namespace
 
+std::string_view surfaceStressFormName(SurfaceStressForm form) {
+  switch (form) {
+    case SurfaceStressForm::kAuto: return "auto";
+    case SurfaceStressForm::kCorrected: return "corrected";
+    case SurfaceStressForm::kSymmetric: return "symmetric";
+  }
+  return "?";
+}
+
+SurfaceStressForm resolveSurfaceStressForm(SurfaceStressForm requested, std::string_view solver) {
+  if (requested != SurfaceStressForm::kAuto) return requested;
+  return solver == "wcsph" ? SurfaceStressForm::kSymmetric : SurfaceStressForm::kCorrected;
+}
+
 void InterfacialTensionHuAdams2006::attach(World& world) {
   const auto& tensions = world.materials.interfacialTensions();
   require(!tensions.empty(),
@@ -39,6 +53,38 @@ Real InterfacialTensionHuAdams2006::maxTimeStep(const World& world) const {
   return dt;
 }
 
+void InterfacialTensionHuAdams2006::computeCorrections(const World& world) {
+  const auto& p = world.particles;
+  const Index n = static_cast<Index>(p.size());
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
+  const auto& wallX = world.walls.x;
+  const auto& wallVolume = world.walls.volume;
+  fluidCorrection_.resize(n);
+  fullCorrection_.resize(n);
+  // Below this |det B| (1 in a full support, ~0.5 in a half space, ~0.125 in a box corner) the
+  // particle has too few neighbours for a first-order gradient: keep the plain sum (L = I).
+  constexpr Real kMinDeterminant = 0.05;
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Mat3 b = Mat3::Zero();
+    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+      const Index j = nf.indices[k];
+      b += (p.mass[j] / p.density[j]) * gradF[k] * (p.x[j] - p.x[i]).transpose();
+    }
+    fluidCorrection_[i] = std::abs(b.determinant()) > kMinDeterminant ? Mat3(b.inverse())
+                                                                      : Mat3::Identity();
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
+      const Index w = nw.indices[k];
+      b += wallVolume[w] * gradB[k] * (wallX[w] - p.x[i]).transpose();
+    }
+    fullCorrection_[i] = std::abs(b.determinant()) > kMinDeterminant ? Mat3(b.inverse())
+                                                                     : Mat3::Identity();
+  }
+}
+
 void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   auto& p = world.particles;
   const Index n = static_cast<Index>(p.size());
@@ -49,9 +95,11 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   const auto& wallVolume = world.walls.volume;
   const auto& wallNormal = world.walls.normal;
   const auto& tensions = world.materials.interfacialTensions();
+  const bool corrected = form_ == SurfaceStressForm::kCorrected;
   stress_.resize(n);
   stressed_.resize(n);
   gradient_.resize(n);
+  if (corrected) computeCorrections(world);
   const Real dimension = 3.0;
 
   for (std::size_t pairIndex = 0; pairIndex < tensions.size(); ++pairIndex) {
@@ -73,6 +121,7 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
         if (cj < 0 || cj == ci) continue;  // (C_j - C_i) = 0 within a phase
         g += (p.mass[j] / p.density[j]) * Real(cj - ci) * gradF[k];
       }
+      if (corrected) g = fluidCorrection_[i] * g;
       const Real norm = g.norm();  // [1/m]
       gradient_[i] = g;
       // Below 1e-6 of the interface's |gradC| ~ 1/h the direction is round-off: no stress.
@@ -81,18 +130,33 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
       stressed_[i] = 1;
     }
     if (pairIndex == 0) *colourGradient_ = gradient_;
-    // Phase 2: divergence of the stress, pairwise antisymmetric; walls mirror the stress.
+    // Phase 2: divergence of the stress; walls mirror the stress.
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       if (colourOf(p.material[i], pair) < 0) continue;
       const Real vi = p.mass[i] / p.density[i];
       Vec3 f = Vec3::Zero();  // [N]
-      for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-        const Index j = nf.indices[k];
-        if (!stressed_[i] && !stressed_[j]) continue;  // both zero (includes non-members)
-        const Mat3 sum = stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
-                                      : stress_[j];
-        f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
+      if (corrected) {
+        // Difference form sum_j V_j (Pi_j - Pi_i) L_i gradW_ij: zero for a uniform stress on any
+        // particle order (the symmetric sum is not: 2 Pi_i sum_j V_j gradW_ij remains).
+        // The correction acts on the kernel gradient (the derivative's index), not on the result.
+        const Mat3 zero = Mat3::Zero();
+        const Mat3& own = stressed_[i] ? stress_[i] : zero;
+        const Mat3& correction = fullCorrection_[i];
+        for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+          const Index j = nf.indices[k];
+          if (!stressed_[i] && !stressed_[j]) continue;
+          const Mat3 difference = (stressed_[j] ? stress_[j] : zero) - own;
+          f += vi * (p.mass[j] / p.density[j]) * (difference * (correction * gradF[k]));
+        }
+      } else {
+        for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+          const Index j = nf.indices[k];
+          if (!stressed_[i] && !stressed_[j]) continue;  // both zero (includes non-members)
+          const Mat3 sum = stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
+                                        : stress_[j];
+          f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
+        }
       }
       if (stressed_[i] && nw.count(i) > 0) {
         // Mirror image of the stress across the wall: Pi_b = R Pi_i R with the reflection
@@ -112,7 +176,10 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
           const Mat3 reflect = Mat3::Identity() - 2.0 * m * m.transpose();
           mirrored = reflect * stress_[i] * reflect;
         }
-        f += vi * ((stress_[i] + mirrored) * wallSum);
+        if (corrected)
+          f += vi * ((mirrored - stress_[i]) * (fullCorrection_[i] * wallSum));
+        else
+          f += vi * ((stress_[i] + mirrored) * wallSum);
       }
       p.a[i] += f / p.mass[i];
     }

@@ -170,18 +170,22 @@ const std::vector<EffectEntry>& effectRegistry() {
        },
        [](const World&, const PipelineOptions&) { return std::make_unique<WallAdhesionYoung>(); }},
       {"interfacial_tension", "surface stress between two liquids (Hu & Adams 2006)",
-       [](const World& w, const PipelineOptions&) {
+       [](const World& w, const PipelineOptions& o) {
          std::ostringstream why;
          const InterfacialTension* t = presentTensionPair(w);
          const bool on = t != nullptr;
          if (on)
            why << "two liquid phases with sigma = " << t->sigma << " N/m ('"
-               << w.materials[t->materialA].name << "', '" << w.materials[t->materialB].name << "')";
+               << w.materials[t->materialA].name << "', '" << w.materials[t->materialB].name
+               << "'); " << surfaceStressFormName(resolveSurfaceStressForm(o.surfaceStress, o.solver))
+               << " surface stress"
+               << (o.surfaceStress == SurfaceStressForm::kAuto ? " (auto: by the solver)" : "");
          if (!on) why << "no two liquid phases with an interfacial tension";
          return StageDecision{"interfacial_tension", on, false, why.str()};
        },
-       [](const World&, const PipelineOptions&) {
-         return std::make_unique<InterfacialTensionHuAdams2006>();
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<InterfacialTensionHuAdams2006>(
+             resolveSurfaceStressForm(o.surfaceStress, o.solver));
        }},
       {"background_pressure", "constant pressure offset against the surface stress's clumping",
        backgroundPressureDecision,

@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/effects/viscosity_weiler2018.h"
 #include "sim/fluid/dfsph_bender2017.h"
 #include "sim/fluid/iisph_ihmsen2013.h"
@@ -36,6 +37,10 @@ struct PipelineOptions {
   ElasticityParameters elasticity;
   bool wallFriction = true;              // no-slip viscous walls
   Real velocitySmoothing = 0.05;         // [1] XSPH strength for incompressible solvers (0 = off)
+  // Discretisation of the interfacial surface stress (sim/effects/interfacial_tension_hu_adams2006.h):
+  // corrected (first-order consistent on any particle order), symmetric (momentum-exact), or
+  // auto (by the solver: resolveSurfaceStressForm).
+  SurfaceStressForm surfaceStress = SurfaceStressForm::kAuto;
   // [Pa] background_pressure stage's p_bg; < 0: automatic, kBackgroundPressurePerTension sigma / d
   // (sim/effects/background_pressure.h)
   Real backgroundPressure = -1;

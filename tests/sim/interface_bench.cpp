@@ -82,7 +82,8 @@ int oscillationCsv(const char* file, Real radius, Real eps, bool velocityStart) 
 // eps=0.05 (P2 amplitude), start=velocity|displace, relax=100 (velocity-reset steps), xsph=0,
 // alpha=0.05 (WCSPH), mu=1e-3, box=2 (half-width / R), expansion=1 (INDSPH corrects expansion
 // in the bulk), tol=, miniter=, maxiter=, warm=, omega= (IndsphParameters), bg=off|PA (INDSPH
-// background pressure, default automatic 2 sigma / d), csv=FILE (Q(t)).
+// background pressure, default automatic 2 sigma / d), form=auto|corrected|symmetric (surface
+// stress), csv=FILE (Q(t)).
 int oscillation(testing::OscillationSpec o, const std::string& csv) {
   const Real period0 = 2 * std::numbers::pi / testing::lambOmega(2, o.sigma, o.radius, 970, 1000);
   std::printf(
@@ -382,6 +383,10 @@ int main(int argc, char** argv) {
         o.relaxVelocityFactor = std::atof(value.c_str());
       else if (key == "bg")
         o.backgroundPressure = value == "off" ? 0.0 : std::atof(value.c_str());
+      else if (key == "form")
+        o.surfaceStress = value == "corrected"   ? SurfaceStressForm::kCorrected
+                          : value == "symmetric" ? SurfaceStressForm::kSymmetric
+                                                 : SurfaceStressForm::kAuto;
       else {
         std::fprintf(stderr, "unknown oscillation option '%s'\n", argv[k]);
         return 2;
@@ -429,7 +434,7 @@ int main(int argc, char** argv) {
       "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [solver=indsph|wcsph] "
       "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] "
       "[expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] "
-      "[jitter=0] [divergence=1] [excess=E] [relaxfactor=0] [bg=off|PA] [csv=FILE]\n"
+      "[jitter=0] [divergence=1] [excess=E] [relaxfactor=0] [bg=off|PA] [form=auto|corrected|symmetric] [csv=FILE]\n"
       "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
       "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
       "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm] "

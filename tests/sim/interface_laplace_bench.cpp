@@ -7,7 +7,8 @@
 //   sim_laplace_bench [solver=indsph] [R=3 (mm)] [perR=6] [sigma=0.04] [taus=1.5] [excess=0]
 //                     [layers=0] [analytic=0] [bg=auto|off|PA] [bgk=K (K sigma / d)] [dtmax=S]
 //                     [warm=] [tol=] [miniter=] [maxiter=] [expansion=0|1] [divergence=0|1]
-//                     [omega=] [xsph=]
+//                     [omega=] [xsph=] [jitter=0 (d, start lattice)]
+//                     [form=auto|corrected|symmetric (surface stress)]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -74,7 +75,7 @@ int main(int argc, char** argv) {
   std::string solver = "indsph";
   Real perR = 6, taus = 1.5, excess = 0.0, sigma = 0.04, radius = 0.003;
   int layers = 0;
-  Real dtmax = 0, bgk = 0;
+  Real dtmax = 0, bgk = 0, jitter = 0;
   std::string background = "auto";
   bool analytic = false;
   PipelineOptions options;
@@ -107,6 +108,11 @@ int main(int argc, char** argv) {
     else if (key == "sigma") sigma = std::atof(v.c_str());
     else if (key == "R") radius = std::atof(v.c_str()) * 1e-3;
     else if (key == "dtmax") dtmax = std::atof(v.c_str());
+    else if (key == "jitter") jitter = std::atof(v.c_str());
+    else if (key == "form")
+      options.surfaceStress = v == "corrected"   ? SurfaceStressForm::kCorrected
+                              : v == "symmetric" ? SurfaceStressForm::kSymmetric
+                                                 : SurfaceStressForm::kAuto;
     else {
       std::fprintf(stderr, "unknown option '%s' (see the comment at the top of interface_laplace_bench.cpp)\n", argv[k]);
       return 2;
@@ -122,6 +128,9 @@ int main(int argc, char** argv) {
   s.massExcess = excess;
   s.wallLayers = layers;
   s.maxTimeStep = dtmax;
+  s.jitter = jitter;
+  // The box is full: a jittered start reads as a free surface to the automatic rule.
+  if (jitter > 0) options.closedDomain = Force::kOn;
   if (bgk > 0) options.backgroundPressure = bgk * sigma / s.spacing;
   if (background == "off") options.backgroundPressure = 0;
   else if (background != "auto") options.backgroundPressure = std::atof(background.c_str());
@@ -164,6 +173,17 @@ int main(int argc, char** argv) {
     }
     Real vmax = 0;
     for (const auto& v : w.particles.v) vmax = std::max(vmax, v.norm());
+    // Net explicit force over all particles against the sum of magnitudes: 0 for a
+    // momentum-conserving force field (walls aside), and the droplet's drift from the box centre.
+    Vec3 net = Vec3::Zero();
+    Real magnitude = 0;
+    for (Index i = 0; i < w.particles.size(); ++i) {
+      net += w.particles.mass[i] * w.particles.a[i];
+      magnitude += w.particles.mass[i] * w.particles.a[i].norm();
+    }
+    std::printf("  net force / sum |force| %.2e, droplet centre drift %.3g d\n",
+                net.norm() / std::max(magnitude, Real(1e-300)),
+                (centreOfMaterial(w, scene.oil) - boxCentre).norm() / w.particleSpacing());
     std::printf("step %4ld t %.4f dt %.2e in %.2f out %.2f jump/expected %.3f vmax %.3g iters %d "
                 "demanded %.3f area/4piR2 %.3f stray oil %d aqueous %d\n",
                 w.stepCount, w.time, pipeline.lastTimeStep().dt, jump.inside, jump.outside,

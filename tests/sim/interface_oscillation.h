@@ -76,6 +76,7 @@ struct OscillationSpec {
   IndsphParameters indsph;          // INDSPH solve (tolerance, iterations, warm start)
   Real maxTimeStep = 0;             // [s] cap on the step (0: the pipeline's limits only)
   Real backgroundPressure = -1;     // [Pa] PipelineOptions::backgroundPressure (< 0 automatic)
+  SurfaceStressForm surfaceStress = SurfaceStressForm::kAuto;  // PipelineOptions::surfaceStress
   Real massExcess = -1;             // [1] DropletSpec::massExcess; < 0: 0.05 for WCSPH, 0 otherwise
   Real jitter = 0;  // [1] lattice positions moved by up to +-jitter d per axis before
                     // the relaxation (fixed seed): a disordered start
@@ -154,6 +155,7 @@ inline OscillationRun runOscillation(const OscillationSpec& o, bool verbose = fa
   options.wcsph.speedOfSound = 12 * std::sqrt(2 * o.sigma / scene.radius / 1000);
   options.wcsph.artificialViscosity = o.artificialViscosity;
   options.backgroundPressure = o.backgroundPressure;
+  options.surfaceStress = o.surfaceStress;
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
   const auto t0 = std::chrono::steady_clock::now();

@@ -94,32 +94,67 @@ TEST_CASE("Capillary time-step limit is Brackbill's sqrt(rho_avg d^3 / (2 pi sig
   CHECK(tension.maxTimeStep(w) == Approx(expected).epsilon(1e-12));
 }
 
-TEST_CASE("Interfacial stress on a lattice droplet integrates to 2 sigma / R and conserves "
-          "momentum",
+namespace {
+
+struct StressSums {
+  Real expected = 0;  // [Pa] 2 sigma / R of the lattice droplet's radius
+  Real jump = 0;   // [Pa] sum_i -m_i a_i.e_r / (4 pi r_i^2): the jump the force field asks for
+  Real net = 0;    // [N] |sum m a|
+  Real scale = 0;  // [N] sum |m a|
+};
+
+// The tension alone on a free droplet: pressure jump the force field asks for, dp = -int f_r dr =
+// sum_i -m_i a_i.e_r / (4 pi r_i^2) (force per volume summed over spherical shells), and the net
+// force against the sum of magnitudes.
+StressSums tensionSums(Real perR, SurfaceStressForm form) {
+  testing::DropletSpec s;
+  s.radius = 0.003;
+  s.spacing = s.radius / perR;
+  s.halfWidth = s.radius + 3 * 2 * s.spacing;  // interface (R +- h) more than h from the walls
+  s.sigma = 0.04;
+  s.massExcess = 0;
+  auto scene = testing::dropletScene(s);
+  World& w = *scene.world;
+  InterfacialTensionHuAdams2006 tension(form);
+  applyAlone(w, tension);
+  StressSums sums;
+  sums.expected = 2 * 0.04 / scene.radius;
+  Vec3 momentum = Vec3::Zero();
+  for (Index i = 0; i < w.particles.size(); ++i) {
+    const Vec3 r = w.particles.x[i] - scene.centre;
+    const Vec3 f = w.particles.mass[i] * w.particles.a[i];
+    sums.jump -= f.dot(r.normalized()) / (4 * std::numbers::pi * r.squaredNorm());
+    momentum += f;
+    sums.scale += f.norm();
+  }
+  sums.net = momentum.norm();
+  return sums;
+}
+
+}  // namespace
+
+TEST_CASE("Interfacial stress on a lattice droplet integrates to 2 sigma / R; the symmetric form "
+          "conserves momentum exactly",
           "[unit][interface]") {
   for (const Real perR : {6.0, 8.0}) {
-    auto scene = freeDroplet(perR);
-    World& w = *scene.world;
-    InterfacialTensionHuAdams2006 tension;
-    applyAlone(w, tension);
-    // Pressure jump the force field asks for: dp = -int f_r dr = sum_i -m_i a_i.e_r / (4 pi r_i^2)
-    // (force per volume summed over spherical shells).
-    Real jump = 0, scale = 0;
-    Vec3 momentum = Vec3::Zero();
-    for (Index i = 0; i < w.particles.size(); ++i) {
-      const Vec3 r = w.particles.x[i] - scene.centre;
-      const Vec3 f = w.particles.mass[i] * w.particles.a[i];
-      jump -= f.dot(r.normalized()) / (4 * std::numbers::pi * r.squaredNorm());
-      momentum += f;
-      scale += f.norm();
-    }
-    INFO("d = R/" << perR << ": jump " << jump << " Pa, 2 sigma / R " << 2 * 0.04 / scene.radius);
-    // Measured 0.03 % (R/6) and 0.45 % (R/8) off; 2 % allows the lattice's departure from a
-    // sphere, while a wrong factor in the stress (1/D, sign, |gradC|) is off by 30 % or more.
-    CHECK(jump == Approx(2 * 0.04 / scene.radius).epsilon(0.02));
-    // Every pair term is antisymmetric and no stressed particle is near a wall: sum m a = 0 to
-    // round-off (relative to the sum of |m a|).
-    CHECK(momentum.norm() < 1e-12 * scale);
+    const StressSums symmetric = tensionSums(perR, SurfaceStressForm::kSymmetric);
+    const StressSums corrected = tensionSums(perR, SurfaceStressForm::kCorrected);
+    const Real expected = symmetric.expected;
+    INFO("d = R/" << perR << ": jump symmetric " << symmetric.jump << " Pa, corrected "
+                  << corrected.jump << " Pa, 2 sigma / R " << expected);
+    // Symmetric: measured 0.03 % (R/6) and 0.45 % (R/8) off; 2 % allows the lattice's departure
+    // from a sphere, while a wrong factor in the stress (1/D, sign, |gradC|) is off by 30 % or more.
+    CHECK(symmetric.jump == Approx(expected).epsilon(0.02));
+    // Corrected: measured -5.1 % (R/6) and -6.1 % (R/8). On the lattice the kernel's gradient
+    // moment sum_j V_j gradW_ij (x_j - x_i)^T is ~1.02 I, not I; the symmetric form keeps that
+    // factor (and lands on 2 sigma / R by it), the correction removes it and shows the diffuse
+    // layer's own discretisation error. 10 %: the issue's Laplace tolerance; a wrong factor is
+    // still off by 30 % or more. (On relaxed, disordered droplets, where the eye runs, the
+    // corrected form is the accurate one: validation 1 of docs/interface.md.)
+    CHECK(corrected.jump == Approx(expected).epsilon(0.10));
+    // Every pair term of the symmetric form is antisymmetric and no stressed particle is near a
+    // wall: sum m a = 0 to round-off (relative to the sum of |m a|).
+    CHECK(symmetric.net < 1e-12 * symmetric.scale);
   }
 }
 
