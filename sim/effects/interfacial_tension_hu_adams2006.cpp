@@ -4,6 +4,8 @@
 #include <limits>
 #include <numbers>
 
+#include "sim/effects/gradient_correction.h"
+
 namespace sim {
 namespace {
 
@@ -54,34 +56,14 @@ Real InterfacialTensionHuAdams2006::maxTimeStep(const World& world) const {
 }
 
 void InterfacialTensionHuAdams2006::computeCorrections(const World& world) {
-  const auto& p = world.particles;
-  const Index n = static_cast<Index>(p.size());
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
-  const auto& wallX = world.walls.x;
-  const auto& wallVolume = world.walls.volume;
+  const Index n = static_cast<Index>(world.particles.size());
   fluidCorrection_.resize(n);
   fullCorrection_.resize(n);
-  // Below this |det B| (1 in a full support, ~0.5 in a half space, ~0.125 in a box corner) the
-  // particle has too few neighbours for a first-order gradient: keep the plain sum (L = I).
-  constexpr Real kMinDeterminant = 0.05;
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    Mat3 b = Mat3::Zero();
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
-      b += (p.mass[j] / p.density[j]) * gradF[k] * (p.x[j] - p.x[i]).transpose();
-    }
-    fluidCorrection_[i] = std::abs(b.determinant()) > kMinDeterminant ? Mat3(b.inverse())
-                                                                      : Mat3::Identity();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-      const Index w = nw.indices[k];
-      b += wallVolume[w] * gradB[k] * (wallX[w] - p.x[i]).transpose();
-    }
-    fullCorrection_[i] = std::abs(b.determinant()) > kMinDeterminant ? Mat3(b.inverse())
-                                                                     : Mat3::Identity();
+    fluidCorrection_[i] = gradientCorrection(world, i, false);
+    fullCorrection_[i] = world.wallNeighbors().count(i) > 0 ? gradientCorrection(world, i, true)
+                                                            : fluidCorrection_[i];
   }
 }
 

@@ -16,8 +16,9 @@
 // i.e. a line force, at every wall edge and corner, which pushed corner particles through a
 // box's walls.)
 //
-// Discretisation (the same pair form as the fluid-fluid stress, so both line forces are
-// measured by one operator):
+// Discretisation (the symmetric pair form of the fluid-fluid stress; under the incompressible
+// solvers that stress uses its corrected form instead, and this stage keeps the symmetric sum,
+// which measured better there: sim/effects/gradient_correction.h):
 //   A_b      area of wall particle b = 1 / sum_b' W2(x_b - x_b')   (2-D cubic spline, own support)
 //   S_b      = sum_i V_i W_ib, how much fluid the wall particle sees this step
 //   delta_i  = sum_b (A_b / S_b) W_ib: a wall delta function whose integral over the fluid on
@@ -29,9 +30,9 @@
 // Layered walls (sim/boundary/wall_layers.h): only the surface layer is the wetted surface.
 // Measured (docs/interface.md, validation 3): the static line force is 1.2 sigma cos(theta) at
 // d = R/6 (one Akinci layer; 1.29 / 1.07 with three lattice layers, layer on the aqueous / oil).
-// With INDSPH, three wall layers and a jittered start, a sessile droplet (R = 6 d) reaches
-// 59.4 / 87.0 / 118.4 deg for 60 / 90 / 120 requested (the issue's +-5 deg) but settles 6-11 deg
-// towards 90 deg for 30 and 150 (36-39 and 138.7 deg); with WCSPH and one Akinci layer
+// With INDSPH (corrected surface stress), three wall layers and a jittered start, a sessile
+// droplet (R = 6 d) reaches 33.5 / 59.7 / 87.0 / 120.2 / 144.1 deg for 30 / 60 / 90 / 120 / 150
+// requested (the issue's +-5 deg except 150); with WCSPH and one Akinci layer
 // 49 / 76 / 97 / 122 / 140 deg for 30 / 60 / 90 / 120 / 150 (0.05 s, older cap fit).
 //
 // Convention: the angle in ContactAngle is measured through the fluid it names; the toolkit's

@@ -136,6 +136,8 @@ std::vector<BadCase> badCases() {
        "did you mean 'elasticity'?", 13, 1},
       {"unknown accuracy preset", withLine(11, "duration = \"1 min\"\n[accuracy]\npreset = \"quick\""),
        "unknown preset 'quick' for accuracy.preset \u2014 choose one of 'draft', 'standard', 'fine'", 13, 10},
+      {"unknown surface stress form", withLine(11, "duration = \"1 min\"\n[accuracy]\nsurface_stress = \"exact\""),
+       "unknown surface_stress 'exact' for accuracy.surface_stress \u2014 choose one of 'auto', 'corrected', 'symmetric'", 13, 18},
       {"time-step bounds crossed", withLine(11, "duration = \"1 min\"\n[accuracy]\nmin_time_step = \"1 s\""),
        "accuracy.min_time_step (1 s) is larger than accuracy.max_time_step (0.001 s)", 13, 17},
       {"bad field name", withLine(11, "duration = \"1 min\"\n[outputs]\nfields = [\"Position\"]"),
@@ -239,6 +241,8 @@ TEST_CASE("values, defaults and locations are kept", "[unit][protocol]") {
   CHECK_FALSE(p.accuracy.particleSpacing.where.isInFile());
   CHECK(p.accuracy.maxTimeStep.value == Approx(1e-3).epsilon(1e-12));
   CHECK(p.accuracy.maxTimeStep.where.line == 16);
+  CHECK(p.accuracy.surfaceStress.value == protocols::SurfaceStressName::kAuto);  // not in the file
+  CHECK_FALSE(p.accuracy.surfaceStress.where.isInFile());
   // Defaults.
   CHECK(p.solver.value == protocols::SolverName::kIndsph);
   CHECK(p.schedule.gravity.value == 9.80665);

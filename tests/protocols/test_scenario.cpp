@@ -189,6 +189,7 @@ TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenari
   const std::string rest = "[schedule]\n[[schedule.postures]]\nname = \"upright\"\nduration = \"1 s\"\n"
                            "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n";
   std::ofstream(dir / "off.toml") << base << "fill = \"80 %\"\n" << rest
+                                  << "surface_stress = \"symmetric\"\n"
                                   << "[effects]\nviscosity = false\nimplicit_viscosity = false\n";
   std::ofstream(dir / "full.toml") << base << "fill = 1.0\n" << rest;
   std::ofstream(dir / "missing.toml") << base << "fill = \"80 %\"\n" << rest
@@ -197,6 +198,7 @@ TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenari
     Scenario s = assembleScenario(parseProtocol((dir / "off.toml").string()));
     CHECK(s.pipelineOptions.forced.at("viscosity") == sim::Force::kOff);
     CHECK(s.pipelineOptions.forced.at("implicit_viscosity") == sim::Force::kOff);
+    CHECK(s.pipelineOptions.surfaceStress == sim::SurfaceStressForm::kSymmetric);
     const sim::Pipeline pipeline = sim::assemblePipeline(*s.world, s.pipelineOptions);
     CHECK_FALSE(pipeline.hasStage("viscosity"));
     CHECK_FALSE(pipeline.hasStage("implicit_viscosity"));
@@ -204,6 +206,7 @@ TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenari
     // steps at this spacing; the decision is tested in tests/sim/test_pipeline.cpp).
     Scenario t = assembleScenario(parseProtocol((dir / "full.toml").string()));
     CHECK(t.pipelineOptions.forced.empty());
+    CHECK(t.pipelineOptions.surfaceStress == sim::SurfaceStressForm::kAuto);
     const sim::Pipeline full = sim::assemblePipeline(*t.world, t.pipelineOptions);
     CHECK(full.hasStage("implicit_viscosity"));
     CHECK_FALSE(full.hasStage("viscosity"));

@@ -16,23 +16,24 @@ namespace {
 // wall continues, the first fluid layer sits in the wall lattice's hollows and the contact line
 // locks (measured from the hemisphere: 120 deg requested stalled at 110 deg, 150 at 128 deg).
 // 0.1 s is four capillary times sqrt(rho R^3 / sigma) = 26 ms.
-testing::SessileResult settle(Real theta) {
+testing::SessileResult settle(Real theta, Real tEnd = 0.1) {
   testing::SessileCase c;
   c.theta = theta;
   c.solver = "indsph";
   c.wallLayers = 3;
   c.jitter = 0.2;
-  c.tEnd = 0.1;
+  c.tEnd = tEnd;
   return testing::runSessile(c);
 }
 
 // +-5 deg: the acceptance for 30-150 deg. The cap fit (the cap of the droplet's volume,
 // sim/measure/sessile_contact_angle.h) reads static lattice caps of 30-150 deg within 1.3 deg
 // (interface_units.cpp) and the start hemisphere at 89.8 deg; the 90 deg run (no wall force at
-// all) ends at 87.5 deg, the bias of the tension's wall treatment at this resolution (R = 6 d).
-// Measured (window mean over the last fifth): 59.4 deg for 60, 118.4 deg for 120.
-void checkSessileAngle(Real requested) {
-  const testing::SessileResult r = settle(requested);
+// all) ends at 87.0 deg, the bias of the tension's wall treatment at this resolution (R = 6 d).
+// Measured (window mean over the last fifth) with the corrected surface stress (INDSPH's
+// automatic choice): 59.7 deg for 60, 120.2 deg for 120 (0.1 s); 33.5 deg for 30 (0.3 s).
+void checkSessileAngle(Real requested, Real tEnd = 0.1) {
+  const testing::SessileResult r = settle(requested, tEnd);
   std::printf("sessile %.0f deg requested: %.1f deg measured (%.1f at the end), %ld steps, %.1f s\n",
               requested, r.angle, r.finalAngle, r.steps, r.seconds);
   REQUIRE(r.adhesion);
@@ -52,6 +53,19 @@ TEST_CASE("Sessile droplet retracts to a 120 deg contact angle (through oil)",
   checkSessileAngle(120.0);
 }
 
-// 30, 90 and 150 deg (and the +-10 deg band outside 30-150) are benchmark runs:
-// `sim_interface_bench sessile THETA 0.1 0 indsph 3 6 0.005 0.2` (docs/interface.md). 30 deg
-// (settles at 36-39) and 150 deg (138.7 after 0.3 s) are not met, so they are not asserted.
+// 30 deg from the hemisphere: the contact line travels 60 deg and the flat cap (2.7 d tall)
+// overlaps the wall's wetted layer over its whole base, the hardest case of the 30-150 band.
+// 0.3 s (12 capillary times): at 0.2 s the window still reads 34.7 deg (coming down), at 0.3 s
+// 33.5; started as the 30 deg cap the droplet retracts to 31.6 deg in 0.3 s, so the balance lies
+// between the two. With the symmetric (neutral-wall) surface stress the cap retracted to 34.9 deg
+// in 0.3 s, and the hemisphere spread only to 39.2 deg in 0.1 s (before the background pressure):
+// the one-sided colour gradient at the wall is what brings 30 deg within 5 deg.
+TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
+          "[validation][interface][contact_angle]") {
+  checkSessileAngle(30.0, 0.3);
+}
+
+// 90 and 150 deg (and the +-10 deg band outside 30-150) are benchmark runs:
+// `sim_interface_bench sessile THETA 0.3 0 indsph 3 6 0.005 0.2` (docs/interface.md, validation
+// 3). 150 deg settles at 144.0-144.2 deg over 0.2-0.5 s (-5.9; 137.9 with the symmetric form) and
+// 165 deg, started as the 150 deg cap, at 149.8 (-15): not met, so not asserted.
