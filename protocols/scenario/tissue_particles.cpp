@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -28,6 +29,12 @@ namespace {
 
 [[noreturn]] void fail(const SourceLocation& where, const std::string& what, const std::string& fix) {
   throw ProtocolError({Diagnostic{where, what, fix}});
+}
+
+// EXPERIMENT (face brief, not to be committed): gap overrides from the environment.
+double envOr(const char* name, double fallback) {
+  const char* v = std::getenv(name);
+  return v ? std::atof(v) : fallback;
 }
 
 std::string mm(double metres) { return formatNumber(metres * 1e3, 3) + " mm"; }
@@ -280,7 +287,7 @@ void addTissues(const Protocol& p, Scenario& s) {
         const sim::Vec3 q = cavity.closestPoint(x);
         const double r = (x - q).norm();  // [m] from the cavity wall
         const double anatomical = shell->thicknessAt(q);
-        if (scleraSampled && r < std::max(anatomical, minLayer) + 0.5 * d) continue;
+        if (scleraSampled && r < std::max(anatomical, minLayer) + envOr("FACE_FAT_GAP", 0.5) * d) continue;
         points.push_back(x);
         anchored.push_back(e.orbitalFat->anchoring.value == Anchoring::kBackFace &&
                            r > anatomical + fatParameters.thickness - d);
@@ -340,7 +347,7 @@ void addTissues(const Protocol& p, Scenario& s) {
       coveredNormal.push_back(walls.normal[w]);
       coveredTag.push_back(walls.tag[w]);
       if (!scleraBackstop) continue;
-      const sim::Vec3 x = walls.x[w] + (layer + kBackstopGapSpacings * d) * walls.normal[w];
+      const sim::Vec3 x = walls.x[w] + (layer + envOr("FACE_BACKSTOP_GAP", kBackstopGapSpacings) * d) * walls.normal[w];
       if (nearFat(x)) continue;
       added.push_back(x);
       addedNormal.push_back(walls.normal[w]);
@@ -363,7 +370,7 @@ void addTissues(const Protocol& p, Scenario& s) {
         if (!scleraGrid.anyWithin(x, 1.5 * d)) continue;
         const long c = coveredGrid.nearest(x, 4.0 * d);
         const double layer = c >= 0 ? coveredLayer[static_cast<std::size_t>(c)] : kMinTissueLayerSpacings * d;
-        const double depth = layer + kBackstopGapSpacings * d;  // [m]
+        const double depth = layer + envOr("FACE_BACKSTOP_GAP", kBackstopGapSpacings) * d;  // [m]
         const auto put = [&](const sim::Vec3& at, const sim::Vec3& normal) {
           added.push_back(at);
           addedNormal.push_back(normal);
