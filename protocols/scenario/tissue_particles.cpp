@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -29,12 +28,6 @@ namespace {
 
 [[noreturn]] void fail(const SourceLocation& where, const std::string& what, const std::string& fix) {
   throw ProtocolError({Diagnostic{where, what, fix}});
-}
-
-// EXPERIMENT (face brief, not to be committed): gap overrides from the environment.
-double envOr(const char* name, double fallback) {
-  const char* v = std::getenv(name);
-  return v ? std::atof(v) : fallback;
 }
 
 std::string mm(double metres) { return formatNumber(metres * 1e3, 3) + " mm"; }
@@ -287,7 +280,10 @@ void addTissues(const Protocol& p, Scenario& s) {
         const sim::Vec3 q = cavity.closestPoint(x);
         const double r = (x - q).norm();  // [m] from the cavity wall
         const double anatomical = shell->thicknessAt(q);
-        if (scleraSampled && r < std::max(anatomical, minLayer) + envOr("FACE_FAT_GAP", 0.5) * d) continue;
+        // From the sclera's outer surface on, without a gap: both are points of the one lattice, so
+        // the fat's front continues the sclera's outer layer at rest spacing (a gap there is a p = 0
+        // free surface inside the pressurised globe, which drew fluid through the sclera).
+        if (scleraSampled && r <= std::max(anatomical, minLayer)) continue;
         points.push_back(x);
         anchored.push_back(e.orbitalFat->anchoring.value == Anchoring::kBackFace &&
                            r > anatomical + fatParameters.thickness - d);
@@ -321,7 +317,9 @@ void addTissues(const Protocol& p, Scenario& s) {
       }
       r.followsId[k] = sclera.firstId + static_cast<std::int32_t>(nearest);
     }
-    // The lens/IOL cap keeps its wall; the wall over an anchored sclera moves behind it (backstop).
+    // The lens/IOL cap keeps its wall; the wall over an anchored sclera moves behind it (backstop),
+    // kBackstopGapSpacings d beyond the layer's outer surface: within the kernel's support of the
+    // outer (anchored) layer, outside that of every free particle.
     sim::WallParticles& walls = s.world->walls;
     // Where elastic fat lies behind the sclera, it holds the globe: no backstop there.
     std::vector<sim::Vec3> fat;
@@ -347,7 +345,7 @@ void addTissues(const Protocol& p, Scenario& s) {
       coveredNormal.push_back(walls.normal[w]);
       coveredTag.push_back(walls.tag[w]);
       if (!scleraBackstop) continue;
-      const sim::Vec3 x = walls.x[w] + (layer + envOr("FACE_BACKSTOP_GAP", kBackstopGapSpacings) * d) * walls.normal[w];
+      const sim::Vec3 x = walls.x[w] + (layer + kBackstopGapSpacings * d) * walls.normal[w];
       if (nearFat(x)) continue;
       added.push_back(x);
       addedNormal.push_back(walls.normal[w]);
@@ -370,7 +368,7 @@ void addTissues(const Protocol& p, Scenario& s) {
         if (!scleraGrid.anyWithin(x, 1.5 * d)) continue;
         const long c = coveredGrid.nearest(x, 4.0 * d);
         const double layer = c >= 0 ? coveredLayer[static_cast<std::size_t>(c)] : kMinTissueLayerSpacings * d;
-        const double depth = layer + envOr("FACE_BACKSTOP_GAP", kBackstopGapSpacings) * d;  // [m]
+        const double depth = layer + kBackstopGapSpacings * d;  // [m]
         const auto put = [&](const sim::Vec3& at, const sim::Vec3& normal) {
           added.push_back(at);
           addedNormal.push_back(normal);
@@ -439,8 +437,8 @@ void addTissues(const Protocol& p, Scenario& s) {
     if (backstopCount > 0)
       s.notes.push_back("sclera held at its outer surface: a rigid wall (the orbit) stands " +
                         formatNumber(kBackstopGapSpacings, 2) +
-                        " particle spacings behind it where no orbital fat is, so fluid that passes the tissue layer "
-                        "stays in the globe");
+                        " particle spacing behind it where no orbital fat is, so its anchored layer is backed within "
+                        "the kernel's support (no empty gap, i.e. no p = 0 free surface, behind the pressurised globe)");
     if (collarCount > 0)
       s.notes.push_back("sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL cap): " +
                         std::to_string(sclera.limbusClamped) + " sclera particles within " +
