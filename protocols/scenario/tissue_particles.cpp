@@ -280,7 +280,10 @@ void addTissues(const Protocol& p, Scenario& s) {
         const sim::Vec3 q = cavity.closestPoint(x);
         const double r = (x - q).norm();  // [m] from the cavity wall
         const double anatomical = shell->thicknessAt(q);
-        if (scleraSampled && r < std::max(anatomical, minLayer) + 0.5 * d) continue;
+        // From the sclera's outer surface on, without a gap: both are points of the one lattice, so
+        // the fat's front continues the sclera's outer layer at rest spacing (a gap there is a p = 0
+        // free surface inside the pressurised globe, which drew fluid through the sclera).
+        if (scleraSampled && r <= std::max(anatomical, minLayer)) continue;
         points.push_back(x);
         anchored.push_back(e.orbitalFat->anchoring.value == Anchoring::kBackFace &&
                            r > anatomical + fatParameters.thickness - d);
@@ -314,7 +317,9 @@ void addTissues(const Protocol& p, Scenario& s) {
       }
       r.followsId[k] = sclera.firstId + static_cast<std::int32_t>(nearest);
     }
-    // The lens/IOL cap keeps its wall; the wall over an anchored sclera moves behind it (backstop).
+    // The lens/IOL cap keeps its wall; the wall over an anchored sclera moves behind it (backstop),
+    // kBackstopGapSpacings d beyond the layer's outer surface: within the kernel's support of the
+    // outer (anchored) layer, outside that of every free particle.
     sim::WallParticles& walls = s.world->walls;
     // Where elastic fat lies behind the sclera, it holds the globe: no backstop there.
     std::vector<sim::Vec3> fat;
@@ -432,8 +437,8 @@ void addTissues(const Protocol& p, Scenario& s) {
     if (backstopCount > 0)
       s.notes.push_back("sclera held at its outer surface: a rigid wall (the orbit) stands " +
                         formatNumber(kBackstopGapSpacings, 2) +
-                        " particle spacings behind it where no orbital fat is, so fluid that passes the tissue layer "
-                        "stays in the globe");
+                        " particle spacing behind it where no orbital fat is, so its anchored layer is backed within "
+                        "the kernel's support (no empty gap, i.e. no p = 0 free surface, behind the pressurised globe)");
     if (collarCount > 0)
       s.notes.push_back("sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL cap): " +
                         std::to_string(sclera.limbusClamped) + " sclera particles within " +

@@ -17,15 +17,16 @@
 //   "outer_surface". The cavity wall particles over the sclera (all but the lens/IOL cap, which
 //   has no sclera) are removed: the fluid touches the tissue directly (the INDSPH paper's set-up).
 //   When the outer surface is anchored they reappear kBackstopGapSpacings d behind the layer as a
-//   rigid backstop (the orbit), except where elastic fat lies behind it.
+//   rigid backstop (the orbit), except where elastic fat lies behind it (the fat then starts at the
+//   layer's outer surface, on the same lattice: no empty gap behind the anchored layer either way).
 //   A sclera thinner than kMinTissueLayerSpacings d cannot be resolved (the elasticity needs
 //   two layers for its quadratic gradients, docs/elasticity.md), so the particle layer is
 //   thickened to that and Young's modulus scaled by t / t_layer (area-weighted means over the
 //   wall): the membrane stiffness E t, which sets a pressurised shell's displacement, is kept; the
 //   bending stiffness and the areal mass are over-estimated (noted in Scenario::notes).
 // Elastic fat: lattice points inside anatomy::makeOrbitalFat's cup at least d/2 from its faces
-//   and outside the sampled sclera layer; the back-face layer (within d of the cup's outer face)
-//   anchored when anchoring is "back_face".
+//   and outside the sampled sclera layer (r > t_layer: the lattice continues from the sclera);
+//   the back-face layer (within d of the cup's outer face) anchored when anchoring is "back_face".
 //
 // Coverage on a moving retina: the retina samples (RetinaMap order, the cavity wall samples of
 // assembly) stay the points the coverage is measured at. A sample over elastic sclera follows the
@@ -48,15 +49,18 @@ struct Scenario;
 
 // [1] thinnest sampled tissue layer in particle spacings: d/2 gap + two lattice layers.
 inline constexpr double kMinTissueLayerSpacings = 2.5;
-// [1] gap between an anchored sclera layer's outer surface and the rigid backstop wall placed
-// behind it, in particle spacings. The sclera's lattice-sampled inner face is a staircase with
-// openings about a spacing wide: fluid particles enter it (measured: 0.5-0.8 d beyond the cavity
-// surface within 0.02 s, paper_sclera_10kpa.toml) and, in the upright posture, some passed all
-// the way through and fell out of the domain (0.45 s). The orbit holds the globe there anyway
-// (the outer surface is anchored), so a wall behind it keeps the fluid in the globe. Two spacings
-// (the kernel's support): closer, the wall compressed the anchored layer, whose pressure then
-// pushed the free inner layer into the cavity (2 MPa sclera test: 0.3 mm instead of 2 um).
-inline constexpr double kBackstopGapSpacings = 2.0;
+// [1] gap between an anchored sclera layer's outer surface (t_layer from the cavity) and the rigid
+// backstop wall placed behind it (the orbit), in particle spacings. The outer, anchored lattice
+// layer lies at depths (t_layer - d, t_layer], every free particle at most t_layer - d deep, so one
+// spacing puts the wall 1-2 d from the anchored layer (inside its kernel support, as the cavity
+// wall is for the fluid) and at least 2 d from every free particle (outside theirs: the wall can
+// push no free particle). Two spacings (sessions 5-7) left the anchored layer with no neighbour
+// behind it: its number density deficient (mean 0.81 rest), INDSPH's pressure clamped at 0 there
+// while the fluid next to the face read ~50 Pa, so the pressure solve drove fluid through the
+// layer into the gap (10 kPa: 3 / 8 / 42 particles in the tissue at 0.1 / 0.3 / 0.6 s). Half a
+// spacing (the wall within 1.5 d of the free layer) failed the 2 MPa sclera test: 207 um, bound
+// 4.1 um. docs/elasticity.md "Closing the gaps behind the sclera".
+inline constexpr double kBackstopGapSpacings = 1.0;
 // [1] the limbus clamp (docs/elasticity.md "The limbus clamp and the bony orbit"): the sclera's
 // anterior edge joins the cornea, here the rigid lens/IOL cap. Every sclera particle within this
 // many spacings of a cap wall particle, or of the rigid collar that closes the seam from the cap's

@@ -4,6 +4,7 @@
 
 #include "sim/boundary/wall_layers.h"
 #include "sim/fluid/density.h"
+#include "sim/solid/fixed_particles.h"
 
 namespace sim {
 
@@ -12,6 +13,22 @@ void computeNumberDensities(const World& world, std::vector<Real>& delta) {
       world, delta, [](Index) { return Real(1); },
       [&](Index i, Real fluid, Real wall) { return fluid + wall / world.restVolumeOf(i); });
 }
+
+namespace {
+
+// Anchored particles hold v = 0 through the solve (see applyPressureVelocity): v* may carry
+// gravity or the elastic stage's update, which the pipeline's constrain step discards anyway.
+void zeroFixedVelocities(World& world) {
+  auto& p = world.particles;
+  if (!p.fields.has(field::kFixed)) return;
+  const auto& fixed = p.fields.get<std::int32_t>(field::kFixed);
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i)
+    if (fixed[i] != 0) p.v[i].setZero();
+}
+
+}  // namespace
 
 IndsphWang2023::IndsphWang2023(const IndsphParameters& parameters) : params_(parameters) {
   require(params_.tolerance > 0, "INDSPH tolerance eta must be > 0");
@@ -168,6 +185,7 @@ Real IndsphWang2023::numberDensityRate(const World& world, Index i) const {
 // -dt kappa/delta_i * diagonal_i, so kappa^v_i = delta_i rate_i / (dt diagonal_i). Only
 // compressing particles are corrected (a free surface may expand).
 void IndsphWang2023::solveDivergence(World& world, Real dt) {
+  zeroFixedVelocities(world);
   const Index n = static_cast<Index>(world.particles.size());
   const auto& delta = *numberDensity_;
   auto computeRates = [&] {
@@ -228,8 +246,16 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
   const auto& gradB = world.wallGradients();
   const auto& delta = *numberDensity_;
   const Index n = static_cast<Index>(p.size());
+  // Anchored particles (sim/solid/fixed_particles.h) do not move: the pipeline resets their
+  // velocity after the solve, so a solve that moved them would predict the neighbours' number
+  // density for a position the anchor never takes (a fixed lattice facing the fluid then lets it
+  // in, issue 7). They keep their own stiffness, acting on their neighbours as a static wall
+  // particle's does (eq. 21).
+  const std::vector<std::int32_t>* fixed =
+      p.fields.has(field::kFixed) ? &p.fields.get<std::int32_t>(field::kFixed) : nullptr;
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
+    if (fixed && (*fixed)[i] != 0) continue;
     const Real ki = kappa[i] / delta[i];
     Vec3 force = Vec3::Zero();  // eq. 19 without the common factor -1
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
@@ -256,6 +282,7 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
 }
 
 void IndsphWang2023::correctVelocities(World& world, const StepContext& context) {
+  zeroFixedVelocities(world);
   const Index n = static_cast<Index>(world.particles.size());
   const Real dt = context.dt;
   auto& kappa = *kappa_;

@@ -149,9 +149,10 @@ void Pipeline::advanceVelocities(World& world, const StepContext& context) {
 }
 
 // The constrain step: anchored particles (sim/solid/fixed_particles.h) keep velocity 0 whatever
-// the pressure solver gave them. The solvers themselves do not know anchors, so a fixed particle
-// takes part in the pressure solve as a dynamic one and is reset afterwards; its neighbours'
-// remaining compression is corrected in the next step. Costs nothing in a scene where no particle
+// the pressure solver gave them. INDSPH holds them at v = 0 through its solves (its prediction then
+// matches what this step keeps); the other solvers do not know anchors, so there a fixed particle
+// takes part in the pressure solve as a dynamic one and is reset here; its neighbours' remaining
+// compression is corrected in the next step. Costs nothing in a scene where no particle
 // was ever flagged (the field does not exist), one pass over the flags otherwise.
 void Pipeline::constrainFixed(World& world) {
   auto& p = world.particles;
