@@ -12,14 +12,20 @@
 
 namespace sim {
 
-// Below this |det| (1 in a full support, ~0.5 in a half space, ~0.125 in a box corner) the
-// particle has too few neighbours for a first-order gradient: L = I (the plain sum).
-inline constexpr Real kMinCorrectionDeterminant = 0.05;
+// Below these |det B| the neighbourhood is too irregular for the correction and the plain sum is
+// kept (L = I). A full support reads det ~ 1 (with walls completing it next to a wall); the
+// fluid-only matrix ~ 0.5 next to a flat wall (a half space), ~ 0.25 in a box edge. Measured
+// (docs/interface.md, validation 1c): with 0.05 for both, the INDSPH l = 2 droplet with XSPH 0.05
+// (mu 1 mPa s) blew up at 0.09 s (speeds from 0.4 to 160 m/s in 30 steps); with 0.5 for the full
+// matrix it runs stably. gradC's one-sided matrix keeps 0.05: at 0.25 the 150 deg sessile droplet
+// fell from 142.6 to 139.2 deg (its contact-line particles lie in that range).
+inline constexpr Real kMinCorrectionDeterminant = 0.5;        // fluid and walls (divergence)
+inline constexpr Real kMinFluidCorrectionDeterminant = 0.05;  // fluid only (gradC)
 
-// L_i over the dynamic neighbours only (`withWalls` false: a one-sided gradient of the fluid's
-// own field next to a wall) or over dynamic and wall neighbours (the wall completes the support,
-// as a mirror does). Needs the densities of the current step (V_j = m_j / rho_j).
-inline Mat3 gradientCorrection(const World& world, Index i, bool withWalls) {
+// The moment matrix B_i = sum_j V_j gradW_ij (x_j - x_i)^T over the dynamic neighbours, and the
+// wall neighbours' part of it (the wall completes the support, as a mirror does). Needs the
+// densities of the current step (V_j = m_j / rho_j).
+inline Mat3 fluidGradientMoment(const World& world, Index i) {
   const auto& p = world.particles;
   const NeighborList& nf = world.fluidNeighbors();
   const auto& gradF = world.fluidGradients();
@@ -28,16 +34,23 @@ inline Mat3 gradientCorrection(const World& world, Index i, bool withWalls) {
     const Index j = nf.indices[k];
     b += (p.mass[j] / p.density[j]) * gradF[k] * (p.x[j] - p.x[i]).transpose();
   }
-  if (withWalls) {
-    const NeighborList& nw = world.wallNeighbors();
-    const auto& gradB = world.wallGradients();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-      const Index w = nw.indices[k];
-      b += world.walls.volume[w] * gradB[k] * (world.walls.x[w] - p.x[i]).transpose();
-    }
+  return b;
+}
+
+inline Mat3 wallGradientMoment(const World& world, Index i) {
+  const NeighborList& nw = world.wallNeighbors();
+  const auto& gradB = world.wallGradients();
+  Mat3 b = Mat3::Zero();
+  for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
+    const Index w = nw.indices[k];
+    b += world.walls.volume[w] * gradB[k] * (world.walls.x[w] - world.particles.x[i]).transpose();
   }
-  return std::abs(b.determinant()) > kMinCorrectionDeterminant ? Mat3(b.inverse())
-                                                               : Mat3::Identity();
+  return b;
+}
+
+// L = B^-1, or I where |det B| <= `minimum`.
+inline Mat3 gradientCorrection(const Mat3& moment, Real minimum) {
+  return std::abs(moment.determinant()) > minimum ? Mat3(moment.inverse()) : Mat3::Identity();
 }
 
 }  // namespace sim

@@ -61,9 +61,11 @@ void InterfacialTensionHuAdams2006::computeCorrections(const World& world) {
   fullCorrection_.resize(n);
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    fluidCorrection_[i] = gradientCorrection(world, i, false);
-    fullCorrection_[i] = world.wallNeighbors().count(i) > 0 ? gradientCorrection(world, i, true)
-                                                            : fluidCorrection_[i];
+    const Mat3 fluid = fluidGradientMoment(world, i);
+    fluidCorrection_[i] = gradientCorrection(fluid, kMinFluidCorrectionDeterminant);
+    const Mat3 full = world.wallNeighbors().count(i) > 0 ? Mat3(fluid + wallGradientMoment(world, i))
+                                                         : fluid;
+    fullCorrection_[i] = gradientCorrection(full, kMinCorrectionDeterminant);
   }
 }
 

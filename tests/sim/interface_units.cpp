@@ -133,7 +133,7 @@ StressSums tensionSums(Real perR, SurfaceStressForm form) {
 
 }  // namespace
 
-TEST_CASE("Interfacial stress on a lattice droplet integrates to 2 sigma / R; the symmetric form "
+TEST_CASE("Interfacial stress on a lattice droplet integrates to 2 sigma / R, and the symmetric form "
           "conserves momentum exactly",
           "[unit][interface]") {
   for (const Real perR : {6.0, 8.0}) {
