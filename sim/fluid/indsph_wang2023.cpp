@@ -14,22 +14,6 @@ void computeNumberDensities(const World& world, std::vector<Real>& delta) {
       [&](Index i, Real fluid, Real wall) { return fluid + wall / world.restVolumeOf(i); });
 }
 
-namespace {
-
-// Anchored particles hold v = 0 through the solve (see applyPressureVelocity): v* may carry
-// gravity or the elastic stage's update, which the pipeline's constrain step discards anyway.
-void zeroFixedVelocities(World& world) {
-  auto& p = world.particles;
-  if (!p.fields.has(field::kFixed)) return;
-  const auto& fixed = p.fields.get<std::int32_t>(field::kFixed);
-  const Index n = static_cast<Index>(p.size());
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i)
-    if (fixed[i] != 0) p.v[i].setZero();
-}
-
-}  // namespace
-
 IndsphWang2023::IndsphWang2023(const IndsphParameters& parameters) : params_(parameters) {
   require(params_.tolerance > 0, "INDSPH tolerance eta must be > 0");
   require(params_.maxIterations >= params_.minIterations && params_.minIterations >= 1,
@@ -185,7 +169,9 @@ Real IndsphWang2023::numberDensityRate(const World& world, Index i) const {
 // -dt kappa/delta_i * diagonal_i, so kappa^v_i = delta_i rate_i / (dt diagonal_i). Only
 // compressing particles are corrected (a free surface may expand).
 void IndsphWang2023::solveDivergence(World& world, Real dt) {
-  zeroFixedVelocities(world);
+  // Anchors hold v = 0 through the solve: v* may carry gravity or the elastic update, which the
+  // pipeline's constrain step discards anyway.
+  zeroFixedVelocities(world.particles);
   const Index n = static_cast<Index>(world.particles.size());
   const auto& delta = *numberDensity_;
   auto computeRates = [&] {
@@ -282,7 +268,7 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
 }
 
 void IndsphWang2023::correctVelocities(World& world, const StepContext& context) {
-  zeroFixedVelocities(world);
+  zeroFixedVelocities(world.particles);
   const Index n = static_cast<Index>(world.particles.size());
   const Real dt = context.dt;
   auto& kappa = *kappa_;

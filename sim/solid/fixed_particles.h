@@ -29,6 +29,17 @@ inline void setFixed(DynamicParticles& particles, Index i, bool fixed = true) {
   fixedFlags(particles)[i] = fixed ? 1 : 0;
 }
 
+// Sets v = 0 on every anchored particle (none when the field does not exist): the pipeline's
+// constrain step, and INDSPH, which holds anchors still through its solves.
+inline void zeroFixedVelocities(DynamicParticles& particles) {
+  if (!particles.fields.has(field::kFixed)) return;
+  const auto& fixed = particles.fields.get<std::int32_t>(field::kFixed);
+  const Index n = static_cast<Index>(particles.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i)
+    if (fixed[i] != 0) particles.v[i].setZero();
+}
+
 inline bool isFixed(const DynamicParticles& particles, Index i) {
   if (!particles.fields.has(field::kFixed)) return false;
   return particles.fields.get<std::int32_t>(field::kFixed)[i] != 0;

@@ -154,15 +154,7 @@ void Pipeline::advanceVelocities(World& world, const StepContext& context) {
 // takes part in the pressure solve as a dynamic one and is reset here; its neighbours' remaining
 // compression is corrected in the next step. Costs nothing in a scene where no particle
 // was ever flagged (the field does not exist), one pass over the flags otherwise.
-void Pipeline::constrainFixed(World& world) {
-  auto& p = world.particles;
-  if (!p.fields.has(field::kFixed)) return;
-  const auto& fixed = p.fields.get<std::int32_t>(field::kFixed);
-  const Index n = static_cast<Index>(p.size());
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i)
-    if (fixed[i] != 0) p.v[i].setZero();
-}
+void Pipeline::constrainFixed(World& world) { zeroFixedVelocities(world.particles); }
 
 std::string Pipeline::describe() const {
   std::ostringstream out;

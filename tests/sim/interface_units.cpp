@@ -107,13 +107,7 @@ struct StressSums {
 // sum_i -m_i a_i.e_r / (4 pi r_i^2) (force per volume summed over spherical shells), and the net
 // force against the sum of magnitudes.
 StressSums tensionSums(Real perR, SurfaceStressForm form) {
-  testing::DropletSpec s;
-  s.radius = 0.003;
-  s.spacing = s.radius / perR;
-  s.halfWidth = s.radius + 3 * 2 * s.spacing;  // interface (R +- h) more than h from the walls
-  s.sigma = 0.04;
-  s.massExcess = 0;
-  auto scene = testing::dropletScene(s);
+  auto scene = freeDroplet(perR);
   World& w = *scene.world;
   InterfacialTensionHuAdams2006 tension(form);
   applyAlone(w, tension);
