@@ -25,6 +25,12 @@ std::string_view surfaceStressFormName(SurfaceStressForm form) {
   return "?";
 }
 
+SurfaceStressForm surfaceStressFormFromName(std::string_view name) {
+  for (const SurfaceStressForm form : {SurfaceStressForm::kCorrected, SurfaceStressForm::kSymmetric})
+    if (name == surfaceStressFormName(form)) return form;
+  return SurfaceStressForm::kAuto;
+}
+
 SurfaceStressForm resolveSurfaceStressForm(SurfaceStressForm requested, std::string_view solver) {
   if (requested != SurfaceStressForm::kAuto) return requested;
   return solver == "wcsph" ? SurfaceStressForm::kSymmetric : SurfaceStressForm::kCorrected;
@@ -55,20 +61,6 @@ Real InterfacialTensionHuAdams2006::maxTimeStep(const World& world) const {
   return dt;
 }
 
-void InterfacialTensionHuAdams2006::computeCorrections(const World& world) {
-  const Index n = static_cast<Index>(world.particles.size());
-  fluidCorrection_.resize(n);
-  fullCorrection_.resize(n);
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    const Mat3 fluid = fluidGradientMoment(world, i);
-    fluidCorrection_[i] = gradientCorrection(fluid, kMinFluidCorrectionDeterminant);
-    const Mat3 full = world.wallNeighbors().count(i) > 0 ? Mat3(fluid + wallGradientMoment(world, i))
-                                                         : fluid;
-    fullCorrection_[i] = gradientCorrection(full, kMinCorrectionDeterminant);
-  }
-}
-
 void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   auto& p = world.particles;
   const Index n = static_cast<Index>(p.size());
@@ -83,7 +75,6 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   stress_.resize(n);
   stressed_.resize(n);
   gradient_.resize(n);
-  if (corrected) computeCorrections(world);
   const Real dimension = 3.0;
 
   for (std::size_t pairIndex = 0; pairIndex < tensions.size(); ++pairIndex) {
@@ -105,7 +96,9 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
         if (cj < 0 || cj == ci) continue;  // (C_j - C_i) = 0 within a phase
         g += (p.mass[j] / p.density[j]) * Real(cj - ci) * gradF[k];
       }
-      if (corrected) g = fluidCorrection_[i] * g;
+      // L_i only where gradC is not 0, i.e. on the interface: the bulk costs no extra pass.
+      if (corrected && g.squaredNorm() > 0)
+        g = gradientCorrection(fluidGradientMoment(world, i), kMinFluidCorrectionDeterminant) * g;
       const Real norm = g.norm();  // [1/m]
       gradient_[i] = g;
       // Below 1e-6 of the interface's |gradC| ~ 1/h the direction is round-off: no stress.
@@ -120,13 +113,22 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
       if (colourOf(p.material[i], pair) < 0) continue;
       const Real vi = p.mass[i] / p.density[i];
       Vec3 f = Vec3::Zero();  // [N]
+      Mat3 correction = Mat3::Identity();  // L_i of the divergence (corrected form)
       if (corrected) {
         // Difference form sum_j V_j (Pi_j - Pi_i) L_i gradW_ij: zero for a uniform stress on any
         // particle order (the symmetric sum is not: 2 Pi_i sum_j V_j gradW_ij remains).
         // The correction acts on the kernel gradient (the derivative's index), not on the result.
+        // It is computed only where a stress acts (i or a neighbour stressed): elsewhere f = 0.
+        bool acted = stressed_[i] != 0;
+        for (Index k = nf.offsets[i]; k < nf.offsets[i + 1] && !acted; ++k)
+          acted = stressed_[nf.indices[k]] != 0;
+        if (!acted) continue;
+        const Mat3 fluid = fluidGradientMoment(world, i);
+        correction = gradientCorrection(
+            nw.count(i) > 0 ? Mat3(fluid + wallGradientMoment(world, i)) : fluid,
+            kMinCorrectionDeterminant);
         const Mat3 zero = Mat3::Zero();
         const Mat3& own = stressed_[i] ? stress_[i] : zero;
-        const Mat3& correction = fullCorrection_[i];
         for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
           const Index j = nf.indices[k];
           if (!stressed_[i] && !stressed_[j]) continue;
@@ -161,7 +163,7 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
           mirrored = reflect * stress_[i] * reflect;
         }
         if (corrected)
-          f += vi * ((mirrored - stress_[i]) * (fullCorrection_[i] * wallSum));
+          f += vi * ((mirrored - stress_[i]) * (correction * wallSum));
         else
           f += vi * ((stress_[i] + mirrored) * wallSum);
       }

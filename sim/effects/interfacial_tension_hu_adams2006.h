@@ -24,7 +24,8 @@
 // background pressure, the corrected form 0.97 (docs/interface.md, validation 1c). The corrected
 // (difference) form is first-order consistent on any particle order, at the price of a small
 // momentum residual (measured 3-5e-4 of sum |f| on a relaxed jittered droplet; the droplet does
-// not drift, tests/sim/interface_laplace.cpp). Cost: one more pass over the neighbours per step.
+// not drift, tests/sim/interface_laplace.cpp). Cost: one more neighbour pass per interface
+// particle (L_i is formed only where gradC or a neighbour's stress is not 0).
 // The correction is used only in well-conditioned neighbourhoods (gradient_correction.h): with
 // it applied wherever B was invertible, an INDSPH droplet at 1 mPa s blew up.
 //
@@ -65,6 +66,8 @@ enum class SurfaceStressForm {
 
 // Protocol / plan name of each form ("auto", "corrected", "symmetric").
 std::string_view surfaceStressFormName(SurfaceStressForm form);
+// The inverse: kAuto for "auto" and for any other name.
+SurfaceStressForm surfaceStressFormFromName(std::string_view name);
 
 // kAuto: symmetric under WCSPH, whose positive pressure at rest keeps the particles near a
 // lattice, where the symmetric sum is exact (measured there: Laplace -5.5 % against -8.5 %
@@ -86,14 +89,10 @@ class InterfacialTensionHuAdams2006 final : public Effect {
   SurfaceStressForm form() const { return form_; }
 
  private:
-  void computeCorrections(const World& world);
-
   SurfaceStressForm form_;
   std::vector<Vec3>* colourGradient_ = nullptr;  // [1/m] output field of the first pair
   std::vector<Mat3> stress_;                      // [Pa] scratch: Pi of each particle
   std::vector<Vec3> gradient_;                    // [1/m] scratch gradC for the current pair
-  std::vector<Mat3> fluidCorrection_;  // [1] L_i over fluid neighbours only (for gradC)
-  std::vector<Mat3> fullCorrection_;   // [1] L_i over fluid and wall neighbours (divergence)
   std::vector<std::uint8_t> stressed_;            // scratch: 1 where Pi is set (else Pi = 0)
 };
 

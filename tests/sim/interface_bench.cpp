@@ -384,9 +384,7 @@ int main(int argc, char** argv) {
       else if (key == "bg")
         o.backgroundPressure = value == "off" ? 0.0 : std::atof(value.c_str());
       else if (key == "form")
-        o.surfaceStress = value == "corrected"   ? SurfaceStressForm::kCorrected
-                          : value == "symmetric" ? SurfaceStressForm::kSymmetric
-                                                 : SurfaceStressForm::kAuto;
+        o.surfaceStress = surfaceStressFormFromName(value);
       else {
         std::fprintf(stderr, "unknown oscillation option '%s'\n", argv[k]);
         return 2;

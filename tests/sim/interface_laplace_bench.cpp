@@ -110,9 +110,7 @@ int main(int argc, char** argv) {
     else if (key == "dtmax") dtmax = std::atof(v.c_str());
     else if (key == "jitter") jitter = std::atof(v.c_str());
     else if (key == "form")
-      options.surfaceStress = v == "corrected"   ? SurfaceStressForm::kCorrected
-                              : v == "symmetric" ? SurfaceStressForm::kSymmetric
-                                                 : SurfaceStressForm::kAuto;
+      options.surfaceStress = surfaceStressFormFromName(v);
     else {
       std::fprintf(stderr, "unknown option '%s' (see the comment at the top of interface_laplace_bench.cpp)\n", argv[k]);
       return 2;
