@@ -164,7 +164,8 @@ TEST_CASE("A jittered INDSPH droplet at rest does not propel itself under the co
 
 // The control: the same droplet with the stage forced off must lose most of its jump, so the
 // test above passes because of the stage and not by chance. 0.6: measured 0.28-0.38 of 2 sigma /
-// R over the averaging window; any model that held 60 % would be a different finding.
+// R over the averaging window with the symmetric form, 0.10 with the corrected one (the clumped
+// interface's irregular neighbourhoods); any model that held 60 % would be a different finding.
 TEST_CASE("Laplace pressure under INDSPH without the background pressure is under-stated",
           "[validation][interface][laplace][indsph]") {
   const LaplaceResult r = runLaplace(0.003, 0.040, "indsph", {.background = Force::kOff});
