@@ -70,6 +70,10 @@ inline constexpr double kBackstopGapSpacings = 1.0;
 // and 4.6 um (bound 4.1 um, elsewhere 0.1 um); with 3 d the largest displacement is 0.10 um, as
 // without collar and clamp.
 inline constexpr double kLimbusClampSpacings = 3.0;
+// [1] the cap's rim (where the collar starts) reaches this far from the wall samples over the
+// sclera: the cap and the sclera's wall samples are both at d/2, so a cap sample next to the
+// boundary has one within ~d/2-d; one spacing takes the first row or two of the cap.
+inline constexpr double kCapRimSpacings = 1.0;
 // [1] the bony orbit around the elastic orbital fat: rigid wall particles (spacing d/2) at
 // distances [kOrbitGapSpacings, kOrbitGapSpacings + 1) d from the nearest fat particle, outside
 // the sclera's backstop shell, so the tissue assembly is enclosed by walls and fluid that gets
