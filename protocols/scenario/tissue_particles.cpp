@@ -151,6 +151,12 @@ int fanPieces(const sim::Vec3& collarEnd, const sim::Vec3& backstopPoint, double
   return static_cast<int>(std::ceil(length / (0.5 * d)));
 }
 
+// [1] fillShellGaps adds a lattice point when no shell wall lies within this many spacings.
+// Measured on the paper eye (d = 1.2 mm, widest opening by enclosure.h): 0.5 left 0.61 d (734
+// walls), 0.4 leaves 0.58 d (1861), 0.3 also 0.58 d (3424): the rest is the backstop's own
+// spacing. The rigid cavity wall's widest is 0.50 d.
+constexpr double kShellFillSpacings = 0.4;
+
 // What fillShellGaps needs of the assembly.
 struct ShellGapInput {
   const std::vector<sim::Vec3>& covered;  // cavity wall samples over the sclera
@@ -165,9 +171,9 @@ struct ShellGapInput {
 // shell is the surface at depth t_layer + kBackstopGapSpacings d from the cavity wall, over the
 // sclera and over the cap within 4 d of it (there the offset of the cap/sclera crease, the wedge
 // the fan approximates). Points of a d/2 lattice within d/4 of that surface get a wall particle
-// when no wall of the shell lies within d/2 of them; like the backstop, none within 2 d of a free
-// sclera or a fat particle (the fat holds the globe there, the orbit encloses it). Normals point
-// away from the cavity. Returns how many it added.
+// when no wall of the shell lies within kShellFillSpacings d of them; like the backstop, none
+// within 2 d of a free sclera or a fat particle (the fat holds the globe there, the orbit encloses
+// it). Normals point away from the cavity. Returns how many it added.
 std::size_t fillShellGaps(const meshing::TriangleMesh& cavityMesh, const ShellGapInput& in,
                           std::vector<sim::Vec3>& added, std::vector<sim::Vec3>& addedNormal,
                           std::vector<int>& addedTag) {
@@ -192,7 +198,7 @@ std::size_t fillShellGaps(const meshing::TriangleMesh& cavityMesh, const ShellGa
       for (double z = lo.z(); z <= hi.z(); z += h) {
         const sim::Vec3 q(x, y, z);
         // Cheap rejections first: far from the sclera, or a shell wall already close.
-        if (!coveredGrid.anyWithin(q, reach) || shellGrid.anyWithin(q, 0.4 * d)) continue;
+        if (!coveredGrid.anyWithin(q, reach) || shellGrid.anyWithin(q, kShellFillSpacings * d)) continue;
         const sim::Vec3 foot = cavity.closestPoint(q);
         const long c = coveredGrid.nearest(foot, 4.0 * d);
         if (c < 0) continue;

@@ -19,6 +19,10 @@
 //   When the outer surface is anchored they reappear kBackstopGapSpacings d behind the layer as a
 //   rigid backstop (the orbit), except where elastic fat lies behind it (the fat then starts at the
 //   layer's outer surface, on the same lattice: no empty gap behind the anchored layer either way).
+//   The walls behind the sclera (backstop, the limbus collar and its fan) are closed where their
+//   samples spread: a d/2 lattice on the same surface fills their openings, so that none is wider
+//   than the cavity wall's by more than the check's resolution (docs/elasticity.md "The limbus
+//   band, watertight"; enclosure.h).
 //   A sclera thinner than kMinTissueLayerSpacings d cannot be resolved (the elasticity needs
 //   two layers for its quadratic gradients, docs/elasticity.md), so the particle layer is
 //   thickened to that and Young's modulus scaled by t / t_layer (area-weighted means over the
