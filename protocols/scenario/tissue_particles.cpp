@@ -133,6 +133,91 @@ void recordRetinaSamples(Scenario& s) {
   s.retinaSamples.followsId.assign(n, -1);
 }
 
+namespace {
+
+// The lens/IOL cap's rim, where the collar starts: a cap wall particle within 1.5 d of a sclera
+// particle, or within kCapRimSpacings d of a wall sample over the sclera (the cap's edge on the
+// cavity surface). The first alone followed the sclera lattice's staircase and left stretches of
+// the rim 1.7 d long without a collar (a hole 2.5 d wide at the anterior-inferior limbus).
+bool onCapRim(const sim::Vec3& x, const PointGrid& scleraGrid, const PointGrid& coveredGrid, double d) {
+  return scleraGrid.anyWithin(x, 1.5 * d) || coveredGrid.anyWithin(x, kCapRimSpacings * d);
+}
+
+// Wall particles in the fan from the collar's end to the backstop point: at most d/2 apart along
+// the arc (angle x depth) and along the chord between the ends (the collar's foot and the
+// backstop's sample are up to 4 d apart on the surface, which the arc alone did not count).
+int fanPieces(const sim::Vec3& collarEnd, const sim::Vec3& backstopPoint, double angle, double depth, double d) {
+  const double length = std::max(angle * depth, (backstopPoint - collarEnd).norm());  // [m]
+  return static_cast<int>(std::ceil(length / (0.5 * d)));
+}
+
+// [1] fillShellGaps adds a lattice point when no shell wall lies within this many spacings.
+// Measured on the paper eye (d = 1.2 mm, widest opening by enclosure.h): 0.5 left 0.61 d (734
+// walls), 0.4 leaves 0.58 d (1861), 0.3 also 0.58 d (3424): the rest is the backstop's own
+// spacing. The rigid cavity wall's widest is 0.50 d.
+constexpr double kShellFillSpacings = 0.4;
+
+// What fillShellGaps needs of the assembly.
+struct ShellGapInput {
+  const std::vector<sim::Vec3>& covered;  // cavity wall samples over the sclera
+  const std::vector<double>& coveredLayer;  // [m] their sampled sclera layer
+  const std::vector<int>& coveredTag;
+  const std::vector<sim::Vec3>& freeSclera;  // free sclera particles at rest
+  const std::vector<sim::Vec3>& fat;         // elastic fat particles (empty: none)
+  double d;                                  // [m]
+};
+
+// Fills the openings of the wall shell behind the sclera (backstop, collar, fan in `added`): the
+// shell is the surface at depth t_layer + kBackstopGapSpacings d from the cavity wall, over the
+// sclera and over the cap within 4 d of it (there the offset of the cap/sclera crease, the wedge
+// the fan approximates). Points of a d/2 lattice within d/4 of that surface get a wall particle
+// when no wall of the shell lies within kShellFillSpacings d of them; like the backstop, none
+// within 2 d of a free sclera or a fat particle (the fat holds the globe there, the orbit encloses
+// it). Normals point away from the cavity. Returns how many it added.
+std::size_t fillShellGaps(const meshing::TriangleMesh& cavityMesh, const ShellGapInput& in,
+                          std::vector<sim::Vec3>& added, std::vector<sim::Vec3>& addedNormal,
+                          std::vector<int>& addedTag) {
+  const double d = in.d, h = 0.5 * d;
+  const meshing::MeshQuery cavity(cavityMesh);
+  const PointGrid coveredGrid(in.covered, 4.0 * d);
+  const PointGrid shellGrid(added, d);
+  const PointGrid freeGrid(in.freeSclera, 2.0 * d);
+  const PointGrid fatGrid(in.fat, 2.0 * d);
+  double deepest = 0.0;  // [m]
+  Eigen::AlignedBox3d box;
+  for (std::size_t k = 0; k < in.covered.size(); ++k) {
+    box.extend(in.covered[k]);
+    deepest = std::max(deepest, in.coveredLayer[k]);
+  }
+  const double reach = deepest + (kBackstopGapSpacings + 1.0) * d;  // [m]
+  const sim::Vec3 lo = box.min() - sim::Vec3::Constant(reach), hi = box.max() + sim::Vec3::Constant(reach);
+  std::vector<sim::Vec3> points, normals;
+  std::vector<int> tags;
+  for (double x = lo.x(); x <= hi.x(); x += h)
+    for (double y = lo.y(); y <= hi.y(); y += h)
+      for (double z = lo.z(); z <= hi.z(); z += h) {
+        const sim::Vec3 q(x, y, z);
+        // Cheap rejections first: far from the sclera, or a shell wall already close.
+        if (!coveredGrid.anyWithin(q, reach) || shellGrid.anyWithin(q, kShellFillSpacings * d)) continue;
+        const sim::Vec3 foot = cavity.closestPoint(q);
+        const long c = coveredGrid.nearest(foot, 4.0 * d);
+        if (c < 0) continue;
+        const double depth = in.coveredLayer[static_cast<std::size_t>(c)] + kBackstopGapSpacings * d;  // [m]
+        const double r = (q - foot).norm();
+        if (std::abs(r - depth) > 0.25 * d || cavity.isInside(q)) continue;
+        if (freeGrid.anyWithin(q, 2.0 * d) || fatGrid.anyWithin(q, 2.0 * d)) continue;
+        points.push_back(q);
+        normals.push_back((q - foot) / r);
+        tags.push_back(in.coveredTag[static_cast<std::size_t>(c)]);
+      }
+  added.insert(added.end(), points.begin(), points.end());
+  addedNormal.insert(addedNormal.end(), normals.begin(), normals.end());
+  addedTag.insert(addedTag.end(), tags.begin(), tags.end());
+  return points.size();
+}
+
+}  // namespace
+
 void addTissues(const Protocol& p, Scenario& s) {
   const EyeSpec& e = p.eye;
   if (!e.sclera && !e.orbitalFat) return;
@@ -365,7 +450,7 @@ void addTissues(const Protocol& p, Scenario& s) {
       for (const sim::Index w : keep) {
         const sim::Vec3& x = walls.x[w];
         clamp.push_back(x);
-        if (!scleraGrid.anyWithin(x, 1.5 * d)) continue;
+        if (!onCapRim(x, scleraGrid, coveredGrid, d)) continue;
         const long c = coveredGrid.nearest(x, 4.0 * d);
         const double layer = c >= 0 ? coveredLayer[static_cast<std::size_t>(c)] : kMinTissueLayerSpacings * d;
         const double depth = layer + kBackstopGapSpacings * d;  // [m]
@@ -384,7 +469,7 @@ void addTissues(const Protocol& p, Scenario& s) {
         const sim::Vec3& xc = covered[static_cast<std::size_t>(c)];
         const sim::Vec3& nc = coveredNormal[static_cast<std::size_t>(c)];
         const double angle = std::acos(std::clamp(walls.normal[w].dot(nc), -1.0, 1.0));  // [rad]
-        const int pieces = static_cast<int>(std::ceil(angle * depth / (0.5 * d)));
+        const int pieces = fanPieces(x + depth * walls.normal[w], xc + depth * nc, angle, depth, d);
         for (int k = 1; k < pieces; ++k) {
           const double f = static_cast<double>(k) / pieces;
           const sim::Vec3 normal = ((1.0 - f) * walls.normal[w] + f * nc).normalized();
@@ -401,6 +486,19 @@ void addTissues(const Protocol& p, Scenario& s) {
         ++sclera.anchored;
         ++sclera.limbusClamped;
       }
+    }
+    // The backstop, collar and fan are samples moved off the cavity wall; where they spread (the
+    // backstop's samples drift apart by (R + depth) / R outward, the fans are lines from single
+    // rim particles) openings up to 0.9 d wide were left, fluid left the globe through one at
+    // the anterior-inferior limbus (docs/elasticity.md "The limbus band, watertight").
+    std::size_t seamCount = 0;
+    if (scleraBackstop) {
+      std::vector<sim::Vec3> freeSclera;
+      for (std::size_t k = 0; k < sclera.count; ++k)
+        if (!sim::isFixed(s.world->particles, static_cast<std::size_t>(sclera.firstId) + k))
+          freeSclera.push_back(sclera.restPositions[k]);
+      const ShellGapInput in{covered, coveredLayer, coveredTag, freeSclera, fat, d};
+      seamCount = fillShellGaps(s.cavity, in, added, addedNormal, addedTag);
     }
     // The bony orbit around the fat: lattice points (spacing d/2) at [kOrbitGapSpacings,
     // kOrbitGapSpacings + 1) d from the nearest fat particle and at least 2 d from every sclera
@@ -439,6 +537,10 @@ void addTissues(const Protocol& p, Scenario& s) {
                         formatNumber(kBackstopGapSpacings, 2) +
                         " particle spacing behind it where no orbital fat is, so its anchored layer is backed within "
                         "the kernel's support (no empty gap, i.e. no p = 0 free surface, behind the pressurised globe)");
+    if (seamCount > 0)
+      s.notes.push_back("the wall shell behind the sclera closed: " + std::to_string(seamCount) +
+                        " wall particles where the backstop's, collar's and fan's samples left an opening wider than "
+                        "the cavity wall's");
     if (collarCount > 0)
       s.notes.push_back("sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL cap): " +
                         std::to_string(sclera.limbusClamped) + " sclera particles within " +

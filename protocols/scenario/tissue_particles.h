@@ -19,6 +19,10 @@
 //   When the outer surface is anchored they reappear kBackstopGapSpacings d behind the layer as a
 //   rigid backstop (the orbit), except where elastic fat lies behind it (the fat then starts at the
 //   layer's outer surface, on the same lattice: no empty gap behind the anchored layer either way).
+//   The walls behind the sclera (backstop, the limbus collar and its fan) are closed where their
+//   samples spread: a d/2 lattice on the same surface fills their openings, so that none is wider
+//   than the cavity wall's by more than the check's resolution (docs/elasticity.md "The limbus
+//   band, watertight"; enclosure.h).
 //   A sclera thinner than kMinTissueLayerSpacings d cannot be resolved (the elasticity needs
 //   two layers for its quadratic gradients, docs/elasticity.md), so the particle layer is
 //   thickened to that and Young's modulus scaled by t / t_layer (area-weighted means over the
@@ -70,6 +74,10 @@ inline constexpr double kBackstopGapSpacings = 1.0;
 // and 4.6 um (bound 4.1 um, elsewhere 0.1 um); with 3 d the largest displacement is 0.10 um, as
 // without collar and clamp.
 inline constexpr double kLimbusClampSpacings = 3.0;
+// [1] the cap's rim (where the collar starts) reaches this far from the wall samples over the
+// sclera: the cap and the sclera's wall samples are both at d/2, so a cap sample next to the
+// boundary has one within ~d/2-d; one spacing takes the first row or two of the cap.
+inline constexpr double kCapRimSpacings = 1.0;
 // [1] the bony orbit around the elastic orbital fat: rigid wall particles (spacing d/2) at
 // distances [kOrbitGapSpacings, kOrbitGapSpacings + 1) d from the nearest fat particle, outside
 // the sclera's backstop shell, so the tissue assembly is enclosed by walls and fluid that gets
