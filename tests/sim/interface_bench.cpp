@@ -5,6 +5,8 @@
 //                               [box_height_per_R]     sessile droplet contact angle
 //   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R]
 //                                      the cap fit on a static cap of exactly THETA
+//   sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] [depth_per_d]
+//                                      the meniscus between two parallel walls (straight contact lines)
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
 //                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
 //                                      equilibrium tamponade shape in a spherical cavity
@@ -21,6 +23,7 @@
 #include <vector>
 
 #include "interface_fixtures.h"
+#include "interface_meniscus.h"
 #include "interface_oscillation.h"
 #include "interface_sessile.h"
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
@@ -421,6 +424,21 @@ int main(int argc, char** argv) {
     if (argc > 13) c.boxHeightPerR = std::atof(argv[13]);
     return sessile(c);
   }
+  if (argc >= 3 && std::strcmp(argv[1], "meniscus") == 0) {
+    testing::MeniscusCase c;
+    c.theta = std::atof(argv[2]);
+    if (argc > 3) c.tEnd = std::atof(argv[3]);
+    if (argc > 4) c.gapPerD = std::atof(argv[4]);
+    if (argc > 5) c.viscosity = std::atof(argv[5]);
+    if (argc > 6) c.jitter = std::atof(argv[6]);
+    if (argc > 7) c.depthPerD = std::atof(argv[7]);
+    const testing::MeniscusResult r = testing::runMeniscus(c);
+    std::printf("meniscus: requested %.1f deg, H = %.0f d: measured %.1f deg (mean of the last "
+                "fifth; %.1f at the end) after %.3f s; %zu particles, %ld steps, wall %.1f s%s\n",
+                c.theta, c.gapPerD, r.angle, r.finalAngle, c.tEnd, r.particles, r.steps,
+                r.seconds, r.finite ? "" : " (NOT FINITE)");
+    return r.finite ? 0 : 1;
+  }
   if (argc >= 3 && std::strcmp(argv[1], "cavity") == 0)
     return cavity(std::strcmp(argv[2], "flat") != 0, std::atof(argv[2]),
                   argc > 3 ? std::atof(argv[3]) : 0.1, argc > 4 ? std::atof(argv[4]) : 8,
@@ -439,6 +457,8 @@ int main(int argc, char** argv) {
       "[box_height_per_R]\n"
       "       sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] "
       "[half_width_per_R]\n"
+      "       sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] "
+      "[depth_per_d]\n"
       "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
       "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;
