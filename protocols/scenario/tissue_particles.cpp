@@ -139,14 +139,16 @@ namespace {
 // particle, or within kCapRimSpacings d of a wall sample over the sclera (the cap's edge on the
 // cavity surface). The first alone followed the sclera lattice's staircase and left stretches of
 // the rim 1.7 d long without a collar (a hole 2.5 d wide at the anterior-inferior limbus).
-bool onCapRim(const sim::Vec3& x, const PointGrid& scleraGrid, const PointGrid& coveredGrid, double d) {
+bool onCapRim(const sim::Vec3& x, const PointGrid& scleraGrid, const PointGrid& coveredGrid,
+              double d) {
   return scleraGrid.anyWithin(x, 1.5 * d) || coveredGrid.anyWithin(x, kCapRimSpacings * d);
 }
 
 // Wall particles in the fan from the collar's end to the backstop point: at most d/2 apart along
 // the arc (angle x depth) and along the chord between the ends (the collar's foot and the
 // backstop's sample are up to 4 d apart on the surface, which the arc alone did not count).
-int fanPieces(const sim::Vec3& collarEnd, const sim::Vec3& backstopPoint, double angle, double depth, double d) {
+int fanPieces(const sim::Vec3& collarEnd, const sim::Vec3& backstopPoint, double angle,
+              double depth, double d) {
   const double length = std::max(angle * depth, (backstopPoint - collarEnd).norm());  // [m]
   return static_cast<int>(std::ceil(length / (0.5 * d)));
 }
@@ -159,7 +161,7 @@ constexpr double kShellFillSpacings = 0.4;
 
 // What fillShellGaps needs of the assembly.
 struct ShellGapInput {
-  const std::vector<sim::Vec3>& covered;  // cavity wall samples over the sclera
+  const std::vector<sim::Vec3>& covered;    // cavity wall samples over the sclera
   const std::vector<double>& coveredLayer;  // [m] their sampled sclera layer
   const std::vector<int>& coveredTag;
   const std::vector<sim::Vec3>& freeSclera;  // free sclera particles at rest
@@ -190,7 +192,8 @@ std::size_t fillShellGaps(const meshing::TriangleMesh& cavityMesh, const ShellGa
     deepest = std::max(deepest, in.coveredLayer[k]);
   }
   const double reach = deepest + (kBackstopGapSpacings + 1.0) * d;  // [m]
-  const sim::Vec3 lo = box.min() - sim::Vec3::Constant(reach), hi = box.max() + sim::Vec3::Constant(reach);
+  const sim::Vec3 lo = box.min() - sim::Vec3::Constant(reach),
+                  hi = box.max() + sim::Vec3::Constant(reach);
   std::vector<sim::Vec3> points, normals;
   std::vector<int> tags;
   for (double x = lo.x(); x <= hi.x(); x += h)
@@ -198,11 +201,13 @@ std::size_t fillShellGaps(const meshing::TriangleMesh& cavityMesh, const ShellGa
       for (double z = lo.z(); z <= hi.z(); z += h) {
         const sim::Vec3 q(x, y, z);
         // Cheap rejections first: far from the sclera, or a shell wall already close.
-        if (!coveredGrid.anyWithin(q, reach) || shellGrid.anyWithin(q, kShellFillSpacings * d)) continue;
+        if (!coveredGrid.anyWithin(q, reach) || shellGrid.anyWithin(q, kShellFillSpacings * d))
+          continue;
         const sim::Vec3 foot = cavity.closestPoint(q);
         const long c = coveredGrid.nearest(foot, 4.0 * d);
         if (c < 0) continue;
-        const double depth = in.coveredLayer[static_cast<std::size_t>(c)] + kBackstopGapSpacings * d;  // [m]
+        const double depth =
+            in.coveredLayer[static_cast<std::size_t>(c)] + kBackstopGapSpacings * d;  // [m]
         const double r = (q - foot).norm();
         if (std::abs(r - depth) > 0.25 * d || cavity.isInside(q)) continue;
         if (freeGrid.anyWithin(q, 2.0 * d) || fatGrid.anyWithin(q, 2.0 * d)) continue;
@@ -539,7 +544,8 @@ void addTissues(const Protocol& p, Scenario& s) {
                         "the kernel's support (no empty gap, i.e. no p = 0 free surface, behind the pressurised globe)");
     if (seamCount > 0)
       s.notes.push_back("the wall shell behind the sclera closed: " + std::to_string(seamCount) +
-                        " wall particles where the backstop's, collar's and fan's samples left an opening wider than "
+                        " wall particles where the backstop's, collar's and fan's samples left an "
+                        "opening wider than "
                         "the cavity wall's");
     if (collarCount > 0)
       s.notes.push_back("sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL cap): " +

@@ -14,9 +14,9 @@
 #include "protocols/format/parse_protocol.h"
 #include "protocols/format/protocol_error.h"
 #include "protocols/io/frame_reader.h"
-#include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/enclosure.h"
 #include "protocols/scenario/point_grid.h"
+#include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/run_scenario.h"
 #include "protocols/scenario/scenario.h"
 #include "sim/solid/fixed_particles.h"
@@ -321,8 +321,10 @@ TEST_CASE("tissue: the anchored sclera layer is backed by the wall or the fat wi
 // point at its centre: its faces sampled on a square lattice at d/2 are closed at clearance d/2
 // (no point of a face farther than 0.35 d from a sample), at d they are open (0.71 d), and a hole
 // of radius d cut into a d/2 face is found, the path passing through it.
-TEST_CASE("tissue: the enclosure check finds a hole of radius d and the pores of a d lattice, not a d/2 wall",
-          "[unit][protocol][tissue]") {
+TEST_CASE(
+    "tissue: the enclosure check finds a hole of radius d and the pores of a d lattice, not a d/2 "
+    "wall",
+    "[unit][protocol][tissue]") {
   const double d = 1.0e-3, side = 10.0 * d;  // [m]
   const auto cube = [&](double spacing, double holeRadius) {
     std::vector<sim::Vec3> points;
@@ -341,7 +343,8 @@ TEST_CASE("tissue: the enclosure check finds a hole of radius d and the pores of
     return points;
   };
   // The grid is offset from the lattice (a box edge at a non-round place), as it is in a scene.
-  const Eigen::AlignedBox3d box(sim::Vec3::Constant(-3.13 * d), sim::Vec3::Constant(side + 3.07 * d));
+  const Eigen::AlignedBox3d box(sim::Vec3::Constant(-3.13 * d),
+                                sim::Vec3::Constant(side + 3.07 * d));
   const std::vector<sim::Vec3> centre{sim::Vec3::Constant(0.5 * side)};
   CHECK_FALSE(findEscapePath(cube(0.5 * d, 0.0), centre, box, 0.5 * d, 0.25 * d).escapes());
   CHECK(findEscapePath(cube(d, 0.0), centre, box, 0.5 * d, 0.25 * d).escapes());
@@ -361,7 +364,8 @@ std::vector<sim::Vec3> fluidPositions(const Scenario& s) {
   std::vector<sim::Vec3> fluid;
   const sim::DynamicParticles& particles = s.world->particles;
   for (std::size_t i = 0; i < particles.size(); ++i)
-    if (particles.material[i] == s.phases[0].materialIndex || particles.material[i] == s.phases[1].materialIndex)
+    if (particles.material[i] == s.phases[0].materialIndex ||
+        particles.material[i] == s.phases[1].materialIndex)
       fluid.push_back(particles.x[i]);
   return fluid;
 }
@@ -372,11 +376,15 @@ double widestOpening(const Scenario& s, double cell) {
   const double d = s.accuracy.particleSpacing;
   const std::vector<sim::Vec3> fluid = fluidPositions(s);
   double open = 0.25 * d, closed = 2.0 * d;
-  REQUIRE(findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, open, cell).escapes());
-  REQUIRE_FALSE(findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, closed, cell).escapes());
+  REQUIRE(
+      findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, open, cell).escapes());
+  REQUIRE_FALSE(findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, closed, cell)
+                    .escapes());
   while (closed - open > d / 64.0) {
     const double mid = 0.5 * (open + closed);
-    (findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, mid, cell).escapes() ? open : closed) = mid;
+    (findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, mid, cell).escapes()
+         ? open
+         : closed) = mid;
   }
   return open;
 }
@@ -407,16 +415,23 @@ TEST_CASE("tissue: the walls around the tissues open no wider than the rigid cav
   const std::vector<sim::Vec3> fluid = fluidPositions(paper);
   REQUIRE(fluid.size() == paper.phases[0].count + paper.phases[1].count);
   const sim::World& world = *paper.world;
-  const EscapePath path = findEscapePath(world.walls.x, fluid, world.parameters().domain, reference + 0.5 * cell, cell);
-  INFO("rigid cavity wall's widest opening " << reference / d << " d; the paper eye's walls at " << (reference + 0.5 * cell) / d << " d: "
-                                             << (path.escapes() ? "open" : "closed"));
+  const EscapePath path =
+      findEscapePath(world.walls.x, fluid, world.parameters().domain, reference + 0.5 * cell, cell);
+  INFO("rigid cavity wall's widest opening " << reference / d << " d; the paper eye's walls at "
+                                             << (reference + 0.5 * cell) / d
+                                             << " d: " << (path.escapes() ? "open" : "closed"));
   if (path.escapes()) {
     // Where it leads (mm, and the nearest wall particle in d): the narrowest point is the hole.
     const PointGrid wallGrid(world.walls.x, d);
-    for (std::size_t k = 0; k < path.points.size(); k += std::max<std::size_t>(1, path.points.size() / 40)) {
+    for (std::size_t k = 0; k < path.points.size();
+         k += std::max<std::size_t>(1, path.points.size() / 40)) {
       const long w = wallGrid.nearest(path.points[k], 8.0 * d);
-      UNSCOPED_INFO("path " << k << ": " << path.points[k].transpose() * 1e3 << " mm, nearest wall "
-                            << (w < 0 ? 8.0 : (world.walls.x[static_cast<std::size_t>(w)] - path.points[k]).norm() / d) << " d");
+      UNSCOPED_INFO(
+          "path " << k << ": " << path.points[k].transpose() * 1e3 << " mm, nearest wall "
+                  << (w < 0 ? 8.0
+                            : (world.walls.x[static_cast<std::size_t>(w)] - path.points[k]).norm() /
+                                  d)
+                  << " d");
     }
   }
   CHECK_FALSE(path.escapes());
