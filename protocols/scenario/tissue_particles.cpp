@@ -544,9 +544,8 @@ void addTissues(const Protocol& p, Scenario& s) {
                         "the kernel's support (no empty gap, i.e. no p = 0 free surface, behind the pressurised globe)");
     if (seamCount > 0)
       s.notes.push_back("the wall shell behind the sclera closed: " + std::to_string(seamCount) +
-                        " wall particles where the backstop's, collar's and fan's samples left an "
-                        "opening wider than "
-                        "the cavity wall's");
+                        " wall particles where the backstop's, collar's and fan's samples left "
+                        "openings wider than the cavity wall's");
     if (collarCount > 0)
       s.notes.push_back("sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL cap): " +
                         std::to_string(sclera.limbusClamped) + " sclera particles within " +
