@@ -146,7 +146,8 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
   for (std::size_t i = 0; i < s.world->particles.size(); ++i) fixedCount += sim::isFixed(s.world->particles, i);
   CHECK(fixedCount == s.tissues[0].anchored + s.tissues[1].anchored);
   // The walls over the sclera are replaced: at the cavity surface only the lens/IOL cap keeps wall
-  // particles; the others stand behind the anchored layer as the backstop (kBackstopGapSpacings d
+  // particles (and the limbus clamp band's face, among its anchored particles); the others stand
+  // behind the anchored layer as the backstop (kBackstopGapSpacings d
   // beyond it), only where no fat lies behind the sclera, and at least 2 d from every fat
   // particle. The cap's rim gets a collar (walls along the cap's normal out to the backstop's
   // depth, its nearest cavity point on the cap) and the fat an orbit (below). Every retina sample
@@ -156,7 +157,13 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
     std::vector<sim::Vec3> cap;
     for (const sim::Vec3& x : s.world->walls.x)
       if (cavity.squaredDistance(x) < 0.25 * d * d) cap.push_back(x);
-    std::size_t behind = 0, collar = 0;
+    std::vector<sim::Vec3> anchoredSclera;
+    for (std::size_t i = 0; i < s.world->particles.size(); ++i)
+      if (s.world->particles.material[i] == sclera.materialIndex &&
+          sim::isFixed(s.world->particles, i))
+        anchoredSclera.push_back(s.world->particles.x[i]);
+    const PointGrid anchoredGrid(anchoredSclera, d);
+    std::size_t behind = 0, collar = 0, band = 0;
     for (const sim::Vec3& x : s.world->walls.x) {
       const double r = std::sqrt(cavity.squaredDistance(x));
       if (r < 0.5 * d) continue;
@@ -165,9 +172,15 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
       if (onCap) {
         ++collar;  // from the cap's rim out to the backstop's depth: t_layer + kBackstopGapSpacings d
         CHECK(r < sclera.layerThickness + kBackstopGapSpacings * d + 0.6 * d);
-      } else {
+      } else if (r > kMinTissueLayerSpacings * d + 0.5 * d) {
         ++behind;
-        CHECK(r > kMinTissueLayerSpacings * d + 0.5 * d);
+      } else {
+        // Within the layer: only the walls of the limbus clamp band's face, among its anchored
+        // particles (within d of one) and none within 2 d of a free one (checked for every wall
+        // below); before session 9 there were none (fluid entered the band's lattice at d).
+        ++band;
+        CHECK(anchoredGrid.anyWithin(x, d));
+        CHECK(r < 1.5 * d + 1e-9);
       }
       for (std::size_t i = 0; i < s.world->particles.size(); ++i)
         if (s.world->particles.material[i] == s.tissues[1].materialIndex && (s.world->particles.x[i] - x).norm() < 2 * d) {
@@ -178,6 +191,7 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
     CHECK(cap.size() < s.retina.areas.size() / 4);
     CHECK(behind > 0);
     CHECK(collar > 0);
+    CHECK(band > 0);
     // Every wall stays in the World's domain (tissueDomainPadding covers the orbit).
     const sim::Box& domain = s.world->parameters().domain;
     for (const sim::Vec3& x : s.world->walls.x) CHECK(domain.contains(x));
