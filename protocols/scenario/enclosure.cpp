@@ -15,7 +15,8 @@ namespace {
 class Grid {
  public:
   Grid(const Eigen::AlignedBox3d& box, double cell) : origin_(box.min()), cell_(cell) {
-    for (int a = 0; a < 3; ++a) n_[a] = static_cast<std::int64_t>(std::floor(box.sizes()[a] / cell)) + 1;
+    for (int a = 0; a < 3; ++a)
+      n_[a] = static_cast<std::int64_t>(std::floor(box.sizes()[a] / cell)) + 1;
     if (static_cast<double>(n_[0]) * static_cast<double>(n_[1]) * static_cast<double>(n_[2]) > 4e8)
       throw sim::SimError("findEscapePath: more than 4e8 grid points, use a larger cell");
   }
@@ -30,7 +31,8 @@ class Grid {
   }
   sim::Vec3 point(std::size_t index) const {
     const auto c = cellOf(index);
-    return origin_ + cell_ * sim::Vec3(static_cast<double>(c[0]), static_cast<double>(c[1]), static_cast<double>(c[2]));
+    return origin_ + cell_ * sim::Vec3(static_cast<double>(c[0]), static_cast<double>(c[1]),
+                                       static_cast<double>(c[2]));
   }
   // The grid coordinate of x along an axis, rounded down (not clamped).
   std::int64_t below(const sim::Vec3& x, int axis) const {
@@ -50,13 +52,15 @@ class Grid {
 };
 
 // Grid points closer than `clearance` to an obstacle point.
-std::vector<char> blockedPoints(const Grid& grid, const std::vector<sim::Vec3>& obstacles, double clearance) {
+std::vector<char> blockedPoints(const Grid& grid, const std::vector<sim::Vec3>& obstacles,
+                                double clearance) {
   std::vector<char> blocked(grid.size(), 0);
   for (const sim::Vec3& x : obstacles) {
     std::array<std::int64_t, 3> lo{}, hi{};
     for (int a = 0; a < 3; ++a) {
       lo[a] = std::max<std::int64_t>(0, grid.below(x - sim::Vec3::Constant(clearance), a));
-      hi[a] = std::min<std::int64_t>(grid.count(a) - 1, grid.below(x + sim::Vec3::Constant(clearance), a) + 1);
+      hi[a] = std::min<std::int64_t>(grid.count(a) - 1,
+                                     grid.below(x + sim::Vec3::Constant(clearance), a) + 1);
     }
     for (std::int64_t k = lo[2]; k <= hi[2]; ++k)
       for (std::int64_t j = lo[1]; j <= hi[1]; ++j)
@@ -70,19 +74,22 @@ std::vector<char> blockedPoints(const Grid& grid, const std::vector<sim::Vec3>& 
 
 }  // namespace
 
-EscapePath findEscapePath(const std::vector<sim::Vec3>& obstacles, const std::vector<sim::Vec3>& starts,
-                          const Eigen::AlignedBox3d& box, double clearance, double cell) {
+EscapePath findEscapePath(const std::vector<sim::Vec3>& obstacles,
+                          const std::vector<sim::Vec3>& starts, const Eigen::AlignedBox3d& box,
+                          double clearance, double cell) {
   const Grid grid(box, cell);
   const std::vector<char> blocked = blockedPoints(grid, obstacles, clearance);
   constexpr std::uint32_t kUnseen = 0xFFFFFFFFu, kStart = 0xFFFFFFFEu;
-  if (grid.size() >= kStart) throw sim::SimError("findEscapePath: grid too large for its parent links");
+  if (grid.size() >= kStart)
+    throw sim::SimError("findEscapePath: grid too large for its parent links");
   std::vector<std::uint32_t> parent(grid.size(), kUnseen);
   std::deque<std::size_t> queue;
   for (const sim::Vec3& x : starts) {
     if (!box.contains(x)) continue;
-    const std::size_t at = grid.index(std::clamp<std::int64_t>(grid.below(x, 0), 0, grid.count(0) - 1),
-                                      std::clamp<std::int64_t>(grid.below(x, 1), 0, grid.count(1) - 1),
-                                      std::clamp<std::int64_t>(grid.below(x, 2), 0, grid.count(2) - 1));
+    const std::size_t at =
+        grid.index(std::clamp<std::int64_t>(grid.below(x, 0), 0, grid.count(0) - 1),
+                   std::clamp<std::int64_t>(grid.below(x, 1), 0, grid.count(1) - 1),
+                   std::clamp<std::int64_t>(grid.below(x, 2), 0, grid.count(2) - 1));
     if (blocked[at] || parent[at] != kUnseen) continue;
     parent[at] = kStart;
     queue.push_back(at);

@@ -27,7 +27,8 @@ struct EscapePath {
 
 // Breadth-first over the grid from the starts' points (starts in blocked points are skipped), so
 // the path is a shortest one in grid steps.
-EscapePath findEscapePath(const std::vector<sim::Vec3>& obstacles, const std::vector<sim::Vec3>& starts,
-                          const Eigen::AlignedBox3d& box, double clearance, double cell);
+EscapePath findEscapePath(const std::vector<sim::Vec3>& obstacles,
+                          const std::vector<sim::Vec3>& starts, const Eigen::AlignedBox3d& box,
+                          double clearance, double cell);
 
 }  // namespace protocols

@@ -22,7 +22,8 @@
 //   The walls behind the sclera (backstop, the limbus collar and its fan) are closed where their
 //   samples spread: a d/2 lattice on the same surface fills their openings, so that none is wider
 //   than the cavity wall's by more than the check's resolution (docs/elasticity.md "The limbus
-//   band, watertight"; enclosure.h).
+//   band, watertight"; enclosure.h). The limbus clamp band (anchored, on the lattice at d, which
+//   let fluid in) gets wall particles at d/2 on its face, away from every free sclera particle.
 //   A sclera thinner than kMinTissueLayerSpacings d cannot be resolved (the elasticity needs
 //   two layers for its quadratic gradients, docs/elasticity.md), so the particle layer is
 //   thickened to that and Young's modulus scaled by t / t_layer (area-weighted means over the

@@ -14,9 +14,9 @@
 #include "protocols/format/parse_protocol.h"
 #include "protocols/format/protocol_error.h"
 #include "protocols/io/frame_reader.h"
-#include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/enclosure.h"
 #include "protocols/scenario/point_grid.h"
+#include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/run_scenario.h"
 #include "protocols/scenario/scenario.h"
 #include "sim/solid/fixed_particles.h"
@@ -146,7 +146,8 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
   for (std::size_t i = 0; i < s.world->particles.size(); ++i) fixedCount += sim::isFixed(s.world->particles, i);
   CHECK(fixedCount == s.tissues[0].anchored + s.tissues[1].anchored);
   // The walls over the sclera are replaced: at the cavity surface only the lens/IOL cap keeps wall
-  // particles; the others stand behind the anchored layer as the backstop (kBackstopGapSpacings d
+  // particles (and the limbus clamp band's face, among its anchored particles); the others stand
+  // behind the anchored layer as the backstop (kBackstopGapSpacings d
   // beyond it), only where no fat lies behind the sclera, and at least 2 d from every fat
   // particle. The cap's rim gets a collar (walls along the cap's normal out to the backstop's
   // depth, its nearest cavity point on the cap) and the fat an orbit (below). Every retina sample
@@ -156,7 +157,13 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
     std::vector<sim::Vec3> cap;
     for (const sim::Vec3& x : s.world->walls.x)
       if (cavity.squaredDistance(x) < 0.25 * d * d) cap.push_back(x);
-    std::size_t behind = 0, collar = 0;
+    std::vector<sim::Vec3> anchoredSclera;
+    for (std::size_t i = 0; i < s.world->particles.size(); ++i)
+      if (s.world->particles.material[i] == sclera.materialIndex &&
+          sim::isFixed(s.world->particles, i))
+        anchoredSclera.push_back(s.world->particles.x[i]);
+    const PointGrid anchoredGrid(anchoredSclera, d);
+    std::size_t behind = 0, collar = 0, band = 0;
     for (const sim::Vec3& x : s.world->walls.x) {
       const double r = std::sqrt(cavity.squaredDistance(x));
       if (r < 0.5 * d) continue;
@@ -165,9 +172,15 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
       if (onCap) {
         ++collar;  // from the cap's rim out to the backstop's depth: t_layer + kBackstopGapSpacings d
         CHECK(r < sclera.layerThickness + kBackstopGapSpacings * d + 0.6 * d);
-      } else {
+      } else if (r > kMinTissueLayerSpacings * d + 0.5 * d) {
         ++behind;
-        CHECK(r > kMinTissueLayerSpacings * d + 0.5 * d);
+      } else {
+        // Within the layer: only the walls of the limbus clamp band's face, among its anchored
+        // particles (within d of one) and none within 2 d of a free one (checked for every wall
+        // below); before session 9 there were none (fluid entered the band's lattice at d).
+        ++band;
+        CHECK(anchoredGrid.anyWithin(x, d));
+        CHECK(r < 1.5 * d + 1e-9);
       }
       for (std::size_t i = 0; i < s.world->particles.size(); ++i)
         if (s.world->particles.material[i] == s.tissues[1].materialIndex && (s.world->particles.x[i] - x).norm() < 2 * d) {
@@ -178,6 +191,7 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
     CHECK(cap.size() < s.retina.areas.size() / 4);
     CHECK(behind > 0);
     CHECK(collar > 0);
+    CHECK(band > 0);
     // Every wall stays in the World's domain (tissueDomainPadding covers the orbit).
     const sim::Box& domain = s.world->parameters().domain;
     for (const sim::Vec3& x : s.world->walls.x) CHECK(domain.contains(x));
@@ -321,8 +335,10 @@ TEST_CASE("tissue: the anchored sclera layer is backed by the wall or the fat wi
 // point at its centre: its faces sampled on a square lattice at d/2 are closed at clearance d/2
 // (no point of a face farther than 0.35 d from a sample), at d they are open (0.71 d), and a hole
 // of radius d cut into a d/2 face is found, the path passing through it.
-TEST_CASE("tissue: the enclosure check finds a hole of radius d and the pores of a d lattice, not a d/2 wall",
-          "[unit][protocol][tissue]") {
+TEST_CASE(
+    "tissue: the enclosure check finds a hole of radius d and the pores of a d lattice, not a d/2 "
+    "wall",
+    "[unit][protocol][tissue]") {
   const double d = 1.0e-3, side = 10.0 * d;  // [m]
   const auto cube = [&](double spacing, double holeRadius) {
     std::vector<sim::Vec3> points;
@@ -341,7 +357,8 @@ TEST_CASE("tissue: the enclosure check finds a hole of radius d and the pores of
     return points;
   };
   // The grid is offset from the lattice (a box edge at a non-round place), as it is in a scene.
-  const Eigen::AlignedBox3d box(sim::Vec3::Constant(-3.13 * d), sim::Vec3::Constant(side + 3.07 * d));
+  const Eigen::AlignedBox3d box(sim::Vec3::Constant(-3.13 * d),
+                                sim::Vec3::Constant(side + 3.07 * d));
   const std::vector<sim::Vec3> centre{sim::Vec3::Constant(0.5 * side)};
   CHECK_FALSE(findEscapePath(cube(0.5 * d, 0.0), centre, box, 0.5 * d, 0.25 * d).escapes());
   CHECK(findEscapePath(cube(d, 0.0), centre, box, 0.5 * d, 0.25 * d).escapes());
@@ -361,7 +378,8 @@ std::vector<sim::Vec3> fluidPositions(const Scenario& s) {
   std::vector<sim::Vec3> fluid;
   const sim::DynamicParticles& particles = s.world->particles;
   for (std::size_t i = 0; i < particles.size(); ++i)
-    if (particles.material[i] == s.phases[0].materialIndex || particles.material[i] == s.phases[1].materialIndex)
+    if (particles.material[i] == s.phases[0].materialIndex ||
+        particles.material[i] == s.phases[1].materialIndex)
       fluid.push_back(particles.x[i]);
   return fluid;
 }
@@ -372,11 +390,15 @@ double widestOpening(const Scenario& s, double cell) {
   const double d = s.accuracy.particleSpacing;
   const std::vector<sim::Vec3> fluid = fluidPositions(s);
   double open = 0.25 * d, closed = 2.0 * d;
-  REQUIRE(findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, open, cell).escapes());
-  REQUIRE_FALSE(findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, closed, cell).escapes());
+  REQUIRE(
+      findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, open, cell).escapes());
+  REQUIRE_FALSE(findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, closed, cell)
+                    .escapes());
   while (closed - open > d / 64.0) {
     const double mid = 0.5 * (open + closed);
-    (findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, mid, cell).escapes() ? open : closed) = mid;
+    (findEscapePath(s.world->walls.x, fluid, s.world->parameters().domain, mid, cell).escapes()
+         ? open
+         : closed) = mid;
   }
   return open;
 }
@@ -407,16 +429,23 @@ TEST_CASE("tissue: the walls around the tissues open no wider than the rigid cav
   const std::vector<sim::Vec3> fluid = fluidPositions(paper);
   REQUIRE(fluid.size() == paper.phases[0].count + paper.phases[1].count);
   const sim::World& world = *paper.world;
-  const EscapePath path = findEscapePath(world.walls.x, fluid, world.parameters().domain, reference + 0.5 * cell, cell);
-  INFO("rigid cavity wall's widest opening " << reference / d << " d; the paper eye's walls at " << (reference + 0.5 * cell) / d << " d: "
-                                             << (path.escapes() ? "open" : "closed"));
+  const EscapePath path =
+      findEscapePath(world.walls.x, fluid, world.parameters().domain, reference + 0.5 * cell, cell);
+  INFO("rigid cavity wall's widest opening " << reference / d << " d; the paper eye's walls at "
+                                             << (reference + 0.5 * cell) / d
+                                             << " d: " << (path.escapes() ? "open" : "closed"));
   if (path.escapes()) {
     // Where it leads (mm, and the nearest wall particle in d): the narrowest point is the hole.
     const PointGrid wallGrid(world.walls.x, d);
-    for (std::size_t k = 0; k < path.points.size(); k += std::max<std::size_t>(1, path.points.size() / 40)) {
+    for (std::size_t k = 0; k < path.points.size();
+         k += std::max<std::size_t>(1, path.points.size() / 40)) {
       const long w = wallGrid.nearest(path.points[k], 8.0 * d);
-      UNSCOPED_INFO("path " << k << ": " << path.points[k].transpose() * 1e3 << " mm, nearest wall "
-                            << (w < 0 ? 8.0 : (world.walls.x[static_cast<std::size_t>(w)] - path.points[k]).norm() / d) << " d");
+      UNSCOPED_INFO(
+          "path " << k << ": " << path.points[k].transpose() * 1e3 << " mm, nearest wall "
+                  << (w < 0 ? 8.0
+                            : (world.walls.x[static_cast<std::size_t>(w)] - path.points[k]).norm() /
+                                  d)
+                  << " d");
     }
   }
   CHECK_FALSE(path.escapes());
