@@ -226,13 +226,11 @@ std::size_t fillShellGaps(const meshing::TriangleMesh& cavityMesh, const ShellGa
 // They never move and enter no free particle's elastic stencil, so they act on the scene only as
 // a wall does, but on the lattice at d, whose openings let fluid in (10 kPa, 0.6 s: 10 fluid
 // particles in the band, 0.5-1.3 d from its anchored particles, none within 1.5 d of a free one).
+// `freeSclera`: the rest positions of the sclera's free (not anchored) particles.
 std::vector<char> clampBandInterior(const TissueBody& sclera,
-                                    const sim::DynamicParticles& particles, double d) {
+                                    const sim::DynamicParticles& particles,
+                                    const std::vector<sim::Vec3>& freeSclera, double d) {
   const double support = sim::ElasticityParameters{}.supportRadiusFactor * d;  // [m]
-  std::vector<sim::Vec3> freeSclera;
-  for (std::size_t k = 0; k < sclera.count; ++k)
-    if (!sim::isFixed(particles, static_cast<std::size_t>(sclera.firstId) + k))
-      freeSclera.push_back(sclera.restPositions[k]);
   const PointGrid freeGrid(freeSclera, support);
   std::vector<char> interior(sclera.count, 0);
   for (std::size_t k = 0; k < sclera.count; ++k)
@@ -580,7 +578,8 @@ void addTissues(const Protocol& p, Scenario& s) {
           freeSclera.push_back(sclera.restPositions[k]);
       const ShellGapInput in{covered, coveredLayer, coveredTag, freeSclera, fat, d};
       seamCount = fillShellGaps(s.cavity, in, added, addedNormal, addedTag);
-      const std::vector<char> interior = clampBandInterior(sclera, s.world->particles, d);
+      const std::vector<char> interior =
+          clampBandInterior(sclera, s.world->particles, freeSclera, d);
       bandCount =
           wallClampBand(s.cavity, in, sclera.restPositions, interior, added, addedNormal, addedTag);
     }
@@ -627,8 +626,7 @@ void addTissues(const Protocol& p, Scenario& s) {
           " wall particles at half the spacing among its anchored sclera particles within " +
           formatNumber(kBandFaceSpacings, 2) +
           " spacings of the cavity, none within 2 spacings of a free one or of an anchored one "
-          "next "
-          "to a free one (the band's lattice at d let fluid in)");
+          "next to a free one (the band's lattice at d let fluid in)");
     if (seamCount > 0)
       s.notes.push_back("the wall shell behind the sclera closed: " + std::to_string(seamCount) +
                         " wall particles where the backstop's, collar's and fan's samples left "
