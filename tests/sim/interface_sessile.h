@@ -5,6 +5,7 @@
 // by fitting a spherical cap to the interface (sim/measure/sessile_contact_angle.h).
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -30,7 +31,7 @@ struct SessileCase {
   Real jitter = 0;         // [d] DropletSpec::jitter of the start lattice
   int relaxSteps = 0;      // steps with the velocities reset after each, before the run
   Real r0 = 0.003;         // [m] radius of the hemisphere whose volume the droplet has
-  Real boxHeightPerR = 1.6;  // [1] inner box height over R0 (flat caps fit a lower box)
+  Real boxHeightPerR = 1.6;  // [1] least inner box height over R0 (raised to clear the caps by 2 h)
 };
 
 struct SessileResult {
@@ -43,6 +44,14 @@ struct SessileResult {
   bool adhesion = false;  // the pipeline has the wall_adhesion stage
 };
 
+inline constexpr Real kDegree = 3.14159265358979323846 / 180.0;  // [rad]
+
+// [m] Height above the floor of the top of the cap that has the volume of a hemisphere of radius
+// r0 and cos(theta through the oil) = u: radius R = r0 cbrt(2 / ((2 + u)(1 - u)^2)), top R (1 - u).
+inline Real sessileCapTop(Real r0, Real u) {
+  return r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u))) * (1 - u);
+}
+
 // The scene of a sessile case before any step: the droplet as the cap of start angle
 // acos(-startCos) and the hemisphere's volume, the requested angle set on the floor.
 inline DropletScene sessileScene(const SessileCase& c) {
@@ -51,8 +60,14 @@ inline DropletScene sessileScene(const SessileCase& c) {
   s.spacing = r0 / c.perR;
   s.halfWidth = c.halfWidthPerR * r0;  // at 2 R0 the 120 deg cap (base 0.73 R) stays 5 h from
                                        // the side walls
-  s.boxHeight = c.boxHeightPerR * r0;  // 1.6: the 120 deg cap's top (1.26 R) stays 2 h below
-                                       // the lid
+  // The lid clears the top of both the start cap and the requested angle's cap by 2 h. A droplet
+  // whose top comes within the (neutral, 90 deg) lid's support bridges floor and lid and is held
+  // there: in the old fixed 1.6 R0 box the 150 deg cap's top (1.49 R0) sat 0.7 d below the lid,
+  // and 150 deg requested read 142.6-144.8 deg, 165 deg 151-153, the bridge's angle, not the
+  // floor's (docs/interface.md, validation 3, session 10).
+  const Real h = 2.0 * s.spacing;  // [m] kernel support (World's supportRadiusFactor 2)
+  s.boxHeight = std::max(c.boxHeightPerR * r0,
+                         std::max(sessileCapTop(r0, -c.startCos), sessileCapTop(r0, std::cos(c.theta * kDegree))) + 2 * h);
   s.sigma = 0.04;
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
   s.wallLayers = c.wallLayers;
