@@ -7,6 +7,9 @@
 //                                      the cap fit on a static cap of exactly THETA
 //   sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] [depth_per_d]
 //                                      the meniscus between two parallel walls (straight contact lines)
+//   sim_interface_bench ridge THETA_DEG [t_end_s] [start_deg] [R0_per_d] [mu_Pa_s] [depth_per_d]
+//                                      the sessile ridge (a cylindrical droplet, straight contact lines)
+//   sim_interface_bench ridge-static THETA_DEG [R0_per_d] [jitter_d]   its fit on a static segment
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
 //                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
 //                                      equilibrium tamponade shape in a spherical cavity
@@ -24,6 +27,7 @@
 
 #include "interface_fixtures.h"
 #include "interface_meniscus.h"
+#include "interface_ridge.h"
 #include "interface_oscillation.h"
 #include "interface_sessile.h"
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
@@ -439,6 +443,36 @@ int main(int argc, char** argv) {
                 r.seconds, r.finite ? "" : " (NOT FINITE)");
     return r.finite ? 0 : 1;
   }
+  if (argc >= 3 && std::strcmp(argv[1], "ridge") == 0) {
+    testing::RidgeCase c;
+    c.theta = std::atof(argv[2]);
+    c.print = true;
+    if (argc > 3) c.tEnd = std::atof(argv[3]);
+    c.startTheta = argc > 4 ? std::atof(argv[4]) : c.theta;
+    if (argc > 5) c.r0PerD = std::atof(argv[5]);
+    if (argc > 6) c.viscosity = std::atof(argv[6]);
+    if (argc > 7) c.depthPerD = std::atof(argv[7]);
+    const testing::RidgeResult r = testing::runRidge(c);
+    std::printf("ridge: requested %.1f deg, start %.1f deg, R0 = %.0f d, depth %.0f d: measured "
+                "%.1f deg (mean of the last fifth; %.1f at the end) after %.3f s; %zu particles, "
+                "%ld steps, wall %.1f s%s\n",
+                c.theta, c.startTheta, c.r0PerD, c.depthPerD, r.angle, r.finalAngle, c.tEnd,
+                r.particles, r.steps, r.seconds, r.finite ? "" : " (NOT FINITE)");
+    return r.finite ? 0 : 1;
+  }
+  if (argc >= 3 && std::strcmp(argv[1], "ridge-static") == 0) {
+    testing::RidgeCase c;
+    c.theta = c.startTheta = std::atof(argv[2]);
+    if (argc > 3) c.r0PerD = std::atof(argv[3]);
+    c.jitter = argc > 4 ? std::atof(argv[4]) : 0;
+    const testing::RidgeScene scene = testing::ridgeScene(c);
+    const testing::RidgeFit f = testing::fitRidge(*scene.world, scene.oil, scene.depth);
+    std::printf("static ridge %.1f deg, R0 = %.0f d, jitter %.2f d: fit %.2f deg (R = %.2f mm, rms "
+                "%.3f mm, %zu points), %zu particles\n",
+                c.theta, c.r0PerD, c.jitter, f.angle, f.radius * 1e3, f.rms * 1e3, f.points,
+                scene.world->particles.size());
+    return 0;
+  }
   if (argc >= 3 && std::strcmp(argv[1], "cavity") == 0)
     return cavity(std::strcmp(argv[2], "flat") != 0, std::atof(argv[2]),
                   argc > 3 ? std::atof(argv[3]) : 0.1, argc > 4 ? std::atof(argv[4]) : 8,
@@ -459,6 +493,9 @@ int main(int argc, char** argv) {
       "[half_width_per_R]\n"
       "       sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] "
       "[depth_per_d]\n"
+      "       sim_interface_bench ridge THETA_DEG [t_end_s] [start_deg] [R0_per_d] [mu_Pa_s] "
+      "[depth_per_d]\n"
+      "       sim_interface_bench ridge-static THETA_DEG [R0_per_d] [jitter_d]\n"
       "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
       "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 
+#include "interface_ridge.h"
 #include "interface_sessile.h"
 
 using namespace sim;
@@ -63,6 +64,32 @@ TEST_CASE("Sessile droplet retracts to a 120 deg contact angle (through oil)",
 TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
           "[validation][interface][contact_angle]") {
   checkSessileAngle(30.0, 0.3);
+}
+
+// 150 deg on the sessile ridge (interface_ridge.h): a cylindrical droplet whose contact lines
+// are straight and 8.6 d apart. The round droplet's contact disc at 150 deg is 2.4 d in radius at
+// R0 = 6 d, no more than the 2 d support of the wall terms; there the balance is not resolved
+// (below). Ridge cross-section of a half-disc of R0 = 12 d (10k particles), INDSPH, three wall
+// layers, 0.2 d jittered start, mu 0.005 Pa s, started as the 150 deg segment. 0.2 s is eight
+// capillary times sqrt(rho R^3 / sigma) of its R = 4.3 mm. The test asks whether the requested
+// shape is where the balance holds, within the issue's +-5 deg.
+// Measured: 147.1 deg (146.7 at the end, drifting down 0.3 deg per 20 ms). From the 165 deg
+// segment: 155.3 (154.6), still descending. A 5 % error in the ratio of the tension to the wall
+// stress fails here. With the tension raised 5 % (sigma / 0.95) the run read 143.6. The round
+// R0 = 6 d droplet with the shipped code reads 156.5 from its 150 deg cap.
+TEST_CASE("Sessile ridge holds a 150 deg contact angle (through oil)",
+          "[validation][interface][contact_angle]") {
+  testing::RidgeCase c;
+  c.theta = 150;
+  c.startTheta = 150;
+  c.r0PerD = 12;
+  c.tEnd = 0.2;
+  c.viscosity = 0.005;
+  const testing::RidgeResult r = testing::runRidge(c);
+  std::printf("ridge 150 deg requested: %.1f deg measured (%.1f at the end), %ld steps, %.1f s\n",
+              r.angle, r.finalAngle, r.steps, r.seconds);
+  REQUIRE(r.finite);
+  CHECK(r.angle == Approx(150.0).margin(5.0));
 }
 
 // 90 and 150 deg (and the +-10 deg band outside 30-150) are benchmark runs:
