@@ -1,4 +1,4 @@
-// The sessile ridge (validation 3 above 140 deg and at 30 deg): a sessile droplet that is a long
+// The sessile ridge (validation 3 benchmark, `sim_interface_bench ridge`): a sessile droplet that is a long
 // cylindrical segment of oil on the floor of a closed aqueous box, its axis along z between two
 // neutral walls, no gravity. Its cross-section is a circular segment meeting the floor at theta,
 // and its two contact lines are straight and as long as the box is deep.
