@@ -6,7 +6,6 @@
 // 140 deg has a contact radius of 1-5 d). Run by `sim_interface_bench meniscus`.
 #pragma once
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -18,6 +17,7 @@
 #include <Eigen/Dense>
 
 #include "interface_fixtures.h"
+#include "interface_settle.h"
 
 namespace sim::testing {
 
@@ -103,14 +103,7 @@ inline MeniscusFit fitMeniscus(const World& w, int oil, Real gap, Real depth, Re
   return fit;
 }
 
-struct MeniscusResult {
-  Real angle = 0;       // [deg] mean over the last fifth
-  Real finalAngle = 0;  // [deg]
-  long steps = 0;
-  std::size_t particles = 0;
-  double seconds = 0;
-  bool finite = true;
-};
+using MeniscusResult = AngleRunResult;
 
 inline MeniscusResult runMeniscus(const MeniscusCase& c) {
   const Real d = c.spacing;
@@ -119,14 +112,8 @@ inline MeniscusResult runMeniscus(const MeniscusCase& c) {
   spec.innerMin = Vec3::Zero();
   spec.innerMax = Vec3(length, gap, depth);
   spec.closedTop = true;
-  WorldParameters params;
-  params.particleSpacing = d;
-  params.gravity = Vec3::Zero();
-  params.domain = tankDomain(spec, d);
   const WallLayers layers{3};
-  params.domain.extend(spec.innerMin - Vec3::Constant((layers.count + 1) * d));
-  params.domain.extend(spec.innerMax + Vec3::Constant((layers.count + 1) * d));
-  World w(params);
+  World w(layeredBoxParameters(spec, d, layers));
   const int oil = w.materials.add(liquid("oil", 970, c.viscosity));
   const int aqueous = w.materials.add(liquid("aqueous", 1000, c.viscosity));
   w.materials.setInterfacialTension(oil, aqueous, 0.04);
@@ -150,39 +137,15 @@ inline MeniscusResult runMeniscus(const MeniscusCase& c) {
       }
   w.materials.setContactAngle(oil, kFloorTag, c.theta);
   w.initialize();
-  PipelineOptions options;
-  options.solver = "indsph";
-  options.wallFriction = false;  // free slip, as the sessile runs: a no-slip wall pins the line
-  options.closedDomain = Force::kOn;
-  Pipeline pipeline = assemblePipeline(w, options);
-  pipeline.attach(w);
-  MeniscusResult r;
-  const auto t0 = std::chrono::steady_clock::now();
-  Real sum = 0, next = 0;
-  int samples = 0;
-  while (w.time < c.tEnd) {
-    pipeline.step(w);
-    if (w.time > 0.8 * c.tEnd) {
-      sum += fitMeniscus(w, oil, gap, depth, d).angle;
-      ++samples;
-    }
-    if (c.print && w.time >= next) {
-      const MeniscusFit f = fitMeniscus(w, oil, gap, depth, d);
-      std::printf("  t = %.4f s  theta = %.1f deg (R = %.2f mm = %.2f H, rms %.3f mm, %zu points)"
-                  "  steps %ld\n",
-                  w.time, f.angle, f.radius * 1e3, f.radius / gap, f.rms * 1e3, f.points,
-                  w.stepCount);
-      std::fflush(stdout);
-      next += c.tEnd / 10;
-    }
-  }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.finite = allFinite(w);
-  r.finalAngle = fitMeniscus(w, oil, gap, depth, d).angle;
-  r.angle = samples > 0 ? sum / samples : r.finalAngle;
-  r.steps = w.stepCount;
-  r.particles = w.particles.size();
-  return r;
+  const auto measure = [&](const World& world) { return fitMeniscus(world, oil, gap, depth, d).angle; };
+  const auto describe = [&](const World& world) {
+    const MeniscusFit f = fitMeniscus(world, oil, gap, depth, d);
+    char line[128];
+    std::snprintf(line, sizeof line, "theta = %.1f deg (R = %.2f mm = %.2f H, rms %.3f mm, %zu points)",
+                  f.angle, f.radius * 1e3, f.radius / gap, f.rms * 1e3, f.points);
+    return std::string(line);
+  };
+  return settleContactAngle(w, c.tEnd, c.print, measure, describe);
 }
 
 }  // namespace sim::testing

@@ -19,14 +19,15 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
 #include <random>
+#include <string>
 #include <vector>
 
 #include "interface_fixtures.h"
+#include "interface_settle.h"
 #include "sim/measure/sessile_contact_angle.h"
 
 namespace sim::testing {
@@ -130,14 +131,8 @@ inline RidgeScene ridgeScene(const RidgeCase& c) {
   spec.innerMin = Vec3::Zero();
   spec.innerMax = Vec3(2 * halfWidth, height, scene.depth);
   spec.closedTop = true;
-  WorldParameters params;
-  params.particleSpacing = d;
-  params.gravity = Vec3::Zero();
-  params.domain = tankDomain(spec, d);
   const WallLayers layers{3};
-  params.domain.extend(spec.innerMin - Vec3::Constant((layers.count + 1) * d));
-  params.domain.extend(spec.innerMax + Vec3::Constant((layers.count + 1) * d));
-  scene.world = std::make_unique<World>(params);
+  scene.world = std::make_unique<World>(layeredBoxParameters(spec, d, layers));
   World& w = *scene.world;
   scene.oil = w.materials.add(liquid("oil", 970, c.viscosity));
   const int aqueous = w.materials.add(liquid("aqueous", 1000, c.viscosity));
@@ -166,49 +161,19 @@ inline RidgeScene ridgeScene(const RidgeCase& c) {
   return scene;
 }
 
-struct RidgeResult {
-  Real angle = 0;       // [deg] through the oil, mean over the last fifth of the run
-  Real finalAngle = 0;  // [deg] at the end
-  long steps = 0;
-  std::size_t particles = 0;
-  double seconds = 0;  // [s] wall time of the stepping
-  bool finite = true;
-};
+using RidgeResult = AngleRunResult;
 
 inline RidgeResult runRidge(const RidgeCase& c) {
   RidgeScene scene = ridgeScene(c);
-  World& w = *scene.world;
-  PipelineOptions options;
-  options.solver = "indsph";
-  options.wallFriction = false;  // free slip, as the round droplet: a no-slip wall pins the line
-  options.closedDomain = Force::kOn;
-  Pipeline pipeline = assemblePipeline(w, options);
-  pipeline.attach(w);
-  RidgeResult r;
-  const auto t0 = std::chrono::steady_clock::now();
-  Real sum = 0, next = 0;
-  int samples = 0;
-  while (w.time < c.tEnd) {
-    pipeline.step(w);
-    if (w.time > 0.8 * c.tEnd) {
-      sum += fitRidge(w, scene.oil, scene.depth).angle;
-      ++samples;
-    }
-    if (c.print && w.time >= next) {
-      const RidgeFit f = fitRidge(w, scene.oil, scene.depth);
-      std::printf("  t = %.4f s  theta = %.1f deg (R = %.2f mm, rms %.3f mm, %zu points)  steps %ld\n",
-                  w.time, f.angle, f.radius * 1e3, f.rms * 1e3, f.points, w.stepCount);
-      std::fflush(stdout);
-      next += c.tEnd / 10;
-    }
-  }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.finite = allFinite(w);
-  r.finalAngle = fitRidge(w, scene.oil, scene.depth).angle;
-  r.angle = samples > 0 ? sum / samples : r.finalAngle;
-  r.steps = w.stepCount;
-  r.particles = w.particles.size();
-  return r;
+  const auto measure = [&](const World& w) { return fitRidge(w, scene.oil, scene.depth).angle; };
+  const auto describe = [&](const World& w) {
+    const RidgeFit f = fitRidge(w, scene.oil, scene.depth);
+    char line[128];
+    std::snprintf(line, sizeof line, "theta = %.1f deg (R = %.2f mm, rms %.3f mm, %zu points)",
+                  f.angle, f.radius * 1e3, f.rms * 1e3, f.points);
+    return std::string(line);
+  };
+  return settleContactAngle(*scene.world, c.tEnd, c.print, measure, describe);
 }
 
 }  // namespace sim::testing

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "interface_fixtures.h"
+#include "interface_settle.h"
 #include "sim/measure/sessile_contact_angle.h"
 
 namespace sim::testing {
@@ -34,13 +35,7 @@ struct SessileCase {
   Real boxHeightPerR = 1.6;  // [1] least inner box height over R0 (raised to clear the caps by 2 h)
 };
 
-struct SessileResult {
-  Real angle = 0;       // [deg] through the oil, mean over the last fifth of the run
-  Real finalAngle = 0;  // [deg] at the end
-  long steps = 0;
-  std::size_t particles = 0;
-  double seconds = 0;  // [s] wall time of the stepping
-  bool finite = true;
+struct SessileResult : AngleRunResult {
   bool adhesion = false;  // the pipeline has the wall_adhesion stage
 };
 
