@@ -71,9 +71,11 @@ TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
 //   deg from its own cap. Its contact disc is 2.4 d in radius, no more than the wall terms' 2 d
 //   support. From the hemisphere it lifts off.
 // - Sessile ridge, a cylindrical droplet with straight contact lines (`sim_interface_bench ridge
-//   150 T START 12`, interface_ridge.h): it settles at about 144 deg from the 150 and the 165 deg
-//   segments (143.8 at 0.56 s; 146.5 at 0.64 s, still descending). At 0.2 s it still read 147.1,
-//   so a short test would pass on the transient, not the balance.
+//   150 T START R0_PER_D`, interface_ridge.h): with R0 = 12 d it settles at 141.9-143.8 deg,
+//   from below and from above. It converges with resolution: 145.7 at R0 = 18 d after 1 s, and
+//   148.1 at 24 d after 0.5 s (28k particles, 23 min), both still creeping down. At 0.2 s the
+//   R0 = 12 d ridge still read 147.1, so a short CI run would pass on the transient, not on
+//   the balance.
 // 165 deg holds 163.6 on the R0 = 24 d ridge from its own segment but stays pinned at 150.7 from
 // the 150 deg segment (29k particles, 342 s per 0.2 s). Not asserted, since a failing check would
 // only restate the open item. (The 142.6-144.8 deg of session 9 was the round droplet touching the
