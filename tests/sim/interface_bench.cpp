@@ -6,9 +6,11 @@
 //   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R]
 //                                      the cap fit on a static cap of exactly THETA
 //   sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] [depth_per_d]
-//                                      the meniscus between two parallel walls (straight contact lines)
+//                                      the meniscus between two parallel walls (straight contact
+//                                      lines)
 //   sim_interface_bench ridge THETA_DEG [t_end_s] [start_deg] [R0_per_d] [mu_Pa_s] [depth_per_d]
-//                                      the sessile ridge (a cylindrical droplet, straight contact lines)
+//                                      the sessile ridge (a cylindrical droplet, straight contact
+//                                      lines)
 //   sim_interface_bench ridge-static THETA_DEG [R0_per_d] [jitter_d]   its fit on a static segment
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
 //                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
@@ -27,8 +29,8 @@
 
 #include "interface_fixtures.h"
 #include "interface_meniscus.h"
-#include "interface_ridge.h"
 #include "interface_oscillation.h"
+#include "interface_ridge.h"
 #include "interface_sessile.h"
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/effects/wall_adhesion_young.h"
@@ -453,11 +455,12 @@ int main(int argc, char** argv) {
     if (argc > 6) c.viscosity = std::atof(argv[6]);
     if (argc > 7) c.depthPerD = std::atof(argv[7]);
     const testing::RidgeResult r = testing::runRidge(c);
-    std::printf("ridge: requested %.1f deg, start %.1f deg, R0 = %.0f d, depth %.0f d: measured "
-                "%.1f deg (mean of the last fifth; %.1f at the end) after %.3f s; %zu particles, "
-                "%ld steps, wall %.1f s%s\n",
-                c.theta, c.startTheta, c.r0PerD, c.depthPerD, r.angle, r.finalAngle, c.tEnd,
-                r.particles, r.steps, r.seconds, r.finite ? "" : " (NOT FINITE)");
+    std::printf(
+        "ridge: requested %.1f deg, start %.1f deg, R0 = %.0f d, depth %.0f d: measured "
+        "%.1f deg (mean of the last fifth; %.1f at the end) after %.3f s; %zu particles, "
+        "%ld steps, wall %.1f s%s\n",
+        c.theta, c.startTheta, c.r0PerD, c.depthPerD, r.angle, r.finalAngle, c.tEnd, r.particles,
+        r.steps, r.seconds, r.finite ? "" : " (NOT FINITE)");
     return r.finite ? 0 : 1;
   }
   if (argc >= 3 && std::strcmp(argv[1], "ridge-static") == 0) {
@@ -467,10 +470,11 @@ int main(int argc, char** argv) {
     c.jitter = argc > 4 ? std::atof(argv[4]) : 0;
     const testing::RidgeScene scene = testing::ridgeScene(c);
     const testing::RidgeFit f = testing::fitRidge(*scene.world, scene.oil, scene.depth);
-    std::printf("static ridge %.1f deg, R0 = %.0f d, jitter %.2f d: fit %.2f deg (R = %.2f mm, rms "
-                "%.3f mm, %zu points), %zu particles\n",
-                c.theta, c.r0PerD, c.jitter, f.angle, f.radius * 1e3, f.rms * 1e3, f.points,
-                scene.world->particles.size());
+    std::printf(
+        "static ridge %.1f deg, R0 = %.0f d, jitter %.2f d: fit %.2f deg (R = %.2f mm, rms "
+        "%.3f mm, %zu points), %zu particles\n",
+        c.theta, c.r0PerD, c.jitter, f.angle, f.radius * 1e3, f.rms * 1e3, f.points,
+        scene.world->particles.size());
     return 0;
   }
   if (argc >= 3 && std::strcmp(argv[1], "cavity") == 0)
@@ -484,7 +488,8 @@ int main(int argc, char** argv) {
       "usage: sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [solver=indsph|wcsph] "
       "[eps=0.05] [start=velocity|displace] [relax=100] [xsph=0] [alpha=0.05] [mu=1e-3] [box=2] "
       "[expansion=1] [tol=1e-4] [miniter=2] [maxiter=100] [warm=0.5] [omega=0.5] [dtmax=S] "
-      "[jitter=0] [divergence=1] [excess=E] [relaxfactor=0] [bg=off|PA] [form=auto|corrected|symmetric] [csv=FILE]\n"
+      "[jitter=0] [divergence=1] [excess=E] [relaxfactor=0] [bg=off|PA] "
+      "[form=auto|corrected|symmetric] [csv=FILE]\n"
       "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
       "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
       "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm] "

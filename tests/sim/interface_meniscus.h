@@ -137,12 +137,15 @@ inline MeniscusResult runMeniscus(const MeniscusCase& c) {
       }
   w.materials.setContactAngle(oil, kFloorTag, c.theta);
   w.initialize();
-  const auto measure = [&](const World& world) { return fitMeniscus(world, oil, gap, depth, d).angle; };
+  const auto measure = [&](const World& world) {
+    return fitMeniscus(world, oil, gap, depth, d).angle;
+  };
   const auto describe = [&](const World& world) {
     const MeniscusFit f = fitMeniscus(world, oil, gap, depth, d);
     char line[128];
-    std::snprintf(line, sizeof line, "theta = %.1f deg (R = %.2f mm = %.2f H, rms %.3f mm, %zu points)",
-                  f.angle, f.radius * 1e3, f.radius / gap, f.rms * 1e3, f.points);
+    std::snprintf(line, sizeof line,
+                  "theta = %.1f deg (R = %.2f mm = %.2f H, rms %.3f mm, %zu points)", f.angle,
+                  f.radius * 1e3, f.radius / gap, f.rms * 1e3, f.points);
     return std::string(line);
   };
   return settleContactAngle(w, c.tEnd, c.print, measure, describe);

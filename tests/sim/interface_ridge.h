@@ -1,7 +1,7 @@
-// The sessile ridge (validation 3 benchmark, `sim_interface_bench ridge`): a sessile droplet that is a long
-// cylindrical segment of oil on the floor of a closed aqueous box, its axis along z between two
-// neutral walls, no gravity. Its cross-section is a circular segment meeting the floor at theta,
-// and its two contact lines are straight and as long as the box is deep.
+// The sessile ridge (validation 3 benchmark, `sim_interface_bench ridge`): a sessile droplet that
+// is a long cylindrical segment of oil on the floor of a closed aqueous box, its axis along z
+// between two neutral walls, no gravity. Its cross-section is a circular segment meeting the floor
+// at theta, and its two contact lines are straight and as long as the box is deep.
 //
 // Why a ridge and not only the round droplet (interface_sessile.h): at the angles where a round
 // droplet's contact disc shrinks below the wall terms' 2 d support, the balance is no longer
@@ -33,15 +33,15 @@
 namespace sim::testing {
 
 struct RidgeCase {
-  Real theta = 90;         // [deg] requested on the floor, through the oil
-  Real startTheta = 90;    // [deg] the start segment, through the oil
-  Real r0PerD = 12;        // [1] radius of the half-disc whose area the cross-section has, in d
-  Real spacing = 0.0005;   // [m] d
-  Real depthPerD = 16;     // [1] the ridge's length (contact-line length) in spacings
-  Real tEnd = 0.3;         // [s]
-  Real viscosity = 0.05;   // [Pa s] both phases
-  Real jitter = 0.2;       // [d] start positions moved by up to this per axis
-  bool print = false;      // print the angle ten times during the run
+  Real theta = 90;        // [deg] requested on the floor, through the oil
+  Real startTheta = 90;   // [deg] the start segment, through the oil
+  Real r0PerD = 12;       // [1] radius of the half-disc whose area the cross-section has, in d
+  Real spacing = 0.0005;  // [m] d
+  Real depthPerD = 16;    // [1] the ridge's length (contact-line length) in spacings
+  Real tEnd = 0.3;        // [s]
+  Real viscosity = 0.05;  // [Pa s] both phases
+  Real jitter = 0.2;      // [d] start positions moved by up to this per axis
+  bool print = false;     // print the angle ten times during the run
 };
 
 struct RidgeFit {

@@ -61,8 +61,10 @@ inline DropletScene sessileScene(const SessileCase& c) {
   // and 150 deg requested read 142.6-144.8 deg, 165 deg 151-153, the bridge's angle, not the
   // floor's (docs/interface.md, validation 3, session 10).
   const Real h = 2.0 * s.spacing;  // [m] kernel support (World's supportRadiusFactor 2)
-  s.boxHeight = std::max(c.boxHeightPerR * r0,
-                         std::max(sessileCapTop(r0, -c.startCos), sessileCapTop(r0, std::cos(c.theta * kDegree))) + 2 * h);
+  s.boxHeight = std::max(
+      c.boxHeightPerR * r0,
+      std::max(sessileCapTop(r0, -c.startCos), sessileCapTop(r0, std::cos(c.theta * kDegree))) +
+          2 * h);
   s.sigma = 0.04;
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
   s.wallLayers = c.wallLayers;

@@ -16,7 +16,8 @@ namespace sim::testing {
 
 // World parameters of the closed box `spec` whose walls are `layers` lattice layers thick, without
 // gravity: the domain reaches one spacing beyond the outermost layer.
-inline WorldParameters layeredBoxParameters(const TankSpec& spec, Real d, const WallLayers& layers) {
+inline WorldParameters layeredBoxParameters(const TankSpec& spec, Real d,
+                                            const WallLayers& layers) {
   WorldParameters params;
   params.particleSpacing = d;
   params.gravity = Vec3::Zero();
