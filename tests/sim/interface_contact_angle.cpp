@@ -72,8 +72,8 @@ TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
 //   support. From the hemisphere it lifts off.
 // - Sessile ridge, a cylindrical droplet with straight contact lines (`sim_interface_bench ridge
 //   150 T START R0_PER_D`, interface_ridge.h): with R0 = 12 d it settles at 141.9-143.8 deg,
-//   from below and from above. It converges with resolution: 145.7 at R0 = 18 d after 1 s, and
-//   148.1 at 24 d after 0.5 s (28k particles, 23 min), both still creeping down. At 0.2 s the
+//   from below and from above. Larger ridges only move more slowly: R0 = 18 d reads 145.7 after
+//   1 s, R0 = 24 d 145.2 after 0.9 s (28k particles, 21 min), both still descending. At 0.2 s the
 //   R0 = 12 d ridge still read 147.1, so a short CI run would pass on the transient, not on
 //   the balance.
 // 165 deg holds 163.6 on the R0 = 24 d ridge from its own segment but stays pinned at 150.7 from
