@@ -66,6 +66,28 @@ struct DropletSpec {
   Real maxTimeStep = 0;       // [s] WorldParameters::maxTimeStep when > 0
 };
 
+// Fills the box from `origin` with nx x ny x nz lattice sites of spacing d, one particle at each
+// site's centre moved by up to `jitter` d per axis (std::mt19937, seed 7: the same start every
+// run), of the material `materialAt(site centre)` returns and mass rest density d^3 (1 +
+// massExcess). Shared by the droplet, meniscus and ridge scenes.
+template <class MaterialAt>
+void fillJitteredLattice(World& w, const Vec3& origin, int nx, int ny, int nz, Real d, Real jitter,
+                         Real massExcess, MaterialAt materialAt) {
+  std::mt19937 random(7);
+  const auto offset = [&] {
+    return jitter * d * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0);
+  };
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        const Vec3 x = origin + d * Vec3(i + 0.5, j + 0.5, k + 0.5);
+        const int m = materialAt(x);
+        const Vec3 moved = jitter > 0 ? Vec3(x + Vec3(offset(), offset(), offset())) : x;
+        w.particles.add(moved, Vec3::Zero(), w.materials[m].restDensity * d * d * d * (1 + massExcess),
+                        m);
+      }
+}
+
 // Fills the closed box on a lattice of spacing d starting kWallGap d from the walls; particles
 // within R of the centre are oil, the others aqueous. The droplet radius reported is the
 // radius of a sphere with the oil lattice's volume (N_oil d^3), which is what the pressure jump
@@ -111,23 +133,15 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   const int nx = static_cast<int>(std::lround(width / d));
   const int ny = static_cast<int>(std::lround(height / d));
   int oilCount = 0;
-  std::mt19937 random(7);
-  const auto jitter = [&] {
-    return s.jitter * d * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0);
-  };
-  for (int k = 0; k < nx; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
-        const Vec3 x = Vec3::Constant(gap) + d * Vec3(i + 0.5, j + 0.5, k + 0.5);
-        const Vec3 r = x - out.centre;
-        const Real c = r.norm() > 0 ? r.y() / r.norm() : 0;
-        const bool isOil = r.norm() < s.radius * (1 + s.p2Amplitude * 0.5 * (3 * c * c - 1));
-        const int m = isOil ? out.oil : out.aqueous;
-        oilCount += isOil;
-        const Vec3 moved = s.jitter > 0 ? Vec3(x + Vec3(jitter(), jitter(), jitter())) : x;
-        w.particles.add(moved, Vec3::Zero(),
-                        w.materials[m].restDensity * d * d * d * (1 + s.massExcess), m);
-      }
+  fillJitteredLattice(w, Vec3::Constant(gap), nx, ny, nx, d, s.jitter, s.massExcess,
+                      [&](const Vec3& x) {
+                        const Vec3 r = x - out.centre;
+                        const Real c = r.norm() > 0 ? r.y() / r.norm() : 0;
+                        const bool isOil =
+                            r.norm() < s.radius * (1 + s.p2Amplitude * 0.5 * (3 * c * c - 1));
+                        oilCount += isOil;
+                        return isOil ? out.oil : out.aqueous;
+                      });
   out.radius = std::cbrt(3.0 * oilCount * d * d * d / (4.0 * std::numbers::pi));
   w.initialize();
   return out;

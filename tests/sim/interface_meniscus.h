@@ -10,7 +10,6 @@
 #include <cstdio>
 #include <memory>
 #include <numbers>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -120,21 +119,12 @@ inline MeniscusResult runMeniscus(const MeniscusCase& c) {
   addTankWalls(w, spec, d, 0, layers);
   for (std::size_t b = 0; b < w.walls.size(); ++b)
     if (std::abs(w.walls.normal[b].y()) > 0.5) w.walls.tag[b] = kFloorTag;  // floor and lid
-  std::mt19937 random(7);
-  const auto jitter = [&] {
-    return c.jitter * d * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0);
-  };
   const int nx = static_cast<int>(std::lround(length / d));
   const int ny = static_cast<int>(std::lround(gap / d));
   const int nz = static_cast<int>(std::lround(depth / d));
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
-        const Vec3 x = d * Vec3(i + 0.5, j + 0.5, k + 0.5);
-        const int m = x.x() < 0.5 * length ? oil : aqueous;  // a flat (90 deg) start
-        w.particles.add(Vec3(x + Vec3(jitter(), jitter(), jitter())), Vec3::Zero(),
-                        w.materials[m].restDensity * d * d * d, m);
-      }
+  fillJitteredLattice(w, Vec3::Zero(), nx, ny, nz, d, c.jitter, 0.0, [&](const Vec3& x) {
+    return x.x() < 0.5 * length ? oil : aqueous;  // a flat (90 deg) start
+  });
   w.materials.setContactAngle(oil, kFloorTag, c.theta);
   w.initialize();
   const auto measure = [&](const World& world) {

@@ -22,7 +22,6 @@
 #include <cmath>
 #include <cstdio>
 #include <numbers>
-#include <random>
 #include <string>
 #include <vector>
 
@@ -141,21 +140,12 @@ inline RidgeScene ridgeScene(const RidgeCase& c) {
   for (std::size_t b = 0; b < w.walls.size(); ++b)
     if (w.walls.normal[b].y() < -0.5) w.walls.tag[b] = kFloorTag;  // the floor only
   const Real r = ridgeRadius(area, start), yc = -r * std::cos(start);
-  std::mt19937 random(7);
-  const auto jitter = [&] {
-    return c.jitter * d * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0);
-  };
   const int nx = static_cast<int>(std::lround(2 * halfWidth / d));
   const int ny = static_cast<int>(std::lround(height / d));
   const int nz = static_cast<int>(std::lround(scene.depth / d));
-  for (int k = 0; k < nz; ++k)
-    for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
-        const Vec3 x = d * Vec3(i + 0.5, j + 0.5, k + 0.5);
-        const int m = std::hypot(x.x() - halfWidth, x.y() - yc) < r ? scene.oil : aqueous;
-        w.particles.add(Vec3(x + Vec3(jitter(), jitter(), jitter())), Vec3::Zero(),
-                        w.materials[m].restDensity * d * d * d, m);
-      }
+  fillJitteredLattice(w, Vec3::Zero(), nx, ny, nz, d, c.jitter, 0.0, [&](const Vec3& x) {
+    return std::hypot(x.x() - halfWidth, x.y() - yc) < r ? scene.oil : aqueous;
+  });
   w.materials.setContactAngle(scene.oil, kFloorTag, c.theta);
   w.initialize();
   return scene;

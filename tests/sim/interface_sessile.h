@@ -9,6 +9,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -39,8 +40,6 @@ struct SessileResult : AngleRunResult {
   bool adhesion = false;  // the pipeline has the wall_adhesion stage
 };
 
-inline constexpr Real kDegree = 3.14159265358979323846 / 180.0;  // [rad]
-
 // [m] Height above the floor of the top of the cap that has the volume of a hemisphere of radius
 // r0 and cos(theta through the oil) = u: radius R = r0 cbrt(2 / ((2 + u)(1 - u)^2)), top R (1 - u).
 inline Real sessileCapTop(Real r0, Real u) {
@@ -63,7 +62,7 @@ inline DropletScene sessileScene(const SessileCase& c) {
   const Real h = 2.0 * s.spacing;  // [m] kernel support (World's supportRadiusFactor 2)
   s.boxHeight = std::max(
       c.boxHeightPerR * r0,
-      std::max(sessileCapTop(r0, -c.startCos), sessileCapTop(r0, std::cos(c.theta * kDegree))) +
+      std::max(sessileCapTop(r0, -c.startCos), sessileCapTop(r0, std::cos(c.theta * std::numbers::pi / 180))) +
           2 * h);
   s.sigma = 0.04;
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
