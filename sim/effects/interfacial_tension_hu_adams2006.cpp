@@ -1,7 +1,5 @@
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 
-#include <cstdlib>
-
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -77,7 +75,7 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   stress_.resize(n);
   stressed_.resize(n);
   gradient_.resize(n);
-  const Real dimension = std::getenv("TAMPONADE_TENSION_D") ? std::atof(std::getenv("TAMPONADE_TENSION_D")) : 3.0;
+  const Real dimension = 3.0;
 
   for (std::size_t pairIndex = 0; pairIndex < tensions.size(); ++pairIndex) {
     const InterfacialTension& pair = tensions[pairIndex];

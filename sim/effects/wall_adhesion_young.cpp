@@ -1,7 +1,6 @@
 #include "sim/effects/wall_adhesion_young.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -20,16 +19,6 @@ Real cubicSpline2d(Real r, Real h) {
   if (q <= 0.5) return norm * (6 * (q * q * q - q * q) + 1);
   const Real t = 1 - q;
   return norm * 2 * t * t * t;
-}
-
-// dW/dr of cubicSpline2d [1/m^3].
-Real cubicSpline2dSlope(Real r, Real h) {
-  const Real q = r / h;
-  if (q >= 1) return 0;
-  const Real norm = 40.0 / (7.0 * std::numbers::pi * h * h);
-  if (q <= 0.5) return norm * (18 * q * q - 12 * q) / h;
-  const Real t = 1 - q;
-  return -norm * 6 * t * t / h;
 }
 
 }  // namespace
@@ -73,7 +62,6 @@ void WallAdhesionYoung::attach(World& world) {
   // Area per wall particle from the surface number density of the wall sample.
   const NeighborList& ss = world.search().staticStatic();
   const Real h = world.supportRadius();
-  if (const char* form = std::getenv("TAMPONADE_WALL_FORM")) lineForm_ = std::string(form) == "line";
   wallArea_.resize(nWalls);
 #pragma omp parallel for schedule(static)
   for (std::size_t b = 0; b < nWalls; ++b) {
@@ -85,92 +73,7 @@ void WallAdhesionYoung::attach(World& world) {
   }
 }
 
-void WallAdhesionYoung::applyLineForm(World& world) {
-  auto& p = world.particles;
-  const auto& walls = world.walls;
-  const Index n = static_cast<Index>(p.size());
-  const Index nWalls = static_cast<Index>(walls.size());
-  const NeighborList& nw = world.wallNeighbors();
-  const NeighborList& ss = world.search().staticStatic();
-  const Kernel& kernel = world.kernel;
-  const Real h = world.supportRadius();
-  auto inPair = [&](Index i) { return p.material[i] == materialA_ || p.material[i] == materialB_; };
-  wallFluidSum_.assign(nWalls, 0.0);
-  wallOilSum_.assign(nWalls, 0.0);
-  for (Index i = 0; i < n; ++i) {
-    if (nw.count(i) == 0 || !inPair(i)) continue;
-    const Real vi = p.mass[i] / p.density[i];
-    const Real ci = p.material[i] == materialA_ ? 1.0 : 0.0;
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      if (surface_[*b] && !std::isnan(cosThetaA_[*b])) {
-        const Real w = vi * kernel.W(p.x[i] - walls.x[*b]);
-        wallFluidSum_[*b] += w;
-        wallOilSum_[*b] += ci * w;
-      }
-  }
-  auto wetted = [&](Index b) { return wallFluidSum_[b] >= 1e-3; };
-  // Variant: distribute each wall particle's line force over the interface particles it sees,
-  // weighted by |gradC| (last step's), instead of over all fluid.
-  const bool onInterface = std::getenv("TAMPONADE_LINE_ON_INTERFACE") != nullptr;
-  const std::vector<Vec3>* gradC = p.fields.has("colour_gradient") ? &p.fields.get<Vec3>("colour_gradient") : nullptr;
-  std::vector<Real>& interfaceSum = wallInterfaceSum_;
-  interfaceSum.assign(nWalls, 0.0);
-  if (onInterface && gradC)
-    for (Index i = 0; i < n; ++i) {
-      if (nw.count(i) == 0 || !inPair(i)) continue;
-      const Real gi = (*gradC)[i].norm() * p.mass[i] / p.density[i];
-      if (gi == 0) continue;
-      for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-        if (surface_[*b] && !std::isnan(cosThetaA_[*b])) interfaceSum[*b] += gi * kernel.W(p.x[i] - walls.x[*b]);
-    }
-  wallForce_.assign(nWalls, Vec3::Zero());
-#pragma omp parallel for schedule(static)
-  for (Index b = 0; b < nWalls; ++b) {
-    if (!wetted(b)) continue;
-    const Real phiB = wallOilSum_[b] / wallFluidSum_[b];
-    Vec3 g = Vec3::Zero();
-    Mat3 moment = Mat3::Zero();
-    for (const Index* k = ss.begin(b); k != ss.end(b); ++k) {
-      const Index c = *k;
-      if (c == b || !wetted(c) || !surface_[c] || std::isnan(cosThetaA_[c])) continue;
-      const Vec3 r = walls.x[c] - walls.x[b];
-      const Real dist = r.norm();
-      if (dist <= 0) continue;
-      const Vec3 grad = -cubicSpline2dSlope(dist, h) / dist * r;  // grad_b W(x_b - x_c)
-      g += wallArea_[c] * (wallOilSum_[c] / wallFluidSum_[c] - phiB) * grad;
-      moment += wallArea_[c] * grad * r.transpose();
-    }
-    const Vec3 nb = walls.normal[b].normalized();
-    const Mat3 tangent = Mat3::Identity() - nb * nb.transpose();
-    const Mat3 full = moment + nb * nb.transpose();
-    const Vec3 gradPhi = tangent * (std::abs(full.determinant()) > 0.25 ? Vec3(full.inverse() * g) : g);
-    wallForce_[b] = -(sigma_ * cosThetaA_[b]) * gradPhi;
-  }
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    if (nw.count(i) == 0 || !inPair(i)) continue;
-    const Real vi = p.mass[i] / p.density[i];
-    Vec3 f = Vec3::Zero();
-    for (const Index* bp = nw.begin(i); bp != nw.end(i); ++bp) {
-      const Index b = *bp;
-      if (!surface_[b] || !wetted(b) || std::isnan(cosThetaA_[b])) continue;
-      if (onInterface && gradC) {
-        if (interfaceSum[b] <= 0) continue;
-        f += (wallArea_[b] * vi * (*gradC)[i].norm() * kernel.W(p.x[i] - walls.x[b]) / interfaceSum[b]) *
-             wallForce_[b];
-      } else {
-        f += (wallArea_[b] * vi * kernel.W(p.x[i] - walls.x[b]) / wallFluidSum_[b]) * wallForce_[b];
-      }
-    }
-    p.a[i] += f / p.mass[i];
-  }
-}
-
 void WallAdhesionYoung::apply(World& world, const StepContext&) {
-  if (lineForm_) {
-    applyLineForm(world);
-    return;
-  }
   auto& p = world.particles;
   const auto& walls = world.walls;
   const Index n = static_cast<Index>(p.size());

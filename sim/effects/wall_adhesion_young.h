@@ -63,12 +63,6 @@ class WallAdhesionYoung final : public Effect {
   std::vector<Mat3> stress_;      // [Pa] scratch, valid where stressed_ is 1
   std::vector<std::uint8_t> stressed_;
   Real sigma_ = 0.0;              // [N/m]
-  // Line form (experimental): Young's line force from the wall's own oil-fraction gradient.
-  bool lineForm_ = false;
-  std::vector<Real> wallOilSum_;   // [1] sum_i V_i C_i W_ib
-  std::vector<Real> wallInterfaceSum_;
-  std::vector<Vec3> wallForce_;    // [N/m^2] -dgamma grad_t phi per surface wall particle
-  void applyLineForm(World& world);
 };
 
 }  // namespace sim
