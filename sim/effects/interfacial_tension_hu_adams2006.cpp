@@ -1,12 +1,9 @@
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <limits>
-#include <map>
 #include <numbers>
 
-#include "sim/boundary/wall_layers.h"
 #include "sim/effects/gradient_correction.h"
 
 namespace sim {
@@ -83,41 +80,6 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   for (std::size_t pairIndex = 0; pairIndex < tensions.size(); ++pairIndex) {
     const InterfacialTension& pair = tensions[pairIndex];
     const Real sigma = pair.sigma;
-    // EXPERIMENT: Young's contact angle as the normal of the fluid layer next to a wall.
-    const char* youngEnv = std::getenv("TAMPONADE_YOUNG_NORMAL");
-    const int youngMode = youngEnv ? std::atoi(youngEnv) : 0;
-    const Real youngDepth = std::getenv("TAMPONADE_YOUNG_DEPTH") ? std::atof(std::getenv("TAMPONADE_YOUNG_DEPTH")) : 1.0;
-    youngCos_.assign(n, std::numeric_limits<Real>::quiet_NaN());
-    youngM_.resize(n);
-    nearAngleWall_.assign(n, 0);
-    if (youngMode > 0 && pairIndex == 0) {
-      std::map<int, Real> cosByTag;  // through A (colour 1)
-      for (const auto& a : world.materials.contactAngles()) {
-        const Real thetaA = a.fluidMaterial == pair.materialA ? a.angle : 180.0 - a.angle;
-        cosByTag[a.wallTag] = std::cos(thetaA * std::numbers::pi / 180.0);
-      }
-      const Real d = world.particleSpacing();
-#pragma omp parallel for schedule(static)
-      for (Index i = 0; i < n; ++i) {
-        if (colourOf(p.material[i], pair) < 0 || nw.count(i) == 0) continue;
-        Real best = std::numeric_limits<Real>::infinity(), cosA = 0;
-        Vec3 m = Vec3::Zero();
-        for (const Index* bp = nw.begin(i); bp != nw.end(i); ++bp) {
-          const Index b = *bp;
-          if (!isSurfaceWall(world.walls, b)) continue;
-          const auto it = cosByTag.find(world.walls.tag[b]);
-          if (it == cosByTag.end()) continue;
-          nearAngleWall_[i] = 1;
-          const Vec3 mb = -wallNormal[b];
-          const Real dist = (p.x[i] - world.walls.x[b]).dot(mb) - 0.5 * d;
-          if (dist < best) best = dist, cosA = it->second, m = mb;
-        }
-        if (best < youngDepth * d) {
-          youngCos_[i] = cosA;
-          youngM_[i] = m;
-        }
-      }
-    }
     // Phase 1: colour gradient and surface stress of every particle of the pair.
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
@@ -137,15 +99,6 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
       // L_i only where gradC is not 0, i.e. on the interface: the bulk costs no extra pass.
       if (corrected && g.squaredNorm() > 0)
         g = gradientCorrection(fluidGradientMoment(world, i), kMinFluidCorrectionDeterminant) * g;
-      if (!std::isnan(youngCos_[i]) && g.squaredNorm() > 0) {
-        const Vec3& m = youngM_[i];
-        const Vec3 gt = g - g.dot(m) * m;
-        if (gt.norm() > 1e-6 * g.norm()) {
-          const Vec3 tOut = -gt.normalized();
-          const Real c = youngCos_[i], sn = std::sqrt(std::max<Real>(0, 1 - c * c));
-          g = -g.norm() * (sn * tOut + c * m);
-        }
-      }
       const Real norm = g.norm();  // [1/m]
       gradient_[i] = g;
       // Below 1e-6 of the interface's |gradC| ~ 1/h the direction is round-off: no stress.
@@ -191,8 +144,7 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
           f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
         }
       }
-      const bool continued = youngMode == 1 ? nearAngleWall_[i] != 0 : !std::isnan(youngCos_[i]);
-      if (stressed_[i] && nw.count(i) > 0 && !continued) {
+      if (stressed_[i] && nw.count(i) > 0) {
         // Mirror image of the stress across the wall: Pi_b = R Pi_i R with the reflection
         // R = I - 2 m m^T about the local wall normal m, so the wall takes only the normal part
         // of the interface's pull and the contact line feels its full tangential part

@@ -90,9 +90,6 @@ class InterfacialTensionHuAdams2006 final : public Effect {
 
  private:
   SurfaceStressForm form_;
-  std::vector<Real> youngCos_;
-  std::vector<Vec3> youngM_;
-  std::vector<std::uint8_t> nearAngleWall_;
   std::vector<Vec3>* colourGradient_ = nullptr;  // [1/m] output field of the first pair
   std::vector<Mat3> stress_;                      // [Pa] scratch: Pi of each particle
   std::vector<Vec3> gradient_;                    // [1/m] scratch gradC for the current pair

@@ -1,7 +1,6 @@
 #include "sim/effects/wall_adhesion_young.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -75,7 +74,6 @@ void WallAdhesionYoung::attach(World& world) {
 }
 
 void WallAdhesionYoung::apply(World& world, const StepContext&) {
-  if (std::getenv("TAMPONADE_NO_ADHESION")) return;
   auto& p = world.particles;
   const auto& walls = world.walls;
   const Index n = static_cast<Index>(p.size());
