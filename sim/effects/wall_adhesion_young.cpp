@@ -1,7 +1,6 @@
 #include "sim/effects/wall_adhesion_young.h"
 
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -92,39 +91,6 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
     for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
       if (surface_[*b]) wallFluidSum_[*b] += vi * kernel.W(p.x[i] - walls.x[*b]);
   }
-  // EXPERIMENT (TAMPONADE_WALL_PHI): the oil fraction on the wall surface, a first-order (linear
-  // least-squares) fit of the colour evaluated at the wall surface point, so that oil hanging over
-  // an aqueous wedge within the support does not count as wetting the wall.
-  const bool wallPhi = std::getenv("TAMPONADE_WALL_PHI") != nullptr;
-  if (wallPhi) {
-    const Real d = world.particleSpacing();
-    moments_.assign(walls.size(), Eigen::Matrix4d::Zero());
-    rhs_.assign(walls.size(), Eigen::Vector4d::Zero());
-    for (Index i = 0; i < n; ++i) {
-      if (nw.count(i) == 0 || !inPair(i)) continue;
-      const Real vi = p.mass[i] / p.density[i];
-      const Real ci = p.material[i] == materialA_ ? 1.0 : 0.0;
-      for (const Index* bp = nw.begin(i); bp != nw.end(i); ++bp) {
-        const Index b = *bp;
-        if (!surface_[b] || std::isnan(cosThetaA_[b])) continue;
-        const Vec3 surfacePoint = walls.x[b] - 0.5 * d * walls.normal[b];
-        const Vec3 r = (p.x[i] - surfacePoint) / d;
-        const Eigen::Vector4d q(1.0, r.x(), r.y(), r.z());
-        const Real w = vi * kernel.W(p.x[i] - walls.x[b]);
-        moments_[b] += w * q * q.transpose();
-        rhs_[b] += w * ci * q;
-      }
-    }
-    wallPhi_.assign(walls.size(), std::numeric_limits<Real>::quiet_NaN());
-#pragma omp parallel for schedule(static)
-    for (Index b = 0; b < static_cast<Index>(walls.size()); ++b) {
-      if (!surface_[b] || std::isnan(cosThetaA_[b]) || moments_[b](0, 0) < 1e-3) continue;
-      Real phi = rhs_[b](0) / moments_[b](0, 0);  // Shepard, if the fit is ill-conditioned
-      if (std::abs(moments_[b].determinant()) > 1e-6 * std::pow(moments_[b](0, 0), 4))
-        phi = moments_[b].ldlt().solve(rhs_[b])(0);
-      wallPhi_[b] = std::clamp<Real>(phi, 0, 1);
-    }
-  }
   // Wall delta function, wall normal and wall-interface stress per particle.
   stress_.resize(n);
   stressed_.assign(n, 0);
@@ -132,7 +98,7 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
 #pragma omp parallel for schedule(static) reduction(|| : any)
   for (Index i = 0; i < n; ++i) {
     if (!inPair(i) || nw.count(i) == 0) continue;
-    Real delta = 0, cosWeighted = 0, weight = 0, phiWeighted = 0, phiWeight = 0;
+    Real delta = 0, cosWeighted = 0, weight = 0;  // [1/m], [1], [1/m^3]
     Vec3 m = Vec3::Zero();
     for (const Index* bp = nw.begin(i); bp != nw.end(i); ++bp) {
       const Index b = *bp;
@@ -145,7 +111,6 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
       cosWeighted += w * cosThetaA_[b];
       weight += w;
       m -= w * walls.normal[b];  // wall normals point into the wall
-      if (wallPhi && !std::isnan(wallPhi_[b])) phiWeighted += w * wallPhi_[b], phiWeight += w;
     }
     if (weight <= 0 || m.squaredNorm() == 0) continue;
     m.normalize();
@@ -155,11 +120,7 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
     // at the contact line and where that phase's wetted wall ends (a split over both phases
     // put line forces at every box edge, which pushed corner particles through the walls).
     const bool isA = p.material[i] == materialA_;
-    Real gamma = cosA >= 0 ? (isA ? 0.0 : sigma_ * cosA) : (isA ? -sigma_ * cosA : 0.0);
-    if (wallPhi) {
-      const Real phi = phiWeight > 0 ? phiWeighted / phiWeight : (isA ? 1.0 : 0.0);
-      gamma = cosA >= 0 ? sigma_ * cosA * (1 - phi) : -sigma_ * cosA * phi;
-    }
+    const Real gamma = cosA >= 0 ? (isA ? 0.0 : sigma_ * cosA) : (isA ? -sigma_ * cosA : 0.0);
     if (gamma == 0.0) continue;  // [N/m]
     stress_[i] = gamma * delta * (Mat3::Identity() - m * m.transpose());
     stressed_[i] = 1;

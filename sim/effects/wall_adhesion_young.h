@@ -42,8 +42,6 @@
 #pragma once
 
 #include <cstdint>
-
-#include <Eigen/Dense>
 #include <vector>
 
 #include "sim/effects/effect.h"
@@ -65,9 +63,6 @@ class WallAdhesionYoung final : public Effect {
   std::vector<Mat3> stress_;      // [Pa] scratch, valid where stressed_ is 1
   std::vector<std::uint8_t> stressed_;
   Real sigma_ = 0.0;              // [N/m]
-  std::vector<Eigen::Matrix4d> moments_;
-  std::vector<Eigen::Vector4d> rhs_;
-  std::vector<Real> wallPhi_;
 };
 
 }  // namespace sim
