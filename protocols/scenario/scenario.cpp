@@ -216,6 +216,25 @@ void resolveOutputFields(const Protocol& p, Scenario& s) {
 
 }  // namespace
 
+std::string contactAngleRangeNote(double throughTamponadeDeg) {
+  if (throughTamponadeDeg >= kTestedContactAngleMin &&
+      throughTamponadeDeg <= kTestedContactAngleMax)
+    return "";
+  const std::string angle =
+      std::to_string(std::lround(throughTamponadeDeg)) + " deg through the tamponade";
+  const std::string tested =
+      "outside the 30-120 deg that the wall-wetting model holds within 5 deg on "
+      "a flat wall (docs/interface.md, validation 3)";
+  if (throughTamponadeDeg > kTestedContactAngleMax)
+    return "contact angle " + angle + " is " + tested +
+           ": above 140 deg a straight contact line settled up to 8 deg flatter than asked, and an "
+           "oil contact patch only a few particle spacings across kept receding until the oil left "
+           "the wall; read where the oil's edge meets the retina as uncertain by several degrees";
+  return "contact angle " + angle + " is " + tested +
+         ": at 15 deg a sessile droplet held 16.6-23.6 deg, so a thin tamponade film may spread "
+         "less than asked";
+}
+
 std::vector<std::uint8_t> Scenario::tamponadeFlags() const {
   std::vector<std::uint8_t> flags(world->particles.size());
   const int tamponade = phases[1].materialIndex;
@@ -301,6 +320,9 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
       tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
       for (const int tag : tags)
         s.world->materials.setContactAngle(aqueous.materialIndex, tag, *oil.contactAngleThroughAqueous);
+      if (const std::string note = contactAngleRangeNote(180.0 - *oil.contactAngleThroughAqueous);
+          !note.empty())
+        s.notes.push_back(note);
     }
   }
 

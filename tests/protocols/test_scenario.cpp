@@ -5,6 +5,7 @@
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <array>
 #include <cstdio>
 #include <filesystem>
@@ -294,4 +295,37 @@ TEST_CASE("plan cost model scales particles and steps by the spacing", "[unit][s
   // Finer presets cost more.
   CHECK(plan.presets[0].seconds < plan.presets[1].seconds);
   CHECK(plan.presets[1].seconds < plan.presets[2].seconds);
+}
+
+TEST_CASE("a contact angle outside the tested range is noted in plan and report",
+          "[unit][scenario]") {
+  // The range's edges and inside it: no note. The library oils (18.2 deg through the aqueous) and a
+  // wetting film (15 deg through the oil) lie outside: the note says how the model errs there.
+  CHECK(contactAngleRangeNote(kTestedContactAngleMin).empty());
+  CHECK(contactAngleRangeNote(90.0).empty());
+  CHECK(contactAngleRangeNote(kTestedContactAngleMax).empty());
+  const std::string high = contactAngleRangeNote(161.8);
+  CHECK(high.find("162 deg through the tamponade") != std::string::npos);
+  CHECK(high.find("receding") != std::string::npos);
+  CHECK(contactAngleRangeNote(15.0).find("spread less") != std::string::npos);
+
+  const fs::path dir = fs::temp_directory_path() / "tamponade_contact_angle_note_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string base =
+      "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
+      "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"80 %\"\n";
+  const std::string rest =
+      "[schedule]\n[[schedule.postures]]\nname = \"upright\"\nduration = \"1 s\"\n"
+      "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n";
+  std::ofstream(dir / "library.toml") << base << rest;
+  std::ofstream(dir / "neutral.toml") << base << "contact_angle = \"90 deg\"\n" << rest;
+  const auto noted = [](const Scenario& s) {
+    return std::any_of(s.notes.begin(), s.notes.end(), [](const std::string& note) {
+      return note.find("through the tamponade is outside") != std::string::npos;
+    });
+  };
+  CHECK(noted(assembleScenario(parseProtocol((dir / "library.toml").string()))));
+  CHECK_FALSE(noted(assembleScenario(parseProtocol((dir / "neutral.toml").string()))));
+  fs::remove_all(dir);
 }

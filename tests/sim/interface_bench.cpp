@@ -12,6 +12,9 @@
 //                                      the sessile ridge (a cylindrical droplet, straight contact
 //                                      lines)
 //   sim_interface_bench ridge-static THETA_DEG [R0_per_d] [jitter_d]   its fit on a static segment
+//   sim_interface_bench wedge-static THETA_DEG [jitter_d]   a planar interface meeting the floor at
+//                                      THETA: each stage's force on the contact line per unit
+//                                      length, and the colour gradient by height above the floor
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
 //                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
 //                                      equilibrium tamponade shape in a spherical cavity
@@ -215,6 +218,92 @@ int sessileStatic(const testing::SessileCase& c) {
               wallForce, wallForce / line, base * 1e3);
   std::printf("  tension radial sum %.4e N = %.3f x -2 pi sigma R theta\n", tensionForce,
               tensionForce / (-2 * std::numbers::pi * sigma * capRadius * theta));
+  return 0;
+}
+
+// A planar interface meeting the floor at THETA (through the oil) along the line x = x0, y = 0:
+// the static lattice, no step, densities by summation. Prints, per unit length of contact line and
+// over sigma, the tangential force (along +x, away from the oil's side at 90 deg) that each stage
+// puts on the particles within `reach` of the contact line (middle of the depth only). A sharp
+// interface pulls the line region with +sigma cos(theta) (along the interface); Young's wall line
+// force is -sigma cos(theta_Y). Their sum on the static wedge is what moves the line.
+int wedgeStatic(Real thetaDeg, Real jitter) {
+  const Real d = 0.0005, h = 2 * d, sigma = 0.04;
+  const Real theta = thetaDeg * std::numbers::pi / 180;
+  const int nx = 70, ny = 16, nz = 20;
+  TankSpec spec;
+  spec.innerMin = Vec3::Zero();
+  spec.innerMax = Vec3(nx * d, ny * d, nz * d);
+  spec.closedTop = true;
+  const WallLayers layers{3};
+  World w(testing::layeredBoxParameters(spec, d, layers));
+  const int oil = w.materials.add(testing::liquid("oil", 970, 0.005));
+  const int aqueous = w.materials.add(testing::liquid("aqueous", 1000, 0.005));
+  w.materials.setInterfacialTension(oil, aqueous, sigma);
+  addTankWalls(w, spec, d, 0, layers);
+  for (std::size_t b = 0; b < w.walls.size(); ++b)
+    if (w.walls.normal[b].y() < -0.5) w.walls.tag[b] = testing::kFloorTag;
+  const Real x0 = 0.5 * nx * d;
+  testing::fillJitteredLattice(w, Vec3::Zero(), nx, ny, nz, d, jitter, 0.0, [&](const Vec3& x) {
+    return -std::sin(theta) * (x.x() - x0) + std::cos(theta) * x.y() <= 0 ? oil : aqueous;
+  });
+  w.materials.setContactAngle(oil, testing::kFloorTag, thetaDeg);
+  w.initialize();
+  computeDensities(w, w.particles.density);
+  const Real zLow = 3 * h, zHigh = nz * d - 3 * h;
+  auto lineForce = [&](Real reach) {
+    Vec3 f = Vec3::Zero();
+    for (Index i = 0; i < w.particles.size(); ++i) {
+      const Vec3& x = w.particles.x[i];
+      if (x.z() < zLow || x.z() > zHigh || std::hypot(x.x() - x0, x.y()) > reach) continue;
+      f += w.particles.mass[i] * w.particles.a[i];
+    }
+    return Vec3(f / ((zHigh - zLow) * sigma));
+  };
+  std::printf(
+      "static wedge %.1f deg, jitter %.2f d, %zu particles; forces per unit line length / "
+      "sigma (x: along the floor, y: normal), cos(theta) = %.4f\n",
+      thetaDeg, jitter, w.particles.size(), std::cos(theta));
+  InterfacialTensionHuAdams2006 tension;
+  tension.attach(w);
+  for (auto& a : w.particles.a) a.setZero();
+  tension.apply(w, StepContext{1e-4});
+  for (const Real reach : {2 * h, 3 * h, 4 * h}) {
+    const Vec3 f = lineForce(reach);
+    std::printf("  tension within %.0f h: x %+.4f (%.3f x cos theta), y %+.4f\n", reach / h, f.x(),
+                f.x() / std::cos(theta), f.y());
+  }
+  // The colour gradient by height above the floor: interface strength sum V |gradC| per unit
+  // depth and height, times sin(theta) (1 for a sharp interface crossing the slab), and the
+  // interface angle read from the normal, acos |n_y| (the sharp wedge: acos |cos theta|).
+  const auto& gradC = w.particles.fields.get<Vec3>(field::kColourGradient);
+  for (int slab = 0; slab < 8; ++slab) {
+    Real strength = 0, weight = 0, angle = 0;
+    for (Index i = 0; i < w.particles.size(); ++i) {
+      const Vec3& x = w.particles.x[i];
+      if (x.z() < zLow || x.z() > zHigh || x.y() < slab * d || x.y() >= (slab + 1) * d) continue;
+      const Real g = gradC[i].norm();
+      if (g == 0) continue;
+      const Real v = w.particles.mass[i] / w.particles.density[i];
+      strength += v * g;
+      weight += v * g;
+      angle += v * g * std::acos(std::min<Real>(1, std::abs(gradC[i].y()) / g));
+    }
+    std::printf(
+        "  slab y in [%d, %d) d: interface strength %.3f, normal reads %.1f deg (sharp %.1f)\n",
+        slab, slab + 1, strength / ((zHigh - zLow) * d) * std::sin(theta),
+        weight > 0 ? angle / weight * 180 / std::numbers::pi : 0.0,
+        std::acos(std::abs(std::cos(theta))) * 180 / std::numbers::pi);
+  }
+  WallAdhesionYoung adhesion;
+  adhesion.attach(w);
+  for (auto& a : w.particles.a) a.setZero();
+  adhesion.apply(w, StepContext{1e-4});
+  for (const Real reach : {2 * h, 3 * h, 4 * h}) {
+    const Vec3 f = lineForce(reach);
+    std::printf("  wall_adhesion within %.0f h: x %+.4f (%.3f x -cos theta), y %+.4f\n", reach / h,
+                f.x(), -f.x() / std::cos(theta), f.y());
+  }
   return 0;
 }
 
@@ -463,6 +552,8 @@ int main(int argc, char** argv) {
         r.steps, r.seconds, r.finite ? "" : " (NOT FINITE)");
     return r.finite ? 0 : 1;
   }
+  if (argc >= 3 && std::strcmp(argv[1], "wedge-static") == 0)
+    return wedgeStatic(std::atof(argv[2]), argc > 3 ? std::atof(argv[3]) : 0);
   if (argc >= 3 && std::strcmp(argv[1], "ridge-static") == 0) {
     testing::RidgeCase c;
     c.theta = c.startTheta = std::atof(argv[2]);
@@ -501,6 +592,7 @@ int main(int argc, char** argv) {
       "       sim_interface_bench ridge THETA_DEG [t_end_s] [start_deg] [R0_per_d] [mu_Pa_s] "
       "[depth_per_d]\n"
       "       sim_interface_bench ridge-static THETA_DEG [R0_per_d] [jitter_d]\n"
+      "       sim_interface_bench wedge-static THETA_DEG [jitter_d]\n"
       "       sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] "
       "[oil_density] [mu_Pa_s] [sigma_N_m] [wall_friction] [solver]\n");
   return 2;

@@ -81,6 +81,32 @@ inline DropletScene sessileScene(const SessileCase& c) {
   return scene;
 }
 
+// What touches the floor: the oil particles in the first fluid layer (centre below d), the
+// radius of their disc about the oil's axis (the largest horizontal distance), and the aqueous
+// particles of that layer inside the disc, i.e. a film under the droplet.
+struct FloorContact {
+  int oil = 0, aqueousUnder = 0;
+  Real radius = 0;  // [m]
+};
+
+inline FloorContact floorContact(const World& w, int oil, Real d) {
+  const auto& p = w.particles;
+  Vec3 axis = Vec3::Zero();
+  Real oilCount = 0;
+  for (Index i = 0; i < p.size(); ++i)
+    if (p.material[i] == oil) axis += p.x[i], oilCount += 1;
+  axis /= std::max<Real>(oilCount, 1);
+  const auto radial = [&](Index i) {
+    return std::hypot(p.x[i].x() - axis.x(), p.x[i].z() - axis.z());
+  };
+  FloorContact c;
+  for (Index i = 0; i < p.size(); ++i)
+    if (p.material[i] == oil && p.x[i].y() < d) ++c.oil, c.radius = std::max(c.radius, radial(i));
+  for (Index i = 0; i < p.size(); ++i)
+    if (p.material[i] != oil && p.x[i].y() < d && radial(i) < c.radius - d) ++c.aqueousUnder;
+  return c;
+}
+
 inline SessileResult runSessile(const SessileCase& c) {
   auto scene = sessileScene(c);
   World& w = *scene.world;
@@ -118,11 +144,14 @@ inline SessileResult runSessile(const SessileCase& c) {
     }
     if (c.print && w.time - tStart >= next) {
       const CapFit fit = fitSessileCap(w, scene.oil, floor, spacing);
+      const FloorContact contact = floorContact(w, scene.oil, spacing);
       std::printf(
           "  t = %.4f s  theta = %.1f deg (through oil; free sphere %.1f deg, R = %.2f mm, "
-          "rms %.3f mm)  steps %ld\n",
+          "rms %.3f mm)  floor layer: %d oil, %d aqueous under it, contact radius %.2f d  "
+          "steps %ld\n",
           w.time, fit.contactAngle, fit.sphereAngle, fit.sphere.radius * 1e3,
-          fit.sphere.rmsResidual * 1e3, w.stepCount);
+          fit.sphere.rmsResidual * 1e3, contact.oil, contact.aqueousUnder, contact.radius / spacing,
+          w.stepCount);
       std::fflush(stdout);
       next += c.tEnd / 10;
     }
