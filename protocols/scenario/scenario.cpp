@@ -227,9 +227,10 @@ std::string contactAngleRangeNote(double throughTamponadeDeg) {
       "a flat wall (docs/interface.md, validation 3)";
   if (throughTamponadeDeg > kTestedContactAngleMax)
     return "contact angle " + angle + " is " + tested +
-           ": above 140 deg a straight contact line settled up to 8 deg flatter than asked, and an "
-           "oil contact patch only a few particle spacings across kept receding until the oil left "
-           "the wall; read where the oil's edge meets the retina as uncertain by several degrees";
+           ": above 140 deg a straight contact line settled up to 10 deg flatter than asked, and "
+           "an oil contact patch only a few particle spacings across kept receding until the oil "
+           "left the wall; read where the oil's edge meets the retina as uncertain by several "
+           "degrees";
   return "contact angle " + angle + " is " + tested +
          ": at 15 deg a sessile droplet held 16.6-23.6 deg, so a thin tamponade film may spread "
          "less than asked";

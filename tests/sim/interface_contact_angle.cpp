@@ -66,10 +66,11 @@ TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
 }
 
 // 90 and 150 deg (and the +-10 deg band outside 30-150) are benchmark runs (docs/interface.md,
-// validation 3, session 10). 150 deg is not met.
-// - Round droplet (`sim_interface_bench sessile 150 0.3 0.866 indsph 3 6 0.05 0.2 0 1.5`): 156.5
-//   deg from its own cap. Its contact disc is 2.4 d in radius, no more than the wall terms' 2 d
-//   support. From the hemisphere it lifts off.
+// validation 3, sessions 10 and 11). 150 deg is not met.
+// - Round droplet (`sim_interface_bench sessile 150 T 0.866 indsph 3 R_PER_D 0.05 0.2 0 1.5`):
+//   from its own cap it recedes until it leaves the floor, at R/6, R/8, R/12 and R/16 alike (the
+//   156.5 deg of session 10 was read on the way). No aqueous film forms under it; the wall
+//   term's static pull per unit length of contact line is the same as on a straight line.
 // - Sessile ridge, a cylindrical droplet with straight contact lines (`sim_interface_bench ridge
 //   150 T START R0_PER_D`, interface_ridge.h): with R0 = 12 d it settles at 141.9-143.8 deg,
 //   from below and from above. Larger ridges only move more slowly: R0 = 18 d reads 145.7 after
