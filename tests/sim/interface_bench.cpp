@@ -264,21 +264,26 @@ int wedgeStatic(Real thetaDeg, Real jitter) {
       "static wedge %.1f deg, jitter %.2f d, %zu particles; forces per unit line length / "
       "sigma (x: along the floor, y: normal), cos(theta) = %.4f\n",
       thetaDeg, jitter, w.particles.size(), std::cos(theta));
+  // One stage alone on the static wedge; `youngSign` +1 compares with sigma cos(theta) (the
+  // interface's pull), -1 with Young's wall force -sigma cos(theta).
+  auto applyAlone = [&](Effect& stage, const char* label, Real youngSign) {
+    stage.attach(w);
+    for (auto& a : w.particles.a) a.setZero();
+    stage.apply(w, StepContext{1e-4});
+    for (const Real reach : {2 * h, 3 * h, 4 * h}) {
+      const Vec3 f = lineForce(reach);
+      std::printf("  %s within %.0f h: x %+.4f (%.3f x %scos theta), y %+.4f\n", label, reach / h,
+                  f.x(), youngSign * f.x() / std::cos(theta), youngSign > 0 ? "" : "-", f.y());
+    }
+  };
   InterfacialTensionHuAdams2006 tension;
-  tension.attach(w);
-  for (auto& a : w.particles.a) a.setZero();
-  tension.apply(w, StepContext{1e-4});
-  for (const Real reach : {2 * h, 3 * h, 4 * h}) {
-    const Vec3 f = lineForce(reach);
-    std::printf("  tension within %.0f h: x %+.4f (%.3f x cos theta), y %+.4f\n", reach / h, f.x(),
-                f.x() / std::cos(theta), f.y());
-  }
+  applyAlone(tension, "tension", 1);
   // The colour gradient by height above the floor: interface strength sum V |gradC| per unit
   // depth and height, times sin(theta) (1 for a sharp interface crossing the slab), and the
   // interface angle read from the normal, acos |n_y| (the sharp wedge: acos |cos theta|).
   const auto& gradC = w.particles.fields.get<Vec3>(field::kColourGradient);
   for (int slab = 0; slab < 8; ++slab) {
-    Real strength = 0, weight = 0, angle = 0;
+    Real strength = 0, angle = 0;  // [1/m^2 ...] sum V |gradC|, and its angle-weighted sum
     for (Index i = 0; i < w.particles.size(); ++i) {
       const Vec3& x = w.particles.x[i];
       if (x.z() < zLow || x.z() > zHigh || x.y() < slab * d || x.y() >= (slab + 1) * d) continue;
@@ -286,24 +291,16 @@ int wedgeStatic(Real thetaDeg, Real jitter) {
       if (g == 0) continue;
       const Real v = w.particles.mass[i] / w.particles.density[i];
       strength += v * g;
-      weight += v * g;
       angle += v * g * std::acos(std::min<Real>(1, std::abs(gradC[i].y()) / g));
     }
     std::printf(
         "  slab y in [%d, %d) d: interface strength %.3f, normal reads %.1f deg (sharp %.1f)\n",
         slab, slab + 1, strength / ((zHigh - zLow) * d) * std::sin(theta),
-        weight > 0 ? angle / weight * 180 / std::numbers::pi : 0.0,
+        strength > 0 ? angle / strength * 180 / std::numbers::pi : 0.0,
         std::acos(std::abs(std::cos(theta))) * 180 / std::numbers::pi);
   }
   WallAdhesionYoung adhesion;
-  adhesion.attach(w);
-  for (auto& a : w.particles.a) a.setZero();
-  adhesion.apply(w, StepContext{1e-4});
-  for (const Real reach : {2 * h, 3 * h, 4 * h}) {
-    const Vec3 f = lineForce(reach);
-    std::printf("  wall_adhesion within %.0f h: x %+.4f (%.3f x -cos theta), y %+.4f\n", reach / h,
-                f.x(), -f.x() / std::cos(theta), f.y());
-  }
+  applyAlone(adhesion, "wall_adhesion", -1);
   return 0;
 }
 
