@@ -222,9 +222,10 @@ std::string contactAngleRangeNote(double throughTamponadeDeg) {
     return "";
   const std::string angle =
       std::to_string(std::lround(throughTamponadeDeg)) + " deg through the tamponade";
-  const std::string tested =
-      "outside the 30-120 deg that the wall-wetting model holds within 5 deg on "
-      "a flat wall (docs/interface.md, validation 3)";
+  const std::string tested = "outside the " + std::to_string(std::lround(kTestedContactAngleMin)) +
+                             "-" + std::to_string(std::lround(kTestedContactAngleMax)) +
+                             " deg that the wall-wetting model holds within 5 deg on a flat wall "
+                             "(docs/interface.md, validation 3)";
   if (throughTamponadeDeg > kTestedContactAngleMax)
     return "contact angle " + angle + " is " + tested +
            ": above 140 deg a straight contact line settled up to 10 deg flatter than asked, and "
