@@ -152,6 +152,14 @@ int sessile(const testing::SessileCase& c) {
   return r.finite ? 0 : 1;
 }
 
+// One stage's accelerations alone on a static scene (densities already set): the stage is
+// attached and applied once, every other contribution zeroed first.
+void applyStageAlone(World& w, Effect& stage) {
+  stage.attach(w);
+  for (auto& a : w.particles.a) a.setZero();
+  stage.apply(w, StepContext{1e-4});
+}
+
 // The measurement alone: a static cap of exactly THETA (the lattice sites inside the sphere cap
 // are oil), no step, read by fitSessileCap with several exclusion heights above the floor.
 int sessileStatic(const testing::SessileCase& c) {
@@ -204,14 +212,10 @@ int sessileStatic(const testing::SessileCase& c) {
   };
   computeDensities(mw, mw.particles.density);
   WallAdhesionYoung adhesion;
-  adhesion.attach(mw);
-  for (auto& a : mw.particles.a) a.setZero();
-  adhesion.apply(mw, StepContext{1e-4});
+  applyStageAlone(mw, adhesion);
   const Real wallForce = radialSum();
   InterfacialTensionHuAdams2006 tension;
-  tension.attach(mw);
-  for (auto& a : mw.particles.a) a.setZero();
-  tension.apply(mw, StepContext{1e-4});
+  applyStageAlone(mw, tension);
   const Real tensionForce = radialSum();
   const Real line = 2 * std::numbers::pi * base * sigma * u;
   std::printf("  wall line force %.4e N = %.3f x 2 pi a sigma cos(theta) (a = %.2f mm)\n",
@@ -228,19 +232,17 @@ int sessileStatic(const testing::SessileCase& c) {
 // interface pulls the line region with +sigma cos(theta) (along the interface); Young's wall line
 // force is -sigma cos(theta_Y). Their sum on the static wedge is what moves the line.
 int wedgeStatic(Real thetaDeg, Real jitter) {
-  const Real d = 0.0005, h = 2 * d, sigma = 0.04;
+  const Real d = 0.0005, h = 2 * d;
   const Real theta = thetaDeg * std::numbers::pi / 180;
   const int nx = 70, ny = 16, nz = 20;
   TankSpec spec;
   spec.innerMin = Vec3::Zero();
   spec.innerMax = Vec3(nx * d, ny * d, nz * d);
   spec.closedTop = true;
-  const WallLayers layers{3};
-  World w(testing::layeredBoxParameters(spec, d, layers));
-  const int oil = w.materials.add(testing::liquid("oil", 970, 0.005));
-  const int aqueous = w.materials.add(testing::liquid("aqueous", 1000, 0.005));
-  w.materials.setInterfacialTension(oil, aqueous, sigma);
-  addTankWalls(w, spec, d, 0, layers);
+  testing::OilAqueousBox box = testing::oilAqueousLayeredBox(spec, d, 0.005);
+  World& w = *box.world;
+  const int oil = box.oil, aqueous = box.aqueous;
+  const Real sigma = w.materials.interfacialTensions().front().sigma;  // [N/m]
   for (std::size_t b = 0; b < w.walls.size(); ++b)
     if (w.walls.normal[b].y() < -0.5) w.walls.tag[b] = testing::kFloorTag;
   const Real x0 = 0.5 * nx * d;
@@ -267,9 +269,7 @@ int wedgeStatic(Real thetaDeg, Real jitter) {
   // One stage alone on the static wedge; `youngSign` +1 compares with sigma cos(theta) (the
   // interface's pull), -1 with Young's wall force -sigma cos(theta).
   auto applyAlone = [&](Effect& stage, const char* label, Real youngSign) {
-    stage.attach(w);
-    for (auto& a : w.particles.a) a.setZero();
-    stage.apply(w, StepContext{1e-4});
+    applyStageAlone(w, stage);
     for (const Real reach : {2 * h, 3 * h, 4 * h}) {
       const Vec3 f = lineForce(reach);
       std::printf("  %s within %.0f h: x %+.4f (%.3f x %scos theta), y %+.4f\n", label, reach / h,

@@ -111,12 +111,9 @@ inline MeniscusResult runMeniscus(const MeniscusCase& c) {
   spec.innerMin = Vec3::Zero();
   spec.innerMax = Vec3(length, gap, depth);
   spec.closedTop = true;
-  const WallLayers layers{3};
-  World w(layeredBoxParameters(spec, d, layers));
-  const int oil = w.materials.add(liquid("oil", 970, c.viscosity));
-  const int aqueous = w.materials.add(liquid("aqueous", 1000, c.viscosity));
-  w.materials.setInterfacialTension(oil, aqueous, 0.04);
-  addTankWalls(w, spec, d, 0, layers);
+  OilAqueousBox box = oilAqueousLayeredBox(spec, d, c.viscosity);
+  World& w = *box.world;
+  const int oil = box.oil, aqueous = box.aqueous;
   for (std::size_t b = 0; b < w.walls.size(); ++b)
     if (std::abs(w.walls.normal[b].y()) > 0.5) w.walls.tag[b] = kFloorTag;  // floor and lid
   const int nx = static_cast<int>(std::lround(length / d));

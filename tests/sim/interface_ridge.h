@@ -130,13 +130,11 @@ inline RidgeScene ridgeScene(const RidgeCase& c) {
   spec.innerMin = Vec3::Zero();
   spec.innerMax = Vec3(2 * halfWidth, height, scene.depth);
   spec.closedTop = true;
-  const WallLayers layers{3};
-  scene.world = std::make_unique<World>(layeredBoxParameters(spec, d, layers));
+  OilAqueousBox box = oilAqueousLayeredBox(spec, d, c.viscosity);
+  scene.world = std::move(box.world);
   World& w = *scene.world;
-  scene.oil = w.materials.add(liquid("oil", 970, c.viscosity));
-  const int aqueous = w.materials.add(liquid("aqueous", 1000, c.viscosity));
-  w.materials.setInterfacialTension(scene.oil, aqueous, 0.04);
-  addTankWalls(w, spec, d, 0, layers);
+  scene.oil = box.oil;
+  const int aqueous = box.aqueous;
   for (std::size_t b = 0; b < w.walls.size(); ++b)
     if (w.walls.normal[b].y() < -0.5) w.walls.tag[b] = kFloorTag;  // the floor only
   const Real r = ridgeRadius(area, start), yc = -r * std::cos(start);

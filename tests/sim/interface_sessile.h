@@ -6,7 +6,6 @@
 #pragma once
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -127,41 +126,27 @@ inline SessileResult runSessile(const SessileCase& c) {
   r.adhesion = pipeline.hasStage("wall_adhesion");
   const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
   // Interface points closer than d to the floor are left out: the wall layer distorts them.
-  auto angleNow = [&] { return fitSessileCap(w, scene.oil, floor, spacing).contactAngle; };
-  const auto t0 = std::chrono::steady_clock::now();
+  const auto measure = [&](const World& world) {
+    return fitSessileCap(world, scene.oil, floor, spacing).contactAngle;
+  };
+  const auto describe = [&](const World& world) {
+    const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
+    const FloorContact contact = floorContact(world, scene.oil, spacing);
+    char line[224];
+    std::snprintf(line, sizeof line,
+                  "theta = %.1f deg (through oil; free sphere %.1f deg, R = %.2f mm, rms %.3f mm)  "
+                  "floor layer: %d oil, %d aqueous under it, contact radius %.2f d",
+                  fit.contactAngle, fit.sphereAngle, fit.sphere.radius * 1e3,
+                  fit.sphere.rmsResidual * 1e3, contact.oil, contact.aqueousUnder,
+                  contact.radius / spacing);
+    return std::string(line);
+  };
   for (int k = 0; k < c.relaxSteps; ++k) {
     pipeline.step(w);
     for (Vec3& v : w.particles.v) v.setZero();
   }
-  const Real tStart = w.time;
-  Real sum = 0, next = 0;
-  int samples = 0;
-  while (w.time - tStart < c.tEnd) {
-    pipeline.step(w);
-    if (w.time - tStart > 0.8 * c.tEnd) {
-      sum += angleNow();
-      ++samples;
-    }
-    if (c.print && w.time - tStart >= next) {
-      const CapFit fit = fitSessileCap(w, scene.oil, floor, spacing);
-      const FloorContact contact = floorContact(w, scene.oil, spacing);
-      std::printf(
-          "  t = %.4f s  theta = %.1f deg (through oil; free sphere %.1f deg, R = %.2f mm, "
-          "rms %.3f mm)  floor layer: %d oil, %d aqueous under it, contact radius %.2f d  "
-          "steps %ld\n",
-          w.time, fit.contactAngle, fit.sphereAngle, fit.sphere.radius * 1e3,
-          fit.sphere.rmsResidual * 1e3, contact.oil, contact.aqueousUnder, contact.radius / spacing,
-          w.stepCount);
-      std::fflush(stdout);
-      next += c.tEnd / 10;
-    }
-  }
-  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  r.finite = allFinite(w);
-  r.angle = samples > 0 ? sum / samples : angleNow();
-  r.finalAngle = angleNow();
-  r.steps = w.stepCount;
-  r.particles = w.particles.size();
+  static_cast<AngleRunResult&>(r) =
+      stepAndMeasureAngle(w, pipeline, c.tEnd, c.print, measure, describe);
   return r;
 }
 
