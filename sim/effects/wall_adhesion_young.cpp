@@ -23,6 +23,10 @@ Real cubicSpline2d(Real r, Real h) {
 
 }  // namespace
 
+WallLayerPhase wallLayerPhaseFor(std::string_view solver) {
+  return solver == "wcsph" ? WallLayerPhase::kNonWetting : WallLayerPhase::kLarger;
+}
+
 void WallAdhesionYoung::attach(World& world) {
   const auto& materials = world.materials;
   const auto& angles = materials.contactAngles();
@@ -35,6 +39,15 @@ void WallAdhesionYoung::attach(World& world) {
   materialA_ = pair.materialA;
   materialB_ = pair.materialB;
   sigma_ = pair.sigma;
+  {
+    const auto& p = world.particles;
+    Real volumeA = 0, volumeB = 0;  // [m^3] at rest density
+    for (Index i = 0; i < static_cast<Index>(p.size()); ++i) {
+      if (p.material[i] == materialA_) volumeA += p.mass[i] / materials[materialA_].restDensity;
+      if (p.material[i] == materialB_) volumeB += p.mass[i] / materials[materialB_].restDensity;
+    }
+    layerOnA_ = volumeA > volumeB;
+  }
   const std::size_t nWalls = world.walls.size();
   cosThetaA_.assign(nWalls, std::numeric_limits<Real>::quiet_NaN());
   // Layered walls (sim/boundary/wall_layers.h): only the surface layer is the wetted surface;
@@ -115,13 +128,14 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
     if (weight <= 0 || m.squaredNorm() == 0) continue;
     m.normalize();
     const Real cosA = cosWeighted / weight;
-    // Only gamma_wB - gamma_wA = sigma cos(theta_A) matters. All of it goes to one phase, as a
-    // tension (gamma > 0): on B when cos > 0, on A when cos < 0. A layer on one phase ends only
-    // at the contact line and where that phase's wetted wall ends (a split over both phases
-    // put line forces at every box edge, which pushed corner particles through the walls).
+    // Only gamma_wB - gamma_wA = sigma cos(theta_A) matters; all of it goes to one phase
+    // (WallLayerPhase in the header). A layer on one phase ends only at the contact line and
+    // where that phase's wetted wall ends.
     const bool isA = p.material[i] == materialA_;
-    const Real gamma = cosA >= 0 ? (isA ? 0.0 : sigma_ * cosA) : (isA ? -sigma_ * cosA : 0.0);
-    if (gamma == 0.0) continue;  // [N/m]
+    const bool onA = layer_ == WallLayerPhase::kLarger ? layerOnA_ : cosA < 0;
+    if (isA != onA) continue;
+    const Real gamma = isA ? -sigma_ * cosA : sigma_ * cosA;  // [N/m]
+    if (gamma == 0.0) continue;
     stress_[i] = gamma * delta * (Mat3::Identity() - m * m.transpose());
     stressed_[i] = 1;
     any = true;

@@ -9,12 +9,19 @@
 // separates the phases, its divergence is the line force (gamma_wB - gamma_wA) along the wall,
 // which moves the contact line until Young's relation holds:
 //   sigma cos(theta_A) = gamma_wB - gamma_wA          (theta_A measured through phase A).
-// Only the difference matters; the model puts all of it on one phase as a tension (gamma > 0):
-// gamma_wB = sigma cos(theta_A) when theta_A < 90 deg, gamma_wA = -sigma cos(theta_A) when
-// theta_A > 90 deg, the other 0. The one parameter comes from theta and sigma alone. (A
-// compressive layer, gamma < 0, behaved no better; a split over both phases puts a layer end,
-// i.e. a line force, at every wall edge and corner, which pushed corner particles through a
-// box's walls.)
+// Only the difference matters; the model puts all of it on one phase (WallLayerPhase below):
+// gamma_wB = sigma cos(theta_A) if that phase is B, gamma_wA = -sigma cos(theta_A) if it is A,
+// the other 0. The one parameter comes from theta and sigma alone. In a continuum the phase is
+// immaterial; in SPH it is not, and which phase is right depends on the pressure solver
+// (measured, docs/interface.md, validation 3, session 12; the same with the phases swapped):
+// - incompressible solvers (INDSPH, the scenario default): the phase with more volume. With
+//   the layer on the smaller phase, a 150 deg droplet receded off the floor (R/6 to R/16) and
+//   the cavity's 120 deg lens covered 0.168 of the wall instead of 0.225; on the larger phase
+//   the droplet holds at 144-147 deg and the lens covers 0.208.
+// - WCSPH: the non-wetting phase, as a tension. With the layer on the larger (wetting) phase
+//   the cavity's lens covered 0.139 instead of 0.213.
+// (A split over both phases puts a layer end, i.e. a line force, at every wall edge and corner,
+// which pushed corner particles through a box's walls; in the cavity it lifted the lens off.)
 //
 // Discretisation (the symmetric pair form of the fluid-fluid stress; under the incompressible
 // solvers that stress uses its corrected form instead, and this stage keeps the symmetric sum,
@@ -42,20 +49,36 @@
 #pragma once
 
 #include <cstdint>
+#include <string_view>
 #include <vector>
 
 #include "sim/effects/effect.h"
 
 namespace sim {
 
+// Which phase carries the wall-interface stress (see above).
+enum class WallLayerPhase {
+  kNonWetting,  // the phase that wets less (cos theta < 0 through it), as a tension; WCSPH
+  kLarger,      // the phase with more rest volume (sum m / rho0, conserved, so a resumed run
+                // makes the same choice); a tension or a compression; incompressible solvers
+};
+
+// The choice for a pressure solver by name (stage_registry.cpp).
+WallLayerPhase wallLayerPhaseFor(std::string_view solver);
+
 class WallAdhesionYoung final : public Effect {
  public:
+  explicit WallAdhesionYoung(WallLayerPhase layer = WallLayerPhase::kNonWetting) : layer_(layer) {}
   std::string_view name() const override { return "wall_adhesion"; }
+  // After attach(): the wall stress lives on the tension pair's material A (else on B).
+  bool layerOnA() const { return layerOnA_; }
   void attach(World& world) override;
   void apply(World& world, const StepContext& context) override;
 
  private:
+  WallLayerPhase layer_;
   int materialA_ = -1, materialB_ = -1;  // the pair; the stored cosines are measured through A
+  bool layerOnA_ = false;         // kLarger: A has more rest volume than B (decided in attach())
   std::vector<Real> cosThetaA_;   // [1] per wall particle; NaN where its tag has no angle
   std::vector<Real> wallArea_;    // [m^2] per wall particle
   std::vector<std::uint8_t> surface_;  // 1 for surface-layer wall particles (all of a 1-layer wall)

@@ -158,17 +158,24 @@ const std::vector<EffectEntry>& effectRegistry() {
          return std::make_unique<XsphMonaghan1989>(o.velocitySmoothing);
        }},
       {"wall_adhesion", "contact angle per (fluid, wall): Young wall-interface stress",
-       [](const World& w, const PipelineOptions&) {
+       [](const World& w, const PipelineOptions& o) {
          // Wetting acts at a contact line: it needs both liquids of the tension pair present.
          const bool bothPhases = presentTensionPair(w) != nullptr;
          const bool angle = !w.materials.contactAngles().empty();
          const bool on = angle && bothPhases;
-         return StageDecision{"wall_adhesion", on, false,
-                              on ? "a contact angle is given for a fluid with interfacial tension"
-                                 : (angle ? "one liquid only: no contact line"
-                                          : "no contact angle (walls are neutral, 90 deg)")};
+         const char* layer = wallLayerPhaseFor(o.solver) == WallLayerPhase::kLarger
+                                 ? "; wall stress on the liquid with more volume (by the solver)"
+                                 : "; wall stress on the non-wetting liquid (by the solver)";
+         return StageDecision{
+             "wall_adhesion", on, false,
+             on ? std::string("a contact angle is given for a fluid with interfacial tension") +
+                      layer
+                : (angle ? "one liquid only: no contact line"
+                         : "no contact angle (walls are neutral, 90 deg)")};
        },
-       [](const World&, const PipelineOptions&) { return std::make_unique<WallAdhesionYoung>(); }},
+       [](const World&, const PipelineOptions& o) {
+         return std::make_unique<WallAdhesionYoung>(wallLayerPhaseFor(o.solver));
+       }},
       {"interfacial_tension", "surface stress between two liquids (Hu & Adams 2006)",
        [](const World& w, const PipelineOptions& o) {
          std::ostringstream why;

@@ -44,6 +44,9 @@ struct CavityCase {
   Real tEnd = 0.08;     // [s]
   Real sampleFrom = 0.05;  // [s]
   const char* solver = "wcsph";
+  // [1] mass above rest density: WCSPH's Tait clamp at p = 0 then never acts; an incompressible
+  // solver needs 0 in a closed cavity (the excess could never leave it)
+  Real massExcess = 0.02;
 };
 
 CavityResult runCavity(const CavityCase& c) {
@@ -55,7 +58,7 @@ CavityResult runCavity(const CavityCase& c) {
   s.oilOffset = kCavityRadius * (1 - 2 * testing::flatCoverage(kStartFraction));
   const Real tilt = c.tiltDeg * std::numbers::pi / 180;
   s.oilAxis = Vec3(std::sin(tilt), std::cos(tilt), 0);
-  s.massExcess = 0.02;
+  s.massExcess = c.massExcess;
   PipelineOptions options;
   options.solver = c.solver;  // not DFSPH: its rest state is not calm yet (docs/interface.md)
   options.wallFriction = false;  // free slip: a no-slip wall pins a contact line (Huh-Scriven)
@@ -142,6 +145,29 @@ TEST_CASE("Cavity without gravity: the oil settles to the 120 deg lens (Bond num
               r.steps, r.seconds);
   // The start (the flat cut's coverage, 0.35) lies two tolerances from the lens' 0.225: a run
   // whose contact line did not recede fails.
+  REQUIRE(std::abs(r.start - r.expected) > 1.5 * kCoverageTolerance);
+  CHECK(r.mean.coverage == Approx(r.expected).margin(kCoverageTolerance));
+}
+
+// The same lens under INDSPH, the scenario runner's default solver, whose wall stress sits on
+// the liquid with more volume, here the aqueous (sim/effects/wall_adhesion_young.h). Measured
+// (`sim_interface_bench cavity 120 0.3 8 0 970 0.03 0.04 0 indsph`): 0.208 at d = Rs/8 and 0.221
+// at Rs/12 (closed form 0.2249 / 0.2305); with the stress on the oil, WCSPH's choice, 0.168 and
+// 0.202.
+TEST_CASE("Cavity without gravity under INDSPH: the oil settles to the 120 deg lens",
+          "[validation][interface][cavity]") {
+  CavityCase c;
+  c.lens = true;
+  c.theta = 120;
+  c.tEnd = 0.1;
+  c.sampleFrom = 0.05;
+  c.solver = "indsph";
+  c.massExcess = 0;
+  const CavityResult r = runCavity(c);
+  std::printf(
+      "cavity lens 120 deg, INDSPH: coverage %.4f (Shepard %.4f, dry %.4f), closed form "
+      "%.4f, start %.4f; %ld steps, %.1f s\n",
+      r.mean.coverage, r.mean.shepardCoverage, r.mean.dry, r.expected, r.start, r.steps, r.seconds);
   REQUIRE(std::abs(r.start - r.expected) > 1.5 * kCoverageTolerance);
   CHECK(r.mean.coverage == Approx(r.expected).margin(kCoverageTolerance));
 }

@@ -160,17 +160,24 @@ TEST_CASE("Wall adhesion exerts Young's line force sigma cos(theta) at the conta
   // the oil ends at the contact line (radius a ~ R) and pulls it outward with 2 pi a sigma
   // cos(theta) in total.
   const int layers = GENERATE(0, 3);  // one Akinci layer (eye scenes); lattice layers (tests)
+  // The stress on the non-wetting phase (WCSPH) or on the phase with more volume, here the
+  // aqueous (incompressible solvers): Young's line force either way.
+  const WallLayerPhase phase = GENERATE(WallLayerPhase::kNonWetting, WallLayerPhase::kLarger);
   for (const Real theta : {60.0, 90.0, 120.0, 30.0}) {
     auto scene = hemisphere(layers);
     World& w = *scene.world;
     w.materials.setContactAngle(scene.oil, testing::kFloorTag, theta);
-    WallAdhesionYoung adhesion;
+    WallAdhesionYoung adhesion(phase);
     applyAlone(w, adhesion);
+    CHECK_FALSE(adhesion.layerOnA());  // the oil (A) is the smaller phase
     const Real h = w.supportRadius();
     const Real force = radialForce(w, scene.centre, scene.radius + 3 * h);
     const Real expected = 2 * std::numbers::pi * scene.radius * 0.04 *
                           std::cos(theta * std::numbers::pi / 180);
-    INFO("theta " << theta << " deg: radial force " << force << " N, expected " << expected);
+    INFO("theta " << theta << " deg, layer "
+                  << (phase == WallLayerPhase::kLarger ? "on the larger phase"
+                                                       : "on the non-wetting phase")
+                  << ": radial force " << force << " N, expected " << expected);
     if (theta == 90.0) {
       CHECK(std::abs(force) < 1e-12);
     } else {
