@@ -92,6 +92,26 @@ SphereFit fitSphereGeometric(const std::vector<Vec3>& points, const SphereFit& s
   return fit;
 }
 
+Real capAngleOfFootprint(Real volume, Real sectionRadius, Real height) {
+  require(volume > 0 && sectionRadius >= 0 && height >= 0,
+          "footprint angle needs a positive volume and a non-negative radius and height");
+  // Section radius at `height` of the volume's cap of angle theta (centre -R cos above the wall).
+  auto section = [&](Real theta) {
+    const Real u = std::cos(theta);
+    const Real radius = std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
+    const Real dz = height + radius * u;  // height above the centre
+    return std::sqrt(std::max<Real>(0, radius * radius - dz * dz));
+  };
+  Real lo = std::numbers::pi / 2, hi = std::numbers::pi;  // section(lo) >= r >= section(hi)
+  if (sectionRadius >= section(lo)) return 90;
+  if (sectionRadius <= section(hi)) return 180;
+  for (int k = 0; k < 60; ++k) {
+    const Real mid = 0.5 * (lo + hi);
+    (section(mid) > sectionRadius ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi) * 180 / std::numbers::pi;
+}
+
 Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, const Vec3& axisPoint,
                       Real volume) {
   require(points.size() >= 4 && volume > 0, "cap fit needs points and a positive volume");

@@ -40,6 +40,16 @@ struct WallPlane {
 Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, const Vec3& axisPoint,
                       Real volume);
 
+// Angle [deg] through the droplet, in [90, 180], of the spherical cap of the given volume [m^3]
+// whose section at `height` [m] above the wall has radius `sectionRadius` [m]: the angle from the
+// droplet's footprint. Meant for non-wetting droplets, whose shape away from the wall hardly
+// depends on the angle (the volume's caps of 165 and 180 deg differ in height by 3 % of their
+// radius) but whose footprint does (at R0 = 12 d the first layer's radius is 4.97 d at 155 deg,
+// 3.88 d at 165, 3.15 d at 175). Over [90, 180] the section shrinks monotonically once `height` is
+// below the 90 deg cap's top; a radius wider than the 90 deg cap's reads 90, narrower than the
+// touching sphere's reads 180.
+Real capAngleOfFootprint(Real volume, Real sectionRadius, Real height);
+
 struct CapFit {
   SphereFit sphere;         // the algebraic fit (Kasa) of the interface points
   Real sphereAngle = 0.0;   // [deg] its angle acos(-z_c / R), through the droplet's material

@@ -306,7 +306,7 @@ TEST_CASE("a contact angle outside the tested range is noted in plan and report"
   CHECK(contactAngleRangeNote(kTestedContactAngleMax).empty());
   const std::string high = contactAngleRangeNote(161.8);
   CHECK(high.find("162 deg through the tamponade") != std::string::npos);
-  CHECK(high.find("receding") != std::string::npos);
+  CHECK(high.find("flatter than asked") != std::string::npos);
   CHECK(contactAngleRangeNote(15.0).find("spread less") != std::string::npos);
 
   const fs::path dir = fs::temp_directory_path() / "tamponade_contact_angle_note_test";

@@ -2,7 +2,8 @@
 //   sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [key=value...]  l = 2 vs Lamb
 //   sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] [R_per_d]
 //                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm]
-//                               [box_height_per_R]     sessile droplet contact angle
+//                               [box_height_per_R] [cap|footprint]
+//                                                      sessile droplet contact angle
 //   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R]
 //                                      the cap fit on a static cap of exactly THETA
 //   sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] [depth_per_d]
@@ -144,11 +145,11 @@ int sessile(const testing::SessileCase& c) {
   const testing::SessileResult r = testing::runSessile(run);
   std::printf(
       "sessile: requested %.1f deg, start %.1f deg, %s, %d wall layers, d = R/%.0f: "
-      "measured %.1f deg (mean of the last fifth; %.1f at the end) after %.3f s; %zu "
+      "measured %.1f deg by the %s (mean of the last fifth; %.1f at the end) after %.3f s; %zu "
       "particles, %ld steps, wall %.1f s%s\n",
       c.theta, std::acos(-c.startCos) * 180 / std::numbers::pi, c.solver.c_str(), c.wallLayers,
-      c.perR, r.angle, r.finalAngle, c.tEnd, r.particles, r.steps, r.seconds,
-      r.finite ? "" : " (NOT FINITE)");
+      c.perR, r.angle, c.footprint ? "footprint" : "cap fit", r.finalAngle, c.tEnd, r.particles,
+      r.steps, r.seconds, r.finite ? "" : " (NOT FINITE)");
   return r.finite ? 0 : 1;
 }
 
@@ -514,6 +515,7 @@ int main(int argc, char** argv) {
     if (argc > 11) c.halfWidthPerR = std::atof(argv[11]);
     if (argc > 12) c.r0 = std::atof(argv[12]) * 1e-3;
     if (argc > 13) c.boxHeightPerR = std::atof(argv[13]);
+    if (argc > 14) c.footprint = std::strcmp(argv[14], "footprint") == 0;
     return sessile(c);
   }
   if (argc >= 3 && std::strcmp(argv[1], "meniscus") == 0) {
@@ -581,7 +583,7 @@ int main(int argc, char** argv) {
       "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
       "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
       "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm] "
-      "[box_height_per_R]\n"
+      "[box_height_per_R] [cap|footprint]\n"
       "       sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] "
       "[half_width_per_R]\n"
       "       sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] "

@@ -33,6 +33,9 @@ struct SessileCase {
   int relaxSteps = 0;      // steps with the velocities reset after each, before the run
   Real r0 = 0.003;         // [m] radius of the hemisphere whose volume the droplet has
   Real boxHeightPerR = 1.6;  // [1] least inner box height over R0 (raised to clear the caps by 2 h)
+  // Measure the angle from the footprint (the first layer's oil disc, capAngleOfFootprint)
+  // instead of the cap fit: above 150 deg the cap fit cannot tell the angle (footprintAngle).
+  bool footprint = false;
 };
 
 struct SessileResult : AngleRunResult {
@@ -86,6 +89,7 @@ inline DropletScene sessileScene(const SessileCase& c) {
 struct FloorContact {
   int oil = 0, aqueousUnder = 0;
   Real radius = 0;  // [m]
+  Real height = 0;  // [m] mean height of the layer's oil particles above the floor
 };
 
 inline FloorContact floorContact(const World& w, int oil, Real d) {
@@ -100,7 +104,12 @@ inline FloorContact floorContact(const World& w, int oil, Real d) {
   };
   FloorContact c;
   for (Index i = 0; i < p.size(); ++i)
-    if (p.material[i] == oil && p.x[i].y() < d) ++c.oil, c.radius = std::max(c.radius, radial(i));
+    if (p.material[i] == oil && p.x[i].y() < d) {
+      ++c.oil;
+      c.radius = std::max(c.radius, radial(i));
+      c.height += p.x[i].y();
+    }
+  c.height /= std::max(c.oil, 1);
   for (Index i = 0; i < p.size(); ++i)
     if (p.material[i] != oil && p.x[i].y() < d && radial(i) < c.radius - d) ++c.aqueousUnder;
   return c;
@@ -126,19 +135,26 @@ inline SessileResult runSessile(const SessileCase& c) {
   r.adhesion = pipeline.hasStage("wall_adhesion");
   const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
   // Interface points closer than d to the floor are left out: the wall layer distorts them.
+  const auto footprintAngle = [&](const World& world, const CapFit& fit) {
+    const FloorContact contact = floorContact(world, scene.oil, spacing);
+    return contact.oil == 0 ? Real(180)
+                            : capAngleOfFootprint(fit.volume, contact.radius, contact.height);
+  };
   const auto measure = [&](const World& world) {
-    return fitSessileCap(world, scene.oil, floor, spacing).contactAngle;
+    const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
+    return c.footprint ? footprintAngle(world, fit) : fit.contactAngle;
   };
   const auto describe = [&](const World& world) {
     const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
     const FloorContact contact = floorContact(world, scene.oil, spacing);
-    char line[224];
-    std::snprintf(line, sizeof line,
-                  "theta = %.1f deg (through oil; free sphere %.1f deg, R = %.2f mm, rms %.3f mm)  "
-                  "floor layer: %d oil, %d aqueous under it, contact radius %.2f d",
-                  fit.contactAngle, fit.sphereAngle, fit.sphere.radius * 1e3,
-                  fit.sphere.rmsResidual * 1e3, contact.oil, contact.aqueousUnder,
-                  contact.radius / spacing);
+    char line[256];
+    std::snprintf(
+        line, sizeof line,
+        "theta = %.1f deg (through oil; free sphere %.1f deg, R = %.2f mm, rms %.3f mm)  "
+        "floor layer: %d oil, %d aqueous under it, contact radius %.2f d, footprint angle "
+        "%.1f deg",
+        fit.contactAngle, fit.sphereAngle, fit.sphere.radius * 1e3, fit.sphere.rmsResidual * 1e3,
+        contact.oil, contact.aqueousUnder, contact.radius / spacing, footprintAngle(world, fit));
     return std::string(line);
   };
   for (int k = 0; k < c.relaxSteps; ++k) {
