@@ -228,10 +228,10 @@ std::string contactAngleRangeNote(double throughTamponadeDeg) {
                              "(docs/interface.md, validation 3)";
   if (throughTamponadeDeg > kTestedContactAngleMax)
     return "contact angle " + angle + " is " + tested +
-           ": above 140 deg the oil's edge settled up to 10 deg flatter than asked (a 150 deg "
-           "droplet 142-147 deg at 8-12 particle spacings per radius, a straight contact line "
-           "140-142 deg), and steeper at coarser spacing; read where the oil's edge meets the "
-           "retina as uncertain by several degrees";
+           ": asked for 150 deg, a round droplet settled up to 8 deg flatter than asked (142-145 "
+           "deg at 8-12 particle spacings per radius), a ridge within 5 deg, and oil between two "
+           "walls up to 13 deg steeper; read where the oil's edge meets the retina as uncertain "
+           "by several degrees";
   return "contact angle " + angle + " is " + tested +
          ": at 15 deg a sessile droplet held 16.6-23.6 deg, so a thin tamponade film may spread "
          "less than asked";
