@@ -23,8 +23,8 @@ Real cubicSpline2d(Real r, Real h) {
 
 }  // namespace
 
-WallLayerPhase wallLayerPhaseFor(std::string_view solver) {
-  return solver == "wcsph" ? WallLayerPhase::kNonWetting : WallLayerPhase::kLarger;
+WallLayerPhase wallLayerPhaseFor(bool backgroundPressure) {
+  return backgroundPressure ? WallLayerPhase::kLarger : WallLayerPhase::kNonWetting;
 }
 
 void WallAdhesionYoung::attach(World& world) {

@@ -12,14 +12,16 @@
 // Only the difference matters; the model puts all of it on one phase (WallLayerPhase below):
 // gamma_wB = sigma cos(theta_A) if that phase is B, gamma_wA = -sigma cos(theta_A) if it is A,
 // the other 0. The one parameter comes from theta and sigma alone. In a continuum the phase is
-// immaterial; in SPH it is not, and which phase is right depends on the pressure solver
-// (measured, docs/interface.md, validation 3, session 12; the same with the phases swapped):
-// - incompressible solvers (INDSPH, the scenario default): the phase with more volume. With
-//   the layer on the smaller phase, a 150 deg droplet receded off the floor (R/6 to R/16) and
-//   the cavity's 120 deg lens covered 0.168 of the wall instead of 0.225; on the larger phase
-//   the droplet holds at 144-147 deg and the lens covers 0.208.
-// - WCSPH: the non-wetting phase, as a tension. With the layer on the larger (wetting) phase
-//   the cavity's lens covered 0.139 instead of 0.213.
+// immaterial; in SPH it is not, and which phase is right depends on whether the
+// background_pressure stage shifts the particles (transport velocity; on in closed INDSPH
+// scenes with tension and no elastic tissue). Measured on the cavity's 120 deg lens (closed
+// form 0.225 of the wall; docs/interface.md, validation 3, session 12; the same with the phases
+// swapped):
+// - with the shift: the phase with more volume. INDSPH 0.208 against 0.168 on the oil; WCSPH
+//   with the stage forced on 0.19 against 0.21. With the stress on the smaller phase a 150 deg
+//   droplet (INDSPH) left the floor (R/6 to R/16); on the larger one it holds at 142-145.
+// - without it: the non-wetting phase, as a tension. WCSPH 0.21 against 0.12 on the aqueous;
+//   INDSPH with the stage off 0.21 against 0.10.
 // (A split over both phases puts a layer end, i.e. a line force, at every wall edge and corner,
 // which pushed corner particles through a box's walls; in the cavity it lifted the lens off.)
 //
@@ -49,7 +51,6 @@
 #pragma once
 
 #include <cstdint>
-#include <string_view>
 #include <vector>
 
 #include "sim/effects/effect.h"
@@ -58,13 +59,13 @@ namespace sim {
 
 // Which phase carries the wall-interface stress (see above).
 enum class WallLayerPhase {
-  kNonWetting,  // the phase that wets less (cos theta < 0 through it), as a tension; WCSPH
+  kNonWetting,  // the phase that wets less (cos theta < 0 through it), as a tension
   kLarger,      // the phase with more rest volume (sum m / rho0, conserved, so a resumed run
-                // makes the same choice); a tension or a compression; incompressible solvers
+                // makes the same choice); a tension or a compression
 };
 
-// The choice for a pressure solver by name (stage_registry.cpp).
-WallLayerPhase wallLayerPhaseFor(std::string_view solver);
+// The choice by whether the background_pressure stage runs (stage_registry.cpp).
+WallLayerPhase wallLayerPhaseFor(bool backgroundPressure);
 
 class WallAdhesionYoung final : public Effect {
  public:

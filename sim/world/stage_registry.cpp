@@ -95,6 +95,14 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
   return {name, true, false, why.str()};
 }
 
+// Whether the background_pressure stage runs, its rule or the protocol's forcing.
+bool backgroundPressureActive(const World& w, const PipelineOptions& o) {
+  const auto forced = o.forced.find("background_pressure");
+  if (forced != o.forced.end() && forced->second != Force::kAuto)
+    return forced->second == Force::kOn;
+  return backgroundPressureDecision(w, o).active;
+}
+
 }  // namespace
 
 const std::vector<SolverEntry>& solverRegistry() {
@@ -163,9 +171,10 @@ const std::vector<EffectEntry>& effectRegistry() {
          const bool bothPhases = presentTensionPair(w) != nullptr;
          const bool angle = !w.materials.contactAngles().empty();
          const bool on = angle && bothPhases;
-         const char* layer = wallLayerPhaseFor(o.solver) == WallLayerPhase::kLarger
-                                 ? "; wall stress on the liquid with more volume (by the solver)"
-                                 : "; wall stress on the non-wetting liquid (by the solver)";
+         const char* layer =
+             wallLayerPhaseFor(backgroundPressureActive(w, o)) == WallLayerPhase::kLarger
+                 ? "; wall stress on the liquid with more volume (with background_pressure)"
+                 : "; wall stress on the non-wetting liquid (without background_pressure)";
          return StageDecision{
              "wall_adhesion", on, false,
              on ? std::string("a contact angle is given for a fluid with interfacial tension") +
@@ -173,8 +182,9 @@ const std::vector<EffectEntry>& effectRegistry() {
                 : (angle ? "one liquid only: no contact line"
                          : "no contact angle (walls are neutral, 90 deg)")};
        },
-       [](const World&, const PipelineOptions& o) {
-         return std::make_unique<WallAdhesionYoung>(wallLayerPhaseFor(o.solver));
+       [](const World& w, const PipelineOptions& o) {
+         return std::make_unique<WallAdhesionYoung>(
+             wallLayerPhaseFor(backgroundPressureActive(w, o)));
        }},
       {"interfacial_tension", "surface stress between two liquids (Hu & Adams 2006)",
        [](const World& w, const PipelineOptions& o) {

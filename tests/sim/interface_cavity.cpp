@@ -162,12 +162,13 @@ TEST_CASE("Cavity without gravity: the oil settles to the 120 deg lens (Bond num
   checkLens120("wcsph", 0.02, 0.08);
 }
 
-// The same lens under INDSPH, the scenario runner's default solver, whose wall stress sits on
-// the liquid with more volume, here the aqueous (sim/effects/wall_adhesion_young.h), at rest
+// The same lens under INDSPH, the scenario runner's default solver, whose background_pressure
+// stage puts the wall stress on the liquid with more volume, here the aqueous
+// (sim/effects/wall_adhesion_young.h), at rest
 // mass (an incompressible solver cannot remove an excess from the closed cavity). Measured
 // (`sim_interface_bench cavity 120 0.3 8 0 970 0.03 0.04 0 indsph`): 0.208 at d = Rs/8 and 0.221
-// at Rs/12 (closed form 0.2249 / 0.2305); with the stress on the oil, WCSPH's choice, 0.168 and
-// 0.202.
+// at Rs/12 (closed form 0.2249 / 0.2305); with the stress on the oil, the choice without the stage,
+// 0.168 and 0.202.
 TEST_CASE("Cavity without gravity under INDSPH: the oil settles to the 120 deg lens",
           "[validation][interface][cavity]") {
   checkLens120("indsph", 0.0, 0.1);

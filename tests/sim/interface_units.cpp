@@ -160,8 +160,8 @@ TEST_CASE("Wall adhesion exerts Young's line force sigma cos(theta) at the conta
   // the oil ends at the contact line (radius a ~ R) and pulls it outward with 2 pi a sigma
   // cos(theta) in total.
   const int layers = GENERATE(0, 3);  // one Akinci layer (eye scenes); lattice layers (tests)
-  // The stress on the non-wetting phase (WCSPH) or on the phase with more volume, here the
-  // aqueous (incompressible solvers): Young's line force either way.
+  // The stress on the non-wetting phase (without background_pressure) or on the phase with more
+  // volume, here the aqueous (with it): Young's line force either way.
   const WallLayerPhase phase = GENERATE(WallLayerPhase::kNonWetting, WallLayerPhase::kLarger);
   for (const Real theta : {60.0, 90.0, 120.0, 30.0}) {
     auto scene = hemisphere(layers);
@@ -237,6 +237,28 @@ TEST_CASE("Interface stages are assembled only when the scene calls for them",
   options.forced["interfacial_tension"] = Force::kOn;
   Pipeline forced = assemblePipeline(w, options);
   CHECK_THROWS_WITH(forced.attach(w), Contains("no pair of materials has a tension"));
+}
+
+TEST_CASE("The wall stress's phase follows the background pressure stage", "[unit][interface]") {
+  // The choice measured on the cavity lens (wall_adhesion_young.h): the larger phase with the
+  // particle shift of background_pressure, the non-wetting phase without it.
+  auto scene = hemisphere();
+  World& w = *scene.world;
+  w.materials.setContactAngle(scene.oil, testing::kFloorTag, 120.0);
+  PipelineOptions options;
+  options.solver = "indsph";
+  options.closedDomain = Force::kOn;
+  CHECK(assemblePipeline(w, options).hasStage("background_pressure"));
+  CHECK_THAT(assemblePipeline(w, options).describe(), Contains("liquid with more volume"));
+  options.forced["background_pressure"] = Force::kOff;
+  CHECK_THAT(assemblePipeline(w, options).describe(), Contains("non-wetting liquid"));
+  options.forced.clear();
+  options.solver = "wcsph";
+  options.wcsph.speedOfSound = 2;
+  CHECK_FALSE(assemblePipeline(w, options).hasStage("background_pressure"));
+  CHECK_THAT(assemblePipeline(w, options).describe(), Contains("non-wetting liquid"));
+  options.forced["background_pressure"] = Force::kOn;
+  CHECK_THAT(assemblePipeline(w, options).describe(), Contains("liquid with more volume"));
 }
 
 TEST_CASE("Contact angle on a wall tag that does not exist is an error naming the tag",
