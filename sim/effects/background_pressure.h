@@ -25,6 +25,10 @@
 // (physical 4), and in the eye (default_eye.toml, upright) the oil rose to the superior
 // quadrant 4x slower (coverage 0.66 -> 0.675 instead of -> 0.805 in 0.6 s): the pinning of
 // slow buoyant motion that the gravity reference removed (docs/interface.md, validation 1b).
+// Contact-line particles (a wall neighbour and a colour gradient of the first tension pair) are
+// not shifted: there the shift moved the contact line itself (the cavity's 120 deg lens covered
+// 0.208 of the wall instead of 0.225; unshifted 0.228-0.234; docs/interface.md, validation 3,
+// session 12).
 // At a free surface the shift would pull the surface in, so the stage runs only in closed
 // scenes (rule in stage_registry.cpp). Fluid particles only: elastic particles carry their own
 // stress, and a fluid particle next to tissue counts the tissue particles as neighbours, so its

@@ -166,9 +166,9 @@ TEST_CASE("Cavity without gravity: the oil settles to the 120 deg lens (Bond num
 // stage puts the wall stress on the liquid with more volume, here the aqueous
 // (sim/effects/wall_adhesion_young.h), at rest
 // mass (an incompressible solver cannot remove an excess from the closed cavity). Measured
-// (`sim_interface_bench cavity 120 0.3 8 0 970 0.03 0.04 0 indsph`): 0.208 at d = Rs/8 and 0.221
-// at Rs/12 (closed form 0.2249 / 0.2305); with the stress on the oil, the choice without the stage,
-// 0.168 and 0.202.
+// (`sim_interface_bench cavity 120 0.3 8 0 970 0.03 0.04 0 indsph`): 0.228-0.234 at d = Rs/8
+// (closed form 0.2249). Before background_pressure left contact-line particles unshifted: 0.208,
+// and 0.168 with the stress on the oil, the choice without the stage (session 12).
 TEST_CASE("Cavity without gravity under INDSPH: the oil settles to the 120 deg lens",
           "[validation][interface][cavity]") {
   checkLens120("indsph", 0.0, 0.1);

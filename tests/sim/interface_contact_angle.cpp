@@ -34,7 +34,8 @@ testing::SessileResult settle(Real theta, Real tEnd = 0.1) {
 // Measured (window mean over the last fifth) with the corrected surface stress (INDSPH's
 // automatic choice): 59.7 deg for 60, 120.2 deg for 120 (0.1 s); 33.4 deg for 30 (0.3 s). Since
 // the wall stress sits on the larger phase (the aqueous, session 12) 120 reads 123.7 (118.4 over
-// 0.3 s); 30 and 60 are unchanged (the aqueous carried it before too).
+// 0.3 s); 30 and 60 are unchanged (the aqueous carried it before too). Since background_pressure
+// leaves contact-line particles unshifted: 32.9 / 60.0 / 123.1 for 30 / 60 / 120.
 void checkSessileAngle(Real requested, Real tEnd = 0.1) {
   const testing::SessileResult r = settle(requested, tEnd);
   std::printf("sessile %.0f deg requested: %.1f deg measured (%.1f at the end), %ld steps, %.1f s\n",
@@ -72,7 +73,7 @@ TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
 // walls, interface_ridge.h), whose straight contact lines are 8.6 d apart however steep the
 // angle. Started as the 150 deg segment it settles at 148.3-149.2 deg from 0.42 s on (window
 // 148.5, `sim_interface_bench ridge 150 0.6 150 12 0.005 16`, 10k particles, 304 s on one
-// thread); started as the 135 deg segment it stays at 145.0-145.8 from 0.24 s on, the band's
+// thread; 148.4 with contact-line particles unshifted by background_pressure); started as the 135 deg segment it stays at 145.0-145.8 from 0.24 s on, the band's
 // edge. So the balance lies in 145-149, with about 4 deg of hysteresis. With the wall stress on
 // the oil, the rule before session 12 (WallLayerPhase::kNonWetting), the same run reads 143.7
 // (143.5 at the end) and fails the check.
