@@ -92,13 +92,23 @@ SphereFit fitSphereGeometric(const std::vector<Vec3>& points, const SphereFit& s
   return fit;
 }
 
+namespace {
+
+// [m] Sphere radius of the cap of `volume` [m^3] meeting the wall at the angle whose cosine is u:
+// V = pi R^3 (2 + u)(1 - u)^2 / 3; the centre lies -R u above the wall.
+Real capRadius(Real volume, Real u) {
+  return std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
+}
+
+}  // namespace
+
 Real capAngleOfFootprint(Real volume, Real sectionRadius, Real height) {
   require(volume > 0 && sectionRadius >= 0 && height >= 0,
           "footprint angle needs a positive volume and a non-negative radius and height");
   // Section radius at `height` of the volume's cap of angle theta (centre -R cos above the wall).
   auto section = [&](Real theta) {
     const Real u = std::cos(theta);
-    const Real radius = std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
+    const Real radius = capRadius(volume, u);
     const Real dz = height + radius * u;  // height above the centre
     return std::sqrt(std::max<Real>(0, radius * radius - dz * dz));
   };
@@ -117,11 +127,11 @@ Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, co
   require(points.size() >= 4 && volume > 0, "cap fit needs points and a positive volume");
   const Vec3 n = wall.normal.normalized();
   const Vec3 foot = axisPoint - (axisPoint - wall.point).dot(n) * n;  // the axis meets the wall
-  // Cap of angle theta (through the droplet) and volume V: V = pi R^3 (2 + cos)(1 - cos)^2 / 3,
-  // centre -R cos(theta) above the wall on the axis.
+  // Cap of angle theta (through the droplet) and volume V (capRadius), centre -R cos(theta)
+  // above the wall on the axis.
   auto cost = [&](Real theta) {
     const Real u = std::cos(theta);
-    const Real radius = std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
+    const Real radius = capRadius(volume, u);
     const Vec3 c = foot - radius * u * n;
     Real sum = 0;
     for (const Vec3& x : points) {

@@ -95,12 +95,14 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
   return {name, true, false, why.str()};
 }
 
-// Whether the background_pressure stage runs, its rule or the protocol's forcing.
+// Whether effect `name` runs: the protocol's forcing if any, else its rule's decision.
+bool activeAfterForcing(const PipelineOptions& o, const std::string& name, bool ruleActive) {
+  const auto f = o.forced.find(name);
+  return f != o.forced.end() && f->second != Force::kAuto ? f->second == Force::kOn : ruleActive;
+}
+
 bool backgroundPressureActive(const World& w, const PipelineOptions& o) {
-  const auto forced = o.forced.find("background_pressure");
-  if (forced != o.forced.end() && forced->second != Force::kAuto)
-    return forced->second == Force::kOn;
-  return backgroundPressureDecision(w, o).active;
+  return activeAfterForcing(o, "background_pressure", backgroundPressureDecision(w, o).active);
 }
 
 }  // namespace
@@ -246,14 +248,11 @@ Pipeline assemblePipeline(const World& world, const PipelineOptions& options) {
   std::vector<StageDecision> decisions;
   for (const auto& entry : effectRegistry()) {
     StageDecision d = entry.needed(world, options);
-    const auto f = options.forced.find(entry.name);
-    if (f != options.forced.end() && f->second != Force::kAuto) {
-      const bool on = f->second == Force::kOn;
-      if (on != d.active) {
-        d.forced = true;
-        d.reason = std::string("forced ") + (on ? "on" : "off") + " by the protocol (rule: " +
-                   d.reason + ")";
-      }
+    const bool on = activeAfterForcing(options, entry.name, d.active);
+    if (on != d.active) {
+      d.forced = true;
+      d.reason = std::string("forced ") + (on ? "on" : "off") +
+                 " by the protocol (rule: " + d.reason + ")";
       d.active = on;
     }
     if (d.active) effects.push_back(entry.create(world, options));

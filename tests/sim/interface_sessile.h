@@ -135,14 +135,14 @@ inline SessileResult runSessile(const SessileCase& c) {
   r.adhesion = pipeline.hasStage("wall_adhesion");
   const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
   // Interface points closer than d to the floor are left out: the wall layer distorts them.
-  const auto footprintAngle = [&](const World& world, const CapFit& fit) {
-    const FloorContact contact = floorContact(world, scene.oil, spacing);
+  const auto footprintAngle = [](const CapFit& fit, const FloorContact& contact) {
     return contact.oil == 0 ? Real(180)
                             : capAngleOfFootprint(fit.volume, contact.radius, contact.height);
   };
   const auto measure = [&](const World& world) {
     const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
-    return c.footprint ? footprintAngle(world, fit) : fit.contactAngle;
+    return c.footprint ? footprintAngle(fit, floorContact(world, scene.oil, spacing))
+                       : fit.contactAngle;
   };
   const auto describe = [&](const World& world) {
     const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
@@ -154,7 +154,7 @@ inline SessileResult runSessile(const SessileCase& c) {
         "floor layer: %d oil, %d aqueous under it, contact radius %.2f d, footprint angle "
         "%.1f deg",
         fit.contactAngle, fit.sphereAngle, fit.sphere.radius * 1e3, fit.sphere.rmsResidual * 1e3,
-        contact.oil, contact.aqueousUnder, contact.radius / spacing, footprintAngle(world, fit));
+        contact.oil, contact.aqueousUnder, contact.radius / spacing, footprintAngle(fit, contact));
     return std::string(line);
   };
   for (int k = 0; k < c.relaxSteps; ++k) {
