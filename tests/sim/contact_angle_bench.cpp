@@ -34,7 +34,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: sim_contact_angle_bench [--angles 60,120,150,165] [--resolutions 6,8] [--time 0.3]\n"
     "                               [--start cap|hemisphere|both] [--viscosity 0.005] [--out DIR]\n"
-    "  --angles       requested contact angles through the oil [deg], each in (0, 180)\n"
+    "  --angles       requested contact angles through the oil [deg], each in [1, 179]\n"
     "  --resolutions  R0 / d, droplet radius over particle spacing, each in [4, 24]\n"
     "  --time         simulated time per run [s] (a capillary time is 26 ms)\n"
     "  --start        cap: the droplet starts as the requested cap; hemisphere: as a hemisphere\n"
