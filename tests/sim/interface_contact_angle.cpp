@@ -100,9 +100,9 @@ TEST_CASE("Sessile ridge holds a 150 deg contact angle (through oil)",
 //   once the contact line is mobile (mu 0.005 Pa s: 145.0 from its own cap over 0.96-1.2 s,
 //   144.1 from the hemisphere at 1.28 s, after a plateau at 148 from 0.16 to 0.64 s; session 13).
 //   With mu 0.05 the line is slower (capillary speed sigma / mu: 141.7 from the hemisphere at 1 s).
-//   R/12 reads 144.8 (0.8 s, mu 0.05), still falling; at R/6 it climbs past 155. With the stress on
-//   the oil (sessions 10-11) it receded off the floor at R/6-R/16. A 0.4 s run would pass on the
-//   148 plateau, a transient, so none is written.
+//   R/12 meets at 143-144 from both starts (mu 0.005, 0.6 s); at R/6 it climbs past 155. With
+//   the stress on the oil (sessions 10-11) it receded off the floor at R/6-R/16. A 0.4 s run would
+//   pass on the 148 plateau, a transient, so none is written.
 // - Sessile ridge, a cylindrical droplet with straight contact lines (`sim_interface_bench ridge
 //   150 T START R0_PER_D`, interface_ridge.h), before session 12: with R0 = 12 d it settled at
 //   141.9-143.8 deg, from below and from above; R0 = 18 and 24 d still descending at 145.
