@@ -73,10 +73,11 @@ TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
 // walls, interface_ridge.h), whose straight contact lines are 8.6 d apart however steep the
 // angle. Started as the 150 deg segment it settles at 148.3-149.2 deg from 0.42 s on (window
 // 148.5, `sim_interface_bench ridge 150 0.6 150 12 0.005 16`, 10k particles, 304 s on one
-// thread; 148.4 with contact-line particles unshifted by background_pressure); started as the 135 deg segment it stays at 145.0-145.8 from 0.24 s on, the band's
-// edge. So the balance lies in 145-149, with about 4 deg of hysteresis. With the wall stress on
-// the oil, the rule before session 12 (WallLayerPhase::kNonWetting), the same run reads 143.7
-// (143.5 at the end) and fails the check.
+// thread; 148.4 with contact-line particles unshifted by background_pressure); started as the
+// 135 deg segment it stays at 145.0-145.8 from 0.24 s on, the band's edge. So the balance lies
+// in 145-149, with about 4 deg of hysteresis. With the wall stress on the oil, the rule before
+// session 12 (WallLayerPhase::kNonWetting), the same run reads 143.7 (143.5 at the end) and
+// fails the check.
 TEST_CASE("Sessile ridge holds a 150 deg contact angle (through oil)",
           "[validation][interface][contact_angle]") {
   testing::RidgeCase c;
