@@ -224,8 +224,8 @@ std::string contactAngleRangeNote(double throughTamponadeDeg) {
       std::to_string(std::lround(throughTamponadeDeg)) + " deg through the tamponade";
   const std::string tested = "outside the " + std::to_string(std::lround(kTestedContactAngleMin)) +
                              "-" + std::to_string(std::lround(kTestedContactAngleMax)) +
-                             " deg that the wall-wetting model holds within 5 deg on a flat wall "
-                             "(docs/interface.md, validation 3)";
+                             " deg that the wall-wetting model holds within 5 deg on a flat, "
+                             "layered wall (docs/interface.md, validation 3)";
   if (throughTamponadeDeg > kTestedContactAngleMax)
     return "contact angle " + angle + " is " + tested +
            ": asked for 150 deg, a round droplet settled up to 8 deg flatter than asked (142-145 "
@@ -235,6 +235,15 @@ std::string contactAngleRangeNote(double throughTamponadeDeg) {
   return "contact angle " + angle + " is " + tested +
          ": at 15 deg a sessile droplet held 16.6-23.6 deg, so a thin tamponade film may spread "
          "less than asked";
+}
+
+std::string contactAngleWallModelNote() {
+  return "the eye's wall is one layer of wall particles, on which the wall-wetting model does not "
+         "hold the contact angle: on a flat single-layer wall a sessile droplet kept 90 deg within "
+         "3 deg, but 30 deg read 9.5-37.7 deg and 150 deg 127-151 deg at 6-8 particle spacings per "
+         "radius, not settled after 0.3 s (docs/interface.md, validation 3, session 14); read "
+         "where "
+         "the oil's edge meets the retina as uncertain by 10-20 deg";
 }
 
 std::vector<std::uint8_t> Scenario::tamponadeFlags() const {
@@ -325,6 +334,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
       if (const std::string note = contactAngleRangeNote(180.0 - *oil.contactAngleThroughAqueous);
           !note.empty())
         s.notes.push_back(note);
+      s.notes.push_back(contactAngleWallModelNote());
     }
   }
 

@@ -169,7 +169,7 @@ int sessileStatic(const testing::SessileCase& c) {
   auto scene = testing::sessileScene(run);
   const World& w = *scene.world;
   const Real d = w.particleSpacing();
-  const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
+  const WallPlane floor{Vec3(0, scene.floorHeight, 0), Vec3::UnitY()};
   std::printf("static cap %.1f deg, d = R0/%.0f, jitter %.2f d, %zu particles\n", c.theta, c.perR,
               c.jitter, w.particles.size());
   for (const Real exclude : {0.0, 0.5, 1.0, 1.5}) {
@@ -197,7 +197,7 @@ int sessileStatic(const testing::SessileCase& c) {
   const Real sigma = 0.04, theta = c.theta * std::numbers::pi / 180, u = std::cos(theta);
   const Real capRadius = c.r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u)));
   const Real base = capRadius * std::sin(theta);
-  const Vec3 centre(scene.centre.x(), 0, scene.centre.z());
+  const Vec3 centre(scene.centre.x(), scene.floorHeight, scene.centre.z());
   // Within a + 3 h of the axis, as the hemisphere unit test: the layer's other end, at the
   // floor's edge, stays outside when the box is wide enough (half-width 3 R0 for 30 deg).
   const Real reach = base + 3 * mw.supportRadius();

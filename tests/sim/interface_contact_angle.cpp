@@ -30,7 +30,7 @@ testing::SessileResult settle(Real theta, Real tEnd = 0.1) {
 // +-5 deg: the acceptance for 30-150 deg. The cap fit (the cap of the droplet's volume,
 // sim/measure/sessile_contact_angle.h) reads static lattice caps of 30-150 deg within 1.3 deg
 // (interface_units.cpp) and the start hemisphere at 89.8 deg; the 90 deg run (no wall force at
-// all) ends at 87.0 deg, the bias of the tension's wall treatment at this resolution (R = 6 d).
+// all) settles at 86.3 deg, the bias of the tension's wall treatment (R = 6 d; 85.8 at R = 8 d).
 // Measured (window mean over the last fifth) with the corrected surface stress (INDSPH's
 // automatic choice): 59.7 deg for 60, 120.2 deg for 120 (0.1 s); 33.4 deg for 30 (0.3 s). Since
 // the wall stress sits on the larger phase (the aqueous, session 12) 120 reads 123.7 (118.4 over
@@ -55,6 +55,21 @@ TEST_CASE("Sessile droplet spreads to a 60 deg contact angle (through oil)",
 TEST_CASE("Sessile droplet retracts to a 120 deg contact angle (through oil)",
           "[validation][interface][contact_angle]") {
   checkSessileAngle(120.0);
+}
+
+// 90 deg: no wall stress acts (gamma_wB - gamma_wA = sigma cos 90 = 0), so what this checks is
+// the bias of the tension's own wall treatment. 0.3 s, as for 30 deg: the droplet's equilibrium is
+// about 4 deg flatter than asked, reached from both sides (session 14, `sim_interface_bench
+// sessile 90 T START indsph 3 6 0.005 0.2`): from the hemisphere 86.3 (window over 0.24-0.3 s),
+// from the 80 deg cap 85.9 and from the 100 deg cap 86.5 (0.5 s). The oil's centroid height, a
+// measure without interface points, gives the same angle within 1 deg (87.3). It is not the
+// measurement, the surface-stress form (symmetric 85.9), the pressure solver (WCSPH 85.2), the
+// density difference (oil at 1000 kg/m^3: 85.5), XSPH (off: 86.2) or the particle shift next to
+// walls (off within the wall's reach: 86.1); unshifted interface particles read 88.9, but that
+// shift is what keeps the tension from clumping (validation 1b). docs/interface.md, validation 3.
+TEST_CASE("Sessile droplet holds a 90 deg contact angle (through oil)",
+          "[validation][interface][contact_angle]") {
+  checkSessileAngle(90.0, 0.3);
 }
 
 // 30 deg from the hemisphere: the contact line travels 60 deg and the flat cap (2.7 d tall)
@@ -94,7 +109,7 @@ TEST_CASE("Sessile ridge holds a 150 deg contact angle (through oil)",
   CHECK(r.angle == Approx(150.0).margin(5.0));
 }
 
-// 90 and 150 deg (and the +-10 deg band outside 30-150) are benchmark runs (docs/interface.md,
+// 150 deg (and the +-10 deg band outside 30-150) are benchmark runs (docs/interface.md,
 // validation 3, sessions 10-12). 150 deg is not met on a round droplet.
 // - Round droplet (`sim_interface_bench sessile 150 T START indsph 3 R_PER_D MU 0.2 0 1.5`):
 //   with the wall stress on the larger phase (session 12) both starts meet at 144-145 deg at R/8

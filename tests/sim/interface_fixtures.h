@@ -34,6 +34,10 @@ struct DropletScene {
   int oil = 0, aqueous = 1;
   Vec3 centre = Vec3::Zero();  // [m] centre of the droplet sphere as placed
   Real radius = 0;             // [m] equivalent radius of the droplet's lattice volume
+  // [m] height of the floor as the fluid fills it, the lattice's lower cell face: 0 with layered
+  // walls (half-way between the wall's surface layer and the first fluid layer), (kWallGap - 0.5)
+  // d with one Akinci layer, whose particle centres are at y = 0.
+  Real floorHeight = 0;
 };
 
 struct DropletSpec {
@@ -126,8 +130,9 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   for (std::size_t b = 0; b < w.walls.size(); ++b)
     if (w.walls.normal[b].y() < -0.5) w.walls.tag[b] = kFloorTag;
   const bool sessile = s.sessileStartCos > -1;
-  // The floor's fluid side is y = 0; the first lattice layer sits at gap + d/2.
-  out.centre = sessile ? Vec3(0.5 * out.spec.innerMax.x(), s.sessileStartCos * s.radius,
+  // The floor's fluid side is y = gap; the first lattice layer sits at gap + d/2.
+  out.floorHeight = gap;
+  out.centre = sessile ? Vec3(0.5 * out.spec.innerMax.x(), gap + s.sessileStartCos * s.radius,
                               0.5 * out.spec.innerMax.z())
                        : Vec3(0.5 * out.spec.innerMax);
   const int nx = static_cast<int>(std::lround(width / d));

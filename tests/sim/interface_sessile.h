@@ -92,7 +92,7 @@ struct FloorContact {
   Real height = 0;  // [m] mean height of the layer's oil particles above the floor
 };
 
-inline FloorContact floorContact(const World& w, int oil, Real d) {
+inline FloorContact floorContact(const World& w, int oil, Real d, Real floor = 0) {
   const auto& p = w.particles;
   Vec3 axis = Vec3::Zero();
   Real oilCount = 0;
@@ -104,14 +104,15 @@ inline FloorContact floorContact(const World& w, int oil, Real d) {
   };
   FloorContact c;
   for (Index i = 0; i < p.size(); ++i)
-    if (p.material[i] == oil && p.x[i].y() < d) {
+    if (p.material[i] == oil && p.x[i].y() < floor + d) {
       ++c.oil;
       c.radius = std::max(c.radius, radial(i));
-      c.height += p.x[i].y();
+      c.height += p.x[i].y() - floor;
     }
   c.height /= std::max(c.oil, 1);
   for (Index i = 0; i < p.size(); ++i)
-    if (p.material[i] != oil && p.x[i].y() < d && radial(i) < c.radius - d) ++c.aqueousUnder;
+    if (p.material[i] != oil && p.x[i].y() < floor + d && radial(i) < c.radius - d)
+      ++c.aqueousUnder;
   return c;
 }
 
@@ -133,7 +134,7 @@ inline SessileResult runSessile(const SessileCase& c) {
   if (c.print) std::printf("%s", pipeline.describe().c_str());
   SessileResult r;
   r.adhesion = pipeline.hasStage("wall_adhesion");
-  const WallPlane floor{Vec3::Zero(), Vec3::UnitY()};
+  const WallPlane floor{Vec3(0, scene.floorHeight, 0), Vec3::UnitY()};
   // Interface points closer than d to the floor are left out: the wall layer distorts them.
   const auto footprintAngle = [](const CapFit& fit, const FloorContact& contact) {
     return contact.oil == 0 ? Real(180)
@@ -141,12 +142,13 @@ inline SessileResult runSessile(const SessileCase& c) {
   };
   const auto measure = [&](const World& world) {
     const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
-    return c.footprint ? footprintAngle(fit, floorContact(world, scene.oil, spacing))
-                       : fit.contactAngle;
+    return c.footprint
+               ? footprintAngle(fit, floorContact(world, scene.oil, spacing, scene.floorHeight))
+               : fit.contactAngle;
   };
   const auto describe = [&](const World& world) {
     const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
-    const FloorContact contact = floorContact(world, scene.oil, spacing);
+    const FloorContact contact = floorContact(world, scene.oil, spacing, scene.floorHeight);
     char line[256];
     std::snprintf(
         line, sizeof line,
