@@ -1,8 +1,9 @@
 // Benchmark (not a test) of validation 3, the contact angle (issue 6): what a sessile droplet's
 // angle is worth at each resolution, and what it costs. For each requested angle, each resolution
 // R0 / d and each start (the requested cap, or the hemisphere so the contact line has to travel)
-// it runs the sessile droplet of interface_sessile.h (INDSPH, three wall layers, 0.2 d jitter,
-// R0 = 3 mm, sigma 0.04 N/m, no gravity) and writes one row: the angle measured (window mean over
+// it runs the sessile droplet of interface_sessile.h (INDSPH, 0.2 d jitter, R0 = 3 mm, sigma
+// 0.04 N/m, no gravity) on a floor of three wall layers (the tests' wall) or of one Akinci layer
+// (the eye scenes' wall, --walls single), and writes one row: the angle measured (window mean over
 // the last fifth), at the end, its error, the issue's tolerance (+-5 deg for 30-150, +-10 outside),
 // particles, steps and wall time. The cap fit measures up to 150 deg; above, it cannot tell 165
 // from 180 and the footprint measure (capAngleOfFootprint) is used; the table names which.
@@ -11,7 +12,8 @@
 // so an interrupted sweep keeps the rows it finished (the markdown says how many of how many).
 //
 // usage: sim_contact_angle_bench [--angles 60,120,150,165] [--resolutions 6,8] [--time 0.3]
-//                                [--start cap|hemisphere|both] [--viscosity 0.005] [--out DIR]
+//                                [--start cap|hemisphere|both] [--viscosity 0.005]
+//                                [--walls layered|single|both] [--out DIR]
 // Threads: OMP_NUM_THREADS. Numbers depend on the machine and its load.
 #include <omp.h>
 
@@ -33,7 +35,8 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: sim_contact_angle_bench [--angles 60,120,150,165] [--resolutions 6,8] [--time 0.3]\n"
-    "                               [--start cap|hemisphere|both] [--viscosity 0.005] [--out DIR]\n"
+    "                               [--start cap|hemisphere|both] [--viscosity 0.005]\n"
+    "                               [--walls layered|single|both] [--out DIR]\n"
     "  --angles       requested contact angles through the oil [deg], each in [1, 179]\n"
     "  --resolutions  R0 / d, droplet radius over particle spacing, each in [4, 24]\n"
     "  --time         simulated time per run [s] (a capillary time is 26 ms)\n"
@@ -42,6 +45,9 @@ constexpr const char* kUsage =
     "capillary\n"
     "                 speed sigma / viscosity: 150 deg from the hemisphere at R0/8 reads 148 at\n"
     "                 0.2 s with 0.005, and 142 at 1 s with 0.05\n"
+    "  --walls        layered: three wall layers, the wall the [contact_angle] tests use; single:\n"
+    "                 one Akinci layer, the eye scenes' wall (docs/interface.md, validation 3,\n"
+    "                 session 14)\n"
     "  --out          folder for contact_angle_bench.csv and .md (default: .)\n";
 
 struct Options {
@@ -50,12 +56,13 @@ struct Options {
   double time = 0.3;
   std::vector<std::string> starts{"cap"};
   double viscosity = 0.005;
+  std::vector<std::string> walls{"layered"};
   std::string out = ".";
 };
 
 struct Row {
   double requested = 0, resolution = 0;
-  std::string start, measure;
+  std::string start, walls, measure;
   testing::SessileResult result;
   double tolerance() const { return requested >= 30 && requested <= 150 ? 5 : 10; }
   double error() const { return result.angle - requested; }
@@ -104,6 +111,13 @@ Options parse(int argc, char** argv) {
         o.starts = {value};
       else
         throw std::invalid_argument("--start must be cap, hemisphere or both, not '" + value + "'");
+    } else if (flag == "--walls") {
+      if (value == "both")
+        o.walls = {"layered", "single"};
+      else if (value == "layered" || value == "single")
+        o.walls = {value};
+      else
+        throw std::invalid_argument("--walls must be layered, single or both, not '" + value + "'");
     } else if (flag == "--out")
       o.out = value;
     else
@@ -116,29 +130,32 @@ Options parse(int argc, char** argv) {
 bool writeTables(const Options& o, const std::vector<Row>& rows, std::size_t planned) {
   std::ofstream csv(o.out + "/contact_angle_bench.csv"), md(o.out + "/contact_angle_bench.md");
   if (!csv || !md) return false;
-  csv << "requested_deg,start,R0_per_d,time_s,measure,measured_deg,end_deg,error_deg,"
+  csv << "requested_deg,start,walls,R0_per_d,time_s,measure,measured_deg,end_deg,error_deg,"
          "tolerance_deg,within,particles,steps,wall_s,finite\n";
   md << "Contact angle benchmark (validation 3): sessile droplet, INDSPH, R0 = 3 mm, sigma = 0.04 "
         "N/m, viscosity "
      << o.viscosity << " Pa s, " << o.time << " s simulated, " << omp_get_max_threads()
      << " thread(s). " << rows.size() << " of " << planned << " runs done.\n\n"
-     << "| requested [deg] | start | R0/d | measure | measured [deg] | at the end | error | "
+     << "| requested [deg] | start | walls | R0/d | measure | measured [deg] | at the end | error "
+        "| "
         "tolerance | within | particles | steps | wall [s] |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows) {
     const bool within = r.result.finite && std::abs(r.error()) <= r.tolerance();
     char line[512];
-    std::snprintf(line, sizeof line, "%g,%s,%g,%g,%s,%.2f,%.2f,%+.2f,%g,%d,%zu,%ld,%.1f,%d\n",
-                  r.requested, r.start.c_str(), r.resolution, o.time, r.measure.c_str(),
-                  r.result.angle, r.result.finalAngle, r.error(), r.tolerance(), within ? 1 : 0,
-                  r.result.particles, r.result.steps, r.result.seconds, r.result.finite ? 1 : 0);
+    std::snprintf(line, sizeof line, "%g,%s,%s,%g,%g,%s,%.2f,%.2f,%+.2f,%g,%d,%zu,%ld,%.1f,%d\n",
+                  r.requested, r.start.c_str(), r.walls.c_str(), r.resolution, o.time,
+                  r.measure.c_str(), r.result.angle, r.result.finalAngle, r.error(), r.tolerance(),
+                  within ? 1 : 0, r.result.particles, r.result.steps, r.result.seconds,
+                  r.result.finite ? 1 : 0);
     csv << line;
-    std::snprintf(line, sizeof line,
-                  "| %g | %s | %g | %s | %.1f | %.1f | %+.1f | +-%g | %s | %zu | %ld | %.0f |\n",
-                  r.requested, r.start.c_str(), r.resolution, r.measure.c_str(), r.result.angle,
-                  r.result.finalAngle, r.error(), r.tolerance(),
-                  !r.result.finite ? "no (not finite)" : (within ? "yes" : "no"),
-                  r.result.particles, r.result.steps, r.result.seconds);
+    std::snprintf(
+        line, sizeof line,
+        "| %g | %s | %s | %g | %s | %.1f | %.1f | %+.1f | +-%g | %s | %zu | %ld | %.0f |\n",
+        r.requested, r.start.c_str(), r.walls.c_str(), r.resolution, r.measure.c_str(),
+        r.result.angle, r.result.finalAngle, r.error(), r.tolerance(),
+        !r.result.finite ? "no (not finite)" : (within ? "yes" : "no"), r.result.particles,
+        r.result.steps, r.result.seconds);
     md << line;
   }
   return static_cast<bool>(csv) && static_cast<bool>(md);
@@ -154,42 +171,48 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sim_contact_angle_bench: %s\n\n%s", e.what(), kUsage);
     return 2;
   }
-  const std::size_t planned = o.angles.size() * o.resolutions.size() * o.starts.size();
+  const std::size_t planned =
+      o.walls.size() * o.angles.size() * o.resolutions.size() * o.starts.size();
   std::vector<Row> rows;
   if (!writeTables(o, rows, planned)) {
     std::fprintf(stderr, "sim_contact_angle_bench: cannot write to '%s' (does the folder exist?)\n",
                  o.out.c_str());
     return 1;
   }
-  for (const double resolution : o.resolutions)
-    for (const std::string& start : o.starts)
-      for (const double angle : o.angles) {
-        testing::SessileCase c;
-        c.theta = angle;
-        c.startCos = start == "cap" ? -std::cos(angle * std::numbers::pi / 180) : 0.0;
-        c.solver = "indsph";
-        c.wallLayers = 3;
-        c.jitter = 0.2;
-        c.perR = resolution;
-        // The 30 deg cap's base is 1.7 R0 across: flat caps get the fixture's wider box.
-        c.halfWidthPerR = angle < 90 ? 2.0 : 1.5;
-        c.viscosity = o.viscosity;
-        c.tEnd = o.time;
-        c.footprint = angle > 150;  // the cap fit cannot resolve steeper caps
-        std::printf("run %zu of %zu: %g deg from the %s, R0 = %g d ...\n", rows.size() + 1, planned,
-                    angle, start.c_str(), resolution);
-        std::fflush(stdout);
-        Row row{angle, resolution, start, c.footprint ? "footprint" : "cap fit",
-                testing::runSessile(c)};
-        std::printf("  %.1f deg (%.1f at the end), %zu particles, %ld steps, %.0f s\n",
-                    row.result.angle, row.result.finalAngle, row.result.particles, row.result.steps,
-                    row.result.seconds);
-        rows.push_back(row);
-        if (!writeTables(o, rows, planned)) {
-          std::fprintf(stderr, "sim_contact_angle_bench: cannot write to '%s'\n", o.out.c_str());
-          return 1;
+  for (const std::string& walls : o.walls)
+    for (const double resolution : o.resolutions)
+      for (const std::string& start : o.starts)
+        for (const double angle : o.angles) {
+          testing::SessileCase c;
+          c.theta = angle;
+          c.startCos = start == "cap" ? -std::cos(angle * std::numbers::pi / 180) : 0.0;
+          c.solver = "indsph";
+          c.wallLayers = walls == "layered" ? 3 : 0;
+          c.jitter = 0.2;
+          c.perR = resolution;
+          // The 30 deg cap's base is 1.7 R0 across: flat caps get the fixture's wider box.
+          c.halfWidthPerR = angle < 90 ? 2.0 : 1.5;
+          c.viscosity = o.viscosity;
+          c.tEnd = o.time;
+          c.footprint = angle > 150;  // the cap fit cannot resolve steeper caps
+          std::printf("run %zu of %zu: %g deg from the %s, %s walls, R0 = %g d ...\n",
+                      rows.size() + 1, planned, angle, start.c_str(), walls.c_str(), resolution);
+          std::fflush(stdout);
+          Row row{angle,
+                  resolution,
+                  start,
+                  walls,
+                  c.footprint ? "footprint" : "cap fit",
+                  testing::runSessile(c)};
+          std::printf("  %.1f deg (%.1f at the end), %zu particles, %ld steps, %.0f s\n",
+                      row.result.angle, row.result.finalAngle, row.result.particles,
+                      row.result.steps, row.result.seconds);
+          rows.push_back(row);
+          if (!writeTables(o, rows, planned)) {
+            std::fprintf(stderr, "sim_contact_angle_bench: cannot write to '%s'\n", o.out.c_str());
+            return 1;
+          }
         }
-      }
   std::printf("wrote %s/contact_angle_bench.csv and .md\n", o.out.c_str());
   return 0;
 }
