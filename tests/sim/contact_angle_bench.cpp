@@ -86,6 +86,14 @@ std::vector<double> parseList(const std::string& flag, const std::string& text, 
   return values;
 }
 
+// A two-way option: `a`, `b`, or "both" (a then b).
+std::vector<std::string> parseChoice(const std::string& flag, const std::string& value,
+                                     const std::string& a, const std::string& b) {
+  if (value == "both") return {a, b};
+  if (value == a || value == b) return {value};
+  throw std::invalid_argument(flag + " must be " + a + ", " + b + " or both, not '" + value + "'");
+}
+
 Options parse(int argc, char** argv) {
   Options o;
   for (int k = 1; k < argc; ++k) {
@@ -104,21 +112,11 @@ Options parse(int argc, char** argv) {
       o.time = parseList(flag, value, 1e-3, 10).front();
     else if (flag == "--viscosity")
       o.viscosity = parseList(flag, value, 1e-4, 10).front();
-    else if (flag == "--start") {
-      if (value == "both")
-        o.starts = {"cap", "hemisphere"};
-      else if (value == "cap" || value == "hemisphere")
-        o.starts = {value};
-      else
-        throw std::invalid_argument("--start must be cap, hemisphere or both, not '" + value + "'");
-    } else if (flag == "--walls") {
-      if (value == "both")
-        o.walls = {"layered", "single"};
-      else if (value == "layered" || value == "single")
-        o.walls = {value};
-      else
-        throw std::invalid_argument("--walls must be layered, single or both, not '" + value + "'");
-    } else if (flag == "--out")
+    else if (flag == "--start")
+      o.starts = parseChoice(flag, value, "cap", "hemisphere");
+    else if (flag == "--walls")
+      o.walls = parseChoice(flag, value, "layered", "single");
+    else if (flag == "--out")
       o.out = value;
     else
       throw std::invalid_argument("unknown option '" + flag + "'");
