@@ -4,7 +4,7 @@
 //                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm]
 //                               [box_height_per_R] [cap|footprint]
 //                                                      sessile droplet contact angle
-//   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R]
+//   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R] [layers]
 //                                      the cap fit on a static cap of exactly THETA
 //   sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] [depth_per_d]
 //                                      the meniscus between two parallel walls (straight contact
@@ -499,7 +499,7 @@ int main(int argc, char** argv) {
     if (argc > 3) c.perR = std::atof(argv[3]);
     if (argc > 4) c.jitter = std::atof(argv[4]);
     if (argc > 5) c.halfWidthPerR = std::atof(argv[5]);
-    c.wallLayers = 3;
+    c.wallLayers = argc > 6 ? std::atoi(argv[6]) : 3;  // 0: one Akinci layer (the eye scenes')
     c.solver = "indsph";  // the [contact_angle] set-up: rest mass, no excess
     return sessileStatic(c);
   }
@@ -587,7 +587,7 @@ int main(int argc, char** argv) {
       "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm] "
       "[box_height_per_R] [cap|footprint]\n"
       "       sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] "
-      "[half_width_per_R]\n"
+      "[half_width_per_R] [layers]\n"
       "       sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] "
       "[depth_per_d]\n"
       "       sim_interface_bench ridge THETA_DEG [t_end_s] [start_deg] [R0_per_d] [mu_Pa_s] "
