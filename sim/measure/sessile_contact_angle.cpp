@@ -122,6 +122,23 @@ Real capAngleOfFootprint(Real volume, Real sectionRadius, Real height) {
   return 0.5 * (lo + hi) * 180 / std::numbers::pi;
 }
 
+Real capAngleOfCentroid(Real volume, Real centroidHeight) {
+  require(volume > 0, "centroid angle needs a positive volume");
+  auto height = [&](Real theta) {
+    const Real u = std::cos(theta);
+    const Real radius = capRadius(volume, u), capHeight = radius * (1 - u);
+    return capHeight * (4 * radius - capHeight) / (4 * (3 * radius - capHeight));
+  };
+  Real lo = 1e-6, hi = std::numbers::pi - 1e-6;  // height(lo) <= centroidHeight <= height(hi)
+  if (centroidHeight <= height(lo)) return 0;
+  if (centroidHeight >= height(hi)) return 180;
+  for (int k = 0; k < 60; ++k) {
+    const Real mid = 0.5 * (lo + hi);
+    (height(mid) < centroidHeight ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi) * 180 / std::numbers::pi;
+}
+
 Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, const Vec3& axisPoint,
                       Real volume) {
   require(points.size() >= 4 && volume > 0, "cap fit needs points and a positive volume");
@@ -213,6 +230,7 @@ CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& w
       std::acos(std::clamp(-zc / out.sphere.radius, Real(-1), Real(1))) * 180.0 / std::numbers::pi;
   out.volume = volume;
   out.contactAngle = capAngleOfVolume(points, wall, centroid, volume);
+  out.centroidAngle = capAngleOfCentroid(volume, (centroid - wall.point).dot(n));
   const Real u = std::cos(out.contactAngle * std::numbers::pi / 180.0);
   out.capRadius = std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
   return out;

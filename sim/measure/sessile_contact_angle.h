@@ -50,12 +50,23 @@ Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, co
 // touching sphere's reads 180.
 Real capAngleOfFootprint(Real volume, Real sectionRadius, Real height);
 
+// Angle [deg] through the droplet, in (0, 180), of the spherical cap of the given volume [m^3]
+// whose centroid lies `centroidHeight` [m] above the wall: a measure that uses no interface
+// points, only the droplet's volume and mass centre, so it checks the cap fit independently.
+// A cap of height H cut from a sphere of radius R has its centroid H (4R - H) / (4 (3R - H)) above
+// its base, which grows monotonically with the angle at fixed volume (3/8 R0 at 90 deg, R at 180);
+// heights outside that range read 0 or 180. Its sensitivity falls with the angle: at 150 deg 1 deg
+// is 0.005 R0 of height, at 165 deg 0.003 R0.
+Real capAngleOfCentroid(Real volume, Real centroidHeight);
+
 struct CapFit {
   SphereFit sphere;         // the algebraic fit (Kasa) of the interface points
   Real sphereAngle = 0.0;   // [deg] its angle acos(-z_c / R), through the droplet's material
   Real contactAngle = 0.0;  // [deg] the cap of the droplet's volume that fits the points best
   Real capRadius = 0.0;     // [m] that cap's sphere radius
   Real volume = 0.0;        // [m^3] the droplet's volume, sum of m_i / rho_i
+  Real centroidAngle = 0.0;  // [deg] the cap of that volume with the droplet's centroid height
+                             //       (capAngleOfCentroid), a check without interface points
   int pointCount = 0;
 };
 

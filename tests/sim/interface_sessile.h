@@ -149,14 +149,16 @@ inline SessileResult runSessile(const SessileCase& c) {
   const auto describe = [&](const World& world) {
     const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
     const FloorContact contact = floorContact(world, scene.oil, spacing, scene.floorHeight);
-    char line[256];
+    char line[320];
     std::snprintf(
         line, sizeof line,
-        "theta = %.1f deg (through oil; free sphere %.1f deg, R = %.2f mm, rms %.3f mm)  "
+        "theta = %.1f deg (through oil; centroid %.1f deg; free sphere %.1f deg, R = %.2f mm, "
+        "rms %.3f mm)  "
         "floor layer: %d oil, %d aqueous under it, contact radius %.2f d, footprint angle "
         "%.1f deg",
-        fit.contactAngle, fit.sphereAngle, fit.sphere.radius * 1e3, fit.sphere.rmsResidual * 1e3,
-        contact.oil, contact.aqueousUnder, contact.radius / spacing, footprintAngle(fit, contact));
+        fit.contactAngle, fit.centroidAngle, fit.sphereAngle, fit.sphere.radius * 1e3,
+        fit.sphere.rmsResidual * 1e3, contact.oil, contact.aqueousUnder, contact.radius / spacing,
+        footprintAngle(fit, contact));
     return std::string(line);
   };
   for (int k = 0; k < c.relaxSteps; ++k) {

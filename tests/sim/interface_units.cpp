@@ -269,6 +269,32 @@ TEST_CASE("Contact angle on a wall tag that does not exist is an error naming th
   CHECK_THROWS_WITH(adhesion.attach(*scene.world), Contains("wall tag 42"));
 }
 
+namespace {
+// [m] Height above the wall of the centroid of the spherical cap of `volume` [m^3] and angle
+// `thetaDeg` through the droplet: a cap of height H from a sphere of radius R has its centroid
+// H (4R - H) / (4 (3R - H)) above its base.
+Real capCentroidHeight(Real volume, Real thetaDeg) {
+  const Real u = std::cos(thetaDeg * std::numbers::pi / 180);
+  const Real radius = std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
+  const Real height = radius * (1 - u);
+  return height * (4 * radius - height) / (4 * (3 * radius - height));
+}
+}  // namespace
+
+TEST_CASE("The centroid angle inverts a cap's centroid height", "[unit][interface]") {
+  // The hemisphere's centroid is 3/8 of its radius above the base (a textbook value), and the
+  // angle of every cap comes back from its centroid height.
+  const Real r0 = 0.003, volume = 2.0 / 3.0 * std::numbers::pi * r0 * r0 * r0;
+  CHECK(capCentroidHeight(volume, 90) == Approx(3.0 / 8.0 * r0).epsilon(1e-12));
+  CHECK(capAngleOfCentroid(volume, 3.0 / 8.0 * r0) == Approx(90).margin(1e-6));
+  for (const Real theta : {10.0, 30.0, 60.0, 120.0, 150.0, 170.0})
+    CHECK(capAngleOfCentroid(volume, capCentroidHeight(volume, theta)) ==
+          Approx(theta).margin(1e-6));
+  CHECK(capAngleOfCentroid(volume, 0.0) == 0.0);   // a film
+  CHECK(capAngleOfCentroid(volume, r0) == 180.0);  // above the touching sphere's centre
+  CHECK_THROWS_AS(capAngleOfCentroid(0.0, 1e-3), SimError);
+}
+
 TEST_CASE("The footprint angle inverts a cap's section radius at a height", "[unit][interface]") {
   // Caps of R0 = 3 mm's hemisphere volume, the section at d / 2 with d = R0 / 12 (the first
   // fluid layer): the section radius of the cap of angle theta gives theta back.
@@ -357,6 +383,16 @@ TEST_CASE("The sessile cap fit reads static lattice caps of 30 to 165 deg at the
     INFO("static cap " << theta << " deg reads " << fit.contactAngle << " deg (free sphere "
                        << fit.sphereAngle << ")");
     CHECK(fit.contactAngle == Approx(theta).margin(theta > 150 ? 5.0 : 2.0));
+    // The centroid angle (no interface points): the same 0.1 d surface uncertainty moves the
+    // centroid by less than 0.1 d, so the tolerance is 0.1 d over d(centroid height)/d(theta) at
+    // this angle: 4.8 deg at 30, 3.3 at 90, 3.4 at 150, 5 at 165. Measured 32.8, 47.0, 61.3, 90.3,
+    // 120.2, 148.6, 164.7 (session 14). A wrong cap height or centroid formula reads tens of
+    // degrees off.
+    const Real perDegree = std::abs(capCentroidHeight(fit.volume, theta + 0.5) -
+                                    capCentroidHeight(fit.volume, theta - 0.5));  // [m / deg]
+    INFO("centroid angle " << fit.centroidAngle << " deg, tolerance "
+                           << 0.1 * w.particleSpacing() / perDegree << " deg");
+    CHECK(fit.centroidAngle == Approx(theta).margin(0.1 * w.particleSpacing() / perDegree));
   }
 }
 
