@@ -170,8 +170,8 @@ inline constexpr double kTestedContactAngleMax = 120.0;
 // empty inside it.
 std::string contactAngleRangeNote(double throughTamponadeDeg);
 // The scenario note for any contact angle on the eye's wall, which is one layer of wall particles
-// (not the layered wall the range above was measured on): there the angle is not held within the
-// range's 5 deg (docs/interface.md, validation 3, session 14).
+// (not the layered wall the range above was measured on): there 90 deg holds within 3 deg but 30
+// and 150 deg do not within the range's 5 deg (docs/interface.md, validation 3, session 14).
 std::string contactAngleWallModelNote();
 
 }  // namespace protocols

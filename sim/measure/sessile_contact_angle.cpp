@@ -232,7 +232,7 @@ CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& w
   out.contactAngle = capAngleOfVolume(points, wall, centroid, volume);
   out.centroidAngle = capAngleOfCentroid(volume, (centroid - wall.point).dot(n));
   const Real u = std::cos(out.contactAngle * std::numbers::pi / 180.0);
-  out.capRadius = std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
+  out.capRadius = capRadius(volume, u);
   return out;
 }
 

@@ -329,7 +329,7 @@ TEST_CASE("a contact angle outside the tested range is noted in plan and report"
   const Scenario neutral = assembleScenario(parseProtocol((dir / "neutral.toml").string()));
   CHECK(noted(library));
   CHECK_FALSE(noted(neutral));
-  // The eye's single wall layer does not hold any angle within 5 deg (docs/interface.md,
+  // The eye's single wall layer holds 90 deg but not 30 or 150 within 5 deg (docs/interface.md,
   // validation 3, session 14): both scenes say so, the in-range one too.
   const auto wallNoted = [](const Scenario& s) {
     return std::count(s.notes.begin(), s.notes.end(), contactAngleWallModelNote()) == 1;

@@ -134,9 +134,8 @@ bool writeTables(const Options& o, const std::vector<Row>& rows, std::size_t pla
         "N/m, viscosity "
      << o.viscosity << " Pa s, " << o.time << " s simulated, " << omp_get_max_threads()
      << " thread(s). " << rows.size() << " of " << planned << " runs done.\n\n"
-     << "| requested [deg] | start | walls | R0/d | measure | measured [deg] | at the end | error "
-        "| "
-        "tolerance | within | particles | steps | wall [s] |\n"
+     << "| requested [deg] | start | walls | R0/d | measure | measured [deg] | at the end | "
+        "error | tolerance | within | particles | steps | wall [s] |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows) {
     const bool within = r.result.finite && std::abs(r.error()) <= r.tolerance();

@@ -92,7 +92,8 @@ struct FloorContact {
   Real height = 0;  // [m] mean height of the layer's oil particles above the floor
 };
 
-inline FloorContact floorContact(const World& w, int oil, Real d, Real floor = 0) {
+// `floor` [m]: the floor's height (DropletScene::floorHeight).
+inline FloorContact floorContact(const World& w, int oil, Real d, Real floor) {
   const auto& p = w.particles;
   Vec3 axis = Vec3::Zero();
   Real oilCount = 0;
