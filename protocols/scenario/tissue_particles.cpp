@@ -19,6 +19,7 @@
 #include "protocols/report/report_format.h"
 #include "protocols/scenario/point_grid.h"
 #include "protocols/scenario/scenario.h"
+#include "sim/boundary/wetted_surface.h"
 #include "sim/core/error.h"
 #include "sim/solid/elasticity_peer2018.h"
 #include "sim/solid/fixed_particles.h"
@@ -94,6 +95,30 @@ void addParticles(Scenario& s, TissueBody& t, const std::vector<sim::Vec3>& poin
       ++t.anchored;
     }
   }
+}
+
+// The retina over an elastic sclera is the sclera's fluid-facing layer: its particles within
+// 1.5 d of the cavity surface (one lattice layer, about one particle per d^2 of wall, as the wall
+// sample had) carry the tag of the wall particle they replace, so wall_adhesion wets them with that
+// tag's contact angle (sim/boundary/wetted_surface.h; tests/sim/interface_units.cpp, "Over a
+// wetted tissue floor ..."). Before, the angle acted only on wall particles, and over the sclera
+// the oil met a surface without one.
+// Returns the number of particles tagged.
+std::size_t tagWettedRetina(Scenario& s, const TissueBody& t, const meshing::ShellSamples& samples,
+                            double d) {
+  std::size_t tagged = 0;
+  const sim::WallParticles& walls = s.world->walls;
+  const PointGrid wallGrid(std::vector<sim::Vec3>(walls.x.begin(), walls.x.end()), 2.0 * d);
+  for (std::size_t k = 0; k < samples.points.size(); ++k) {
+    if (samples.depth[k] >= 1.5 * d) continue;
+    const long w = wallGrid.nearest(samples.points[k], 2.0 * d);
+    if (w < 0) continue;
+    sim::setWettedSurfaceTag(s.world->particles,
+                             static_cast<sim::Index>(t.firstId) + static_cast<sim::Index>(k),
+                             walls.tag[static_cast<std::size_t>(w)]);
+    ++tagged;
+  }
+  return tagged;
 }
 
 }  // namespace
@@ -398,6 +423,13 @@ void addTissues(const Protocol& p, Scenario& s) {
         scleraBackstop = true;
       }
       addParticles(s, t, samples.points, anchored, d);
+      const std::size_t wetted = tagWettedRetina(s, t, samples, d);
+      if (s.phases[1].contactAngleThroughAqueous)
+        s.notes.push_back(
+            "the retina over the elastic sclera is the sclera's fluid-facing layer: its " +
+            std::to_string(wetted) +
+            " particles within 1.5 particle spacings of the cavity wall carry the contact angle, "
+            "as the wall particles they replace did");
       if (t.simulatedModulus != t.youngsModulus)
         s.notes.push_back("sclera thinner than " + formatNumber(kMinTissueLayerSpacings, 2) +
                           " particle spacings: sampled as a " + mm(t.layerThickness) +
@@ -637,12 +669,10 @@ void addTissues(const Protocol& p, Scenario& s) {
                         formatNumber(kLimbusClampSpacings, 2) + " spacings of the cap's wall or of a rigid collar (" +
                         std::to_string(collarCount) + " wall particles from the cap's edge out to the backstop) anchored");
     if (orbitCount > 0)
-      s.notes.push_back("the bony orbit: " + std::to_string(orbitCount) + " rigid wall particles " +
-                        formatNumber(kOrbitGapSpacings, 2) + "-" + formatNumber(kOrbitGapSpacings + 1.0, 2) +
-                        " spacings around the orbital fat, so the tissue assembly is enclosed by walls");
-    if (s.phases[1].contactAngleThroughAqueous)
-      s.notes.push_back("the retina over the elastic sclera has no wall adhesion (contact angle): "
-                        "the engine applies it to wall particles only");
+      s.notes.push_back(
+          "the bony orbit: " + std::to_string(orbitCount) + " rigid wall particles " +
+          formatNumber(kOrbitGapSpacings, 2) + "-" + formatNumber(kOrbitGapSpacings + 1.0, 2) +
+          " spacings around the orbital fat, so the tissue assembly is enclosed by walls");
   }
 }
 

@@ -14,6 +14,23 @@ inline int colourOf(int m, const InterfacialTension& pair) {
   return m == pair.materialA ? 1 : (m == pair.materialB ? 0 : -1);
 }
 
+// The kernel moment of the colour gradient over the fluid neighbours only. The colour lives on
+// the fluids; elastic neighbours are a wall to them (as in phase 2 below), and at a wall the
+// colour gradient's correction is built from the fluid's one-sided moment, not completed by the
+// wall (fluidGradientMoment's sum runs over every dynamic neighbour, tissue included).
+Mat3 liquidGradientMoment(const World& world, Index i) {
+  const auto& p = world.particles;
+  const NeighborList& nf = world.fluidNeighbors();
+  const auto& gradF = world.fluidGradients();
+  Mat3 b = Mat3::Zero();
+  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+    const Index j = nf.indices[k];
+    if (world.materials.isFluid(p.material[j]))
+      b += (p.mass[j] / p.density[j]) * gradF[k] * (p.x[j] - p.x[i]).transpose();
+  }
+  return b;
+}
+
 }  // namespace
 
 std::string_view surfaceStressFormName(SurfaceStressForm form) {
@@ -76,6 +93,7 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
   stressed_.resize(n);
   gradient_.resize(n);
   const Real dimension = 3.0;
+  const bool elastic = world.materials.countOfKind(MaterialKind::kElastic) > 0;
 
   for (std::size_t pairIndex = 0; pairIndex < tensions.size(); ++pairIndex) {
     const InterfacialTension& pair = tensions[pairIndex];
@@ -98,7 +116,10 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
       }
       // L_i only where gradC is not 0, i.e. on the interface: the bulk costs no extra pass.
       if (corrected && g.squaredNorm() > 0)
-        g = gradientCorrection(fluidGradientMoment(world, i), kMinFluidCorrectionDeterminant) * g;
+        g = gradientCorrection(
+                elastic ? liquidGradientMoment(world, i) : fluidGradientMoment(world, i),
+                kMinFluidCorrectionDeterminant) *
+            g;
       const Real norm = g.norm();  // [1/m]
       gradient_[i] = g;
       // Below 1e-6 of the interface's |gradC| ~ 1/h the direction is round-off: no stress.
@@ -144,28 +165,46 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
           f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
         }
       }
-      if (stressed_[i] && nw.count(i) > 0) {
+      if (stressed_[i]) {
         // Mirror image of the stress across the wall: Pi_b = R Pi_i R with the reflection
         // R = I - 2 m m^T about the local wall normal m, so the wall takes only the normal part
         // of the interface's pull and the contact line feels its full tangential part
         // sigma cos(theta). (An unreflected copy Pi_b = Pi_i passes the tangential part to the
         // wall: the contact line then feels only the wall_adhesion force and runs away, as
         // measured: 120 deg requested went past 157 deg.)
+        // Elastic neighbours are a wall to the fluids (the sclera in place of the retina's wall
+        // particles) and take the mirrored stress too. Left as stress-free neighbours they end
+        // the stress field at the tissue, and there a non-wetting droplet lifts off (measured on
+        // walls, docs/interface.md validation 3; on tissue tests/sim/interface_contact_angle.cpp).
         Vec3 wallSum = Vec3::Zero(), m = Vec3::Zero();
         for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
           wallSum += wallVolume[nw.indices[k]] * gradB[k];
           m += wallNormal[nw.indices[k]] * wallVolume[nw.indices[k]];
         }
-        Mat3 mirrored = stress_[i];
-        if (m.squaredNorm() > 0) {
-          m.normalize();
-          const Mat3 reflect = Mat3::Identity() - 2.0 * m * m.transpose();
-          mirrored = reflect * stress_[i] * reflect;
+        Vec3 solidSum = Vec3::Zero();  // sum V_j gradW_ij over elastic j: points into the tissue
+        if (elastic)
+          for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+            const Index j = nf.indices[k];
+            if (!world.materials.isFluid(p.material[j]))
+              solidSum += (p.mass[j] / p.density[j]) * gradF[k];
+          }
+        if (solidSum.squaredNorm() > 0)
+          m = m.squaredNorm() > 0 ? Vec3(m.normalized() + solidSum.normalized()) : solidSum;
+        if (nw.count(i) > 0 || solidSum.squaredNorm() > 0) {
+          Mat3 mirrored = stress_[i];
+          if (m.squaredNorm() > 0) {
+            m.normalize();
+            const Mat3 reflect = Mat3::Identity() - 2.0 * m * m.transpose();
+            mirrored = reflect * stress_[i] * reflect;
+          }
+          // The elastic neighbours already entered the pair sum above as stress-free (-Pi_i in
+          // the difference form, Pi_i in the symmetric one): only their mirrored part is added.
+          if (corrected)
+            f += vi * ((mirrored - stress_[i]) * (correction * wallSum) +
+                       mirrored * (correction * solidSum));
+          else
+            f += vi * ((stress_[i] + mirrored) * wallSum + mirrored * solidSum);
         }
-        if (corrected)
-          f += vi * ((mirrored - stress_[i]) * (correction * wallSum));
-        else
-          f += vi * ((stress_[i] + mirrored) * wallSum);
       }
       p.a[i] += f / p.mass[i];
     }

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "sim/boundary/wall_layers.h"
+#include "sim/boundary/wetted_surface.h"
 
 namespace sim {
 namespace {
@@ -63,15 +64,26 @@ void WallAdhesionYoung::attach(World& world) {
     // theta through B is 180 deg - theta through A.
     const Real thetaA = angle.fluidMaterial == materialA_ ? angle.angle : 180.0 - angle.angle;
     const Real cosA = std::cos(thetaA * std::numbers::pi / 180.0);
+    tagCosA_.emplace_back(angle.wallTag, cosA);
     bool found = false;
     for (std::size_t b = 0; b < nWalls; ++b)
       if (world.walls.tag[b] == angle.wallTag && surface_[b]) {
         cosThetaA_[b] = cosA;
         found = true;
       }
-    require(found, "contact angle for wall tag " + std::to_string(angle.wallTag) +
-                       " (through '" + fluid + "') but no wall particle has that tag");
+    for (Index i = 0; i < static_cast<Index>(world.particles.size()); ++i)
+      if (wettedSurfaceTag(world.particles, i) == angle.wallTag) {
+        found = true;
+        wettedTissue_ = true;
+      }
+    require(found, "contact angle for wall tag " + std::to_string(angle.wallTag) + " (through '" +
+                       fluid + "') but no wall particle and no wetted tissue surface has that tag");
   }
+  for (Index i = 0; i < static_cast<Index>(world.particles.size()); ++i)
+    require(
+        wettedSurfaceTag(world.particles, i) < 0 || !materials.isFluid(world.particles.material[i]),
+        "a fluid particle of '" + materials[world.particles.material[i]].name +
+            "' is marked as a wetted surface: only elastic tissue can be one");
   // Area per wall particle from the surface number density of the wall sample.
   const NeighborList& ss = world.search().staticStatic();
   const Real h = world.supportRadius();
@@ -86,6 +98,54 @@ void WallAdhesionYoung::attach(World& world) {
   }
 }
 
+void WallAdhesionYoung::updateWettedTissue(World& world) {
+  const auto& p = world.particles;
+  const Index n = static_cast<Index>(p.size());
+  const auto& tags = *findWettedSurfaceField(p);  // tag + 1, 0 = none
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
+  const Kernel& kernel = world.kernel;
+  const Real h = world.supportRadius();
+  tissueCosA_.resize(n);
+  tissueNormal_.resize(n);
+  tissueArea_.resize(n);
+  tissueFluidSum_.resize(n);
+#pragma omp parallel for schedule(static)
+  for (Index k = 0; k < n; ++k) {
+    tissueCosA_[k] = std::numeric_limits<Real>::quiet_NaN();
+    if (tags[k] == 0) continue;
+    Real cosA = std::numeric_limits<Real>::quiet_NaN();
+    for (const auto& [tag, c] : tagCosA_)
+      if (tag == tags[k] - 1) cosA = c;
+    if (std::isnan(cosA)) continue;
+    // The normal is the gradient of the non-fluid volume fraction (tissue and walls against the
+    // fluid), the kernel gradients gradW(x_k - x_j) pointing from k towards j: into the tissue.
+    Vec3 g = Vec3::Zero();
+    Real surfaceDensity = cubicSpline2d(0, h), fluidSum = 0;  // [1/m^2], [1]
+    for (Index q = nf.offsets[k]; q < nf.offsets[k + 1]; ++q) {
+      const Index j = nf.indices[q];
+      const Real vj = p.mass[j] / p.density[j];
+      if (world.materials.isFluid(p.material[j])) {
+        g -= vj * gradF[q];
+        if (p.material[j] == materialA_ || p.material[j] == materialB_)
+          fluidSum += vj * kernel.W(p.x[k] - p.x[j]);
+      } else {
+        g += vj * gradF[q];
+        if (tags[j] != 0) surfaceDensity += cubicSpline2d((p.x[k] - p.x[j]).norm(), h);
+      }
+    }
+    for (Index q = nw.offsets[k]; q < nw.offsets[k + 1]; ++q)
+      g += world.walls.volume[nw.indices[q]] * gradB[q];
+    if (g.squaredNorm() == 0) continue;
+    tissueNormal_[k] = g.normalized();
+    tissueArea_[k] = 1.0 / surfaceDensity;
+    tissueFluidSum_[k] = fluidSum;
+    tissueCosA_[k] = cosA;
+  }
+}
+
 void WallAdhesionYoung::apply(World& world, const StepContext&) {
   auto& p = world.particles;
   const auto& walls = world.walls;
@@ -96,6 +156,7 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
   const Kernel& kernel = world.kernel;
   auto inPair = [&](Index i) { return p.material[i] == materialA_ || p.material[i] == materialB_; };
 
+  if (wettedTissue_) updateWettedTissue(world);
   // S_b: serial scatter over the wall lists (deterministic order; O(particles near walls)).
   wallFluidSum_.assign(walls.size(), 0.0);
   for (Index i = 0; i < n; ++i) {
@@ -110,9 +171,20 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
   bool any = false;
 #pragma omp parallel for schedule(static) reduction(|| : any)
   for (Index i = 0; i < n; ++i) {
-    if (!inPair(i) || nw.count(i) == 0) continue;
+    if (!inPair(i) || (nw.count(i) == 0 && !wettedTissue_)) continue;
     Real delta = 0, cosWeighted = 0, weight = 0;  // [1/m], [1], [1/m^3]
     Vec3 m = Vec3::Zero();
+    // Wetted tissue particles enter as wall particles do, with this step's area and normal.
+    if (wettedTissue_)
+      for (Index q = nf.offsets[i]; q < nf.offsets[i + 1]; ++q) {
+        const Index k = nf.indices[q];
+        if (std::isnan(tissueCosA_[k]) || tissueFluidSum_[k] < 1e-3) continue;
+        const Real w = kernel.W(p.x[i] - p.x[k]);
+        delta += tissueArea_[k] / tissueFluidSum_[k] * w;
+        cosWeighted += w * tissueCosA_[k];
+        weight += w;
+        m -= w * tissueNormal_[k];
+      }
     for (const Index* bp = nw.begin(i); bp != nw.end(i); ++bp) {
       const Index b = *bp;
       if (std::isnan(cosThetaA_[b])) continue;

@@ -38,6 +38,13 @@
 //   Pi_i     = gamma_{phase of i} delta_i (I - m_i m_i^T)
 //   a_i     += 1/m_i sum_j V_i V_j (Pi_i + Pi_j) gradW_ij
 // Walls of tags without a contact angle get no wall stress: they stay neutral (90 deg).
+// Elastic tissue standing in for a wall (the retina over an elastic sclera) is wetted the same
+// way: its fluid-facing particles carry the wall tag (sim/boundary/wetted_surface.h) and enter
+// these sums as wall particles b do, with A_b from the tagged particles' 2-D density, the normal
+// from the gradient of the non-fluid volume fraction, both recomputed each step since the tissue
+// moves. On a flat floor the line force over tissue equals the one over the wall it replaces
+// within 0.5 % (tests/sim/interface_units.cpp); the interfacial_tension stage mirrors its stress
+// across tissue as across walls.
 // Layered walls (sim/boundary/wall_layers.h): only the surface layer is the wetted surface.
 // Measured (docs/interface.md, validation 3): the static line force is 1.2 sigma cos(theta) at
 // d = R/6 (one Akinci layer; 1.29 / 1.07 with three lattice layers, layer on the aqueous / oil).
@@ -53,6 +60,7 @@
 #pragma once
 
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "sim/effects/effect.h"
@@ -89,6 +97,16 @@ class WallAdhesionYoung final : public Effect {
   std::vector<Mat3> stress_;      // [Pa] scratch, valid where stressed_ is 1
   std::vector<std::uint8_t> stressed_;
   Real sigma_ = 0.0;              // [N/m]
+  // Wetted tissue (sim/boundary/wetted_surface.h): its surface particles move, so what the walls
+  // compute once (area, normal) is computed per step, per dynamic particle (NaN cosine where the
+  // particle is not a wetted surface with an angle).
+  std::vector<std::pair<std::int32_t, Real>> tagCosA_;  // wall tag -> cos(theta_A)
+  bool wettedTissue_ = false;         // some elastic particle carries a tag with an angle
+  std::vector<Real> tissueCosA_;      // [1]
+  std::vector<Vec3> tissueNormal_;    // [1] into the tissue, as wall normals point into the wall
+  std::vector<Real> tissueArea_;      // [m^2]
+  std::vector<Real> tissueFluidSum_;  // [1] S_k
+  void updateWettedTissue(World& world);
 };
 
 }  // namespace sim

@@ -2,7 +2,8 @@
 //   sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [key=value...]  l = 2 vs Lamb
 //   sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] [R_per_d]
 //                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm]
-//                               [box_height_per_R] [cap|footprint]
+//                               [box_height_per_R] [cap|footprint] [tissue=N] [free=N] [E=Pa]
+//                               [shift=auto|on|off]   (tissue: an elastic floor of N layers)
 //                                                      sessile droplet contact angle
 //   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R] [layers]
 //                                      the cap fit on a static cap of exactly THETA
@@ -505,6 +506,35 @@ int main(int argc, char** argv) {
   }
   if (argc >= 3 && std::strcmp(argv[1], "sessile") == 0) {
     testing::SessileCase c;
+    // key=value options anywhere after the mode; the rest are positional.
+    std::vector<char*> positional;
+    for (int k = 0; k < argc; ++k) {
+      const std::string a = argv[k];
+      const auto eq = a.find('=');
+      if (k < 2 || eq == std::string::npos) {
+        positional.push_back(argv[k]);
+        continue;
+      }
+      const std::string key = a.substr(0, eq), value = a.substr(eq + 1);
+      if (key == "tissue")
+        c.tissueFloorLayers = std::atoi(value.c_str());
+      else if (key == "free")
+        c.tissueFreeLayers = std::atoi(value.c_str());
+      else if (key == "E")
+        c.tissueYoungsModulus = std::atof(value.c_str());
+      else if (key == "shift")
+        c.backgroundPressure = value == "off"  ? Force::kOff
+                               : value == "on" ? Force::kOn
+                                               : Force::kAuto;
+      else {
+        std::fprintf(stderr,
+                     "sessile: unknown option '%s' (tissue=N free=N E=Pa shift=auto|on|off)\n",
+                     a.c_str());
+        return 2;
+      }
+    }
+    argc = static_cast<int>(positional.size());
+    argv = positional.data();
     c.theta = std::atof(argv[2]);
     if (argc > 3) c.tEnd = std::atof(argv[3]);
     if (argc > 4) c.startCos = std::atof(argv[4]);
@@ -585,7 +615,7 @@ int main(int argc, char** argv) {
       "       sim_interface_bench oscillation-csv FILE R_eq_mm eps velocity|displace\n"
       "       sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] "
       "[R_per_d] [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm] "
-      "[box_height_per_R] [cap|footprint]\n"
+      "[box_height_per_R] [cap|footprint] [tissue=N] [free=N] [E=Pa] [shift=auto|on|off]\n"
       "       sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] "
       "[half_width_per_R] [layers]\n"
       "       sim_interface_bench meniscus THETA_DEG [t_end_s] [H_per_d] [mu_Pa_s] [jitter_d] "

@@ -84,6 +84,48 @@ TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
   checkSessileAngle(30.0, 0.3);
 }
 
+// On an elastic tissue floor (the retina over an elastic sclera): three lattice layers of tissue
+// (E = 50 kPa, 1000 kg/m^3) on the layered wall, the top layer free and the floor tag's wetted
+// surface, the two below anchored. The angle must be the one asked: the elastocapillary length
+// sigma / E = 0.8 um is 1/600 of d, so the substrate barely deforms and Young's relation holds as
+// on a rigid wall. With elastic material in the scene the background_pressure stage is off (its
+// shift pushed fluid through sampled tissue, docs/interface.md validation 1b), so the reference
+// is the layered wall without it: 120.9 deg (60 deg: 57.8). Measured on tissue (R0/6, 0.3 s,
+// window mean): 121.4 (60 deg: 62.0); all layers anchored 118.8. Before wall_adhesion and the
+// tension's wall mirror acted on tissue, the same droplet settled at 83-85 deg (session 15,
+// `sim_interface_bench sessile 120 0.3 0 indsph 3 6 0.005 0.2 tissue=3 free=1`). 0.3 s: the
+// angle overshoots to 128 at 0.06 s and settles from 0.15 s on, so a 0.1 s window would read a
+// transient. Also: no fluid particle gets below the tissue's top, and the tissue moves less than
+// 0.1 d, the decision rule's bound for a tissue that barely moves (sim/solid/tissue_deformation.h),
+// so the comparison with a rigid wall holds. Measured 0.050 d at 0.3 s (0.025 d at 0.05 s), in a
+// ring under the contact line, tangential and up; at E = 500 kPa none above 0.02 d, so it is the
+// layer's elastic answer to the loads at the contact line, not a drift.
+TEST_CASE(
+    "Sessile droplet on an elastic tissue floor retracts to a 120 deg contact angle (through oil)",
+    "[validation][interface][contact_angle][elasticity]") {
+  testing::SessileCase c;
+  c.theta = 120;
+  c.solver = "indsph";
+  c.wallLayers = 3;
+  c.jitter = 0.2;
+  c.tEnd = 0.3;
+  c.tissueFloorLayers = 3;
+  c.tissueFreeLayers = 1;
+  c.tissueYoungsModulus = 5e4;
+  const testing::SessileResult r = testing::runSessile(c);
+  std::printf(
+      "sessile 120 deg on tissue: %.1f deg measured (%.1f at the end), %ld steps, %.1f s; "
+      "deepest fluid %.2f d below the tissue's top, largest tissue displacement %.3f d\n",
+      r.angle, r.finalAngle, r.steps, r.seconds, r.deepestFluidBelowFloor, r.maxTissueDisplacement);
+  REQUIRE(r.adhesion);
+  REQUIRE(r.finite);
+  CHECK(r.angle == Approx(120.0).margin(5.0));
+  // The fluid's first layer sits d/2 above the tissue's top; a particle below the top has passed
+  // between tissue particles.
+  CHECK(r.deepestFluidBelowFloor <= 0.0);
+  CHECK(r.maxTissueDisplacement < 0.1);
+}
+
 // 150 deg on a sessile ridge: a cylindrical droplet (R0 = 12 d, 16 d long between neutral end
 // walls, interface_ridge.h), whose straight contact lines are 8.6 d apart however steep the
 // angle. Started as the 150 deg segment it settles at 148.3-149.2 deg from 0.42 s on (window

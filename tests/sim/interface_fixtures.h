@@ -11,10 +11,12 @@
 #include <vector>
 
 #include "scene_fixtures.h"
+#include "sim/boundary/wetted_surface.h"
 #include "sim/measure/droplet_pressure_jump.h"
 #include "sim/measure/sessile_contact_angle.h"
 #include "sim/measure/wall_nearest_material.h"
 #include "sim/measure/wall_phase_fraction.h"
+#include "sim/solid/fixed_particles.h"
 
 namespace sim::testing {
 
@@ -32,6 +34,7 @@ struct DropletScene {
   TankSpec spec;
   std::unique_ptr<World> world;
   int oil = 0, aqueous = 1;
+  int tissue = -1;             // the tissue floor's material (DropletSpec::tissueFloorLayers)
   Vec3 centre = Vec3::Zero();  // [m] centre of the droplet sphere as placed
   Real radius = 0;             // [m] equivalent radius of the droplet's lattice volume
   // [m] height of the floor as the fluid fills it, the lattice's lower cell face: 0 with layered
@@ -68,6 +71,12 @@ struct DropletSpec {
   // sequence on every platform); the phase is decided at the lattice site.
   Real jitter = 0;
   Real maxTimeStep = 0;       // [s] WorldParameters::maxTimeStep when > 0
+  // n >= 1 (layered walls only): the lowest n lattice layers are an elastic tissue on the
+  // floor's wall, unjittered, its top layer the floor tag's wetted surface
+  // (sim/boundary/wetted_surface.h); all but the top `tissueFreeLayers` layers are anchored.
+  int tissueFloorLayers = 0;
+  int tissueFreeLayers = 0;
+  Real tissueYoungsModulus = 5e4;  // [Pa]
 };
 
 // Fills the box from `origin` with nx x ny x nz lattice sites of spacing d, one particle at each
@@ -104,7 +113,9 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   // Layered walls continue the fluid lattice: the box holds whole cells.
   auto cells = [&](Real length) { return layered ? std::round(length / d) * d : length; };
   const Real width = cells(2 * s.halfWidth);
-  const Real height = cells(s.boxHeight > 0 ? s.boxHeight : width);
+  require(s.tissueFloorLayers == 0 || layered, "a tissue floor continues a layered wall's lattice");
+  const Real tissueTop = s.tissueFloorLayers * d;  // [m]
+  const Real height = cells(s.boxHeight > 0 ? s.boxHeight : width) + tissueTop;
   out.spec.innerMin = Vec3::Zero();
   out.spec.innerMax = Vec3(width + 2 * gap, height + 2 * gap, width + 2 * gap);
   out.spec.closedTop = true;
@@ -122,6 +133,15 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   out.oil = w.materials.add(liquid("oil", s.oilDensity, s.oilViscosity));
   out.aqueous = w.materials.add(liquid("aqueous", s.aqueousDensity, s.aqueousViscosity));
   w.materials.setInterfacialTension(out.oil, out.aqueous, s.sigma);
+  if (s.tissueFloorLayers > 0) {
+    Material tissue;
+    tissue.name = "tissue";
+    tissue.kind = MaterialKind::kElastic;
+    tissue.restDensity = 1000;  // [kg/m^3]
+    tissue.youngsModulus = s.tissueYoungsModulus;
+    tissue.poissonRatio = 0.3;
+    out.tissue = w.materials.add(tissue);
+  }
   if (layered)
     addTankWalls(w, out.spec, d, 0, WallLayers{s.wallLayers});
   else
@@ -130,16 +150,19 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   for (std::size_t b = 0; b < w.walls.size(); ++b)
     if (w.walls.normal[b].y() < -0.5) w.walls.tag[b] = kFloorTag;
   const bool sessile = s.sessileStartCos > -1;
-  // The floor's fluid side is y = gap; the first lattice layer sits at gap + d/2.
-  out.floorHeight = gap;
-  out.centre = sessile ? Vec3(0.5 * out.spec.innerMax.x(), gap + s.sessileStartCos * s.radius,
-                              0.5 * out.spec.innerMax.z())
-                       : Vec3(0.5 * out.spec.innerMax);
+  // The floor's fluid side is y = gap (above a tissue floor, its top); the first fluid lattice
+  // layer sits d/2 above it.
+  out.floorHeight = gap + tissueTop;
+  out.centre =
+      sessile ? Vec3(0.5 * out.spec.innerMax.x(), out.floorHeight + s.sessileStartCos * s.radius,
+                     0.5 * out.spec.innerMax.z())
+              : Vec3(0.5 * out.spec.innerMax);
   const int nx = static_cast<int>(std::lround(width / d));
   const int ny = static_cast<int>(std::lround(height / d));
   int oilCount = 0;
   fillJitteredLattice(w, Vec3::Constant(gap), nx, ny, nx, d, s.jitter, s.massExcess,
                       [&](const Vec3& x) {
+                        if (x.y() < out.floorHeight) return out.tissue;
                         const Vec3 r = x - out.centre;
                         const Real c = r.norm() > 0 ? r.y() / r.norm() : 0;
                         const bool isOil =
@@ -148,6 +171,14 @@ inline DropletScene dropletScene(const DropletSpec& s) {
                         return isOil ? out.oil : out.aqueous;
                       });
   out.radius = std::cbrt(3.0 * oilCount * d * d * d / (4.0 * std::numbers::pi));
+  for (Index i = 0; i < static_cast<Index>(w.particles.size()); ++i) {
+    if (w.particles.material[i] != out.tissue) continue;
+    Vec3& x = w.particles.x[i];  // back to its lattice site (the jitter moved it < d/2)
+    for (int a = 0; a < 3; ++a) x[a] = gap + d * (std::floor((x[a] - gap) / d) + 0.5);
+    w.particles.mass[i] = w.materials[out.tissue].restDensity * d * d * d;
+    if (x.y() > out.floorHeight - d) setWettedSurfaceTag(w.particles, i, kFloorTag);
+    if (x.y() < out.floorHeight - s.tissueFreeLayers * d) setFixed(w.particles, i);
+  }
   w.initialize();
   return out;
 }

@@ -7,7 +7,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
+#include <limits>
+#include <map>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -36,10 +39,18 @@ struct SessileCase {
   // Measure the angle from the footprint (the first layer's oil disc, capAngleOfFootprint)
   // instead of the cap fit: above 150 deg the cap fit cannot tell the angle (footprintAngle).
   bool footprint = false;
+  int tissueFloorLayers = 0;                // DropletSpec::tissueFloorLayers (an elastic floor)
+  int tissueFreeLayers = 0;                 // DropletSpec::tissueFreeLayers
+  Real tissueYoungsModulus = 5e4;           // [Pa]
+  Force backgroundPressure = Force::kAuto;  // the background_pressure stage (auto: the rule)
 };
 
 struct SessileResult : AngleRunResult {
   bool adhesion = false;  // the pipeline has the wall_adhesion stage
+  // At the end, in units of d: how far the lowest fluid particle is below the floor (negative:
+  // all above it), and the largest displacement of a tissue particle (tissue floors only).
+  Real deepestFluidBelowFloor = 0;
+  Real maxTissueDisplacement = 0;
 };
 
 // [m] Height above the floor of the top of the cap that has the volume of a hemisphere of radius
@@ -69,6 +80,9 @@ inline DropletScene sessileScene(const SessileCase& c) {
   s.sigma = 0.04;
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
   s.wallLayers = c.wallLayers;
+  s.tissueFloorLayers = c.tissueFloorLayers;
+  s.tissueFreeLayers = c.tissueFreeLayers;
+  s.tissueYoungsModulus = c.tissueYoungsModulus;
   // WCSPH: 2 % excess mass keeps the Tait clamp at p = 0 from acting. An incompressible solver:
   // rest mass (the closed box is full; an excess could never be removed from it).
   s.massExcess = c.solver == "wcsph" ? 0.02 : 0.0;
@@ -112,7 +126,8 @@ inline FloorContact floorContact(const World& w, int oil, Real d, Real floor) {
     }
   c.height /= std::max(c.oil, 1);
   for (Index i = 0; i < p.size(); ++i)
-    if (p.material[i] != oil && p.x[i].y() < floor + d && radial(i) < c.radius - d)
+    if (p.material[i] != oil && p.x[i].y() > floor && p.x[i].y() < floor + d &&
+        radial(i) < c.radius - d)
       ++c.aqueousUnder;
   return c;
 }
@@ -130,6 +145,8 @@ inline SessileResult runSessile(const SessileCase& c) {
   options.wallFriction = false;
   // The box is full (its jittered start would read as a free surface to the automatic rule).
   options.closedDomain = Force::kOn;
+  if (c.backgroundPressure != Force::kAuto)
+    options.forced["background_pressure"] = c.backgroundPressure;
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
   if (c.print) std::printf("%s", pipeline.describe().c_str());
@@ -166,8 +183,21 @@ inline SessileResult runSessile(const SessileCase& c) {
     pipeline.step(w);
     for (Vec3& v : w.particles.v) v.setZero();
   }
+  std::map<std::int32_t, Vec3> tissueStart;  // [m] by particle id
+  for (Index i = 0; i < w.particles.size(); ++i)
+    if (w.particles.material[i] == scene.tissue) tissueStart[w.particles.id[i]] = w.particles.x[i];
   static_cast<AngleRunResult&>(r) =
       stepAndMeasureAngle(w, pipeline, c.tEnd, c.print, measure, describe);
+  r.deepestFluidBelowFloor = -std::numeric_limits<Real>::infinity();
+  for (Index i = 0; i < w.particles.size(); ++i) {
+    if (w.particles.material[i] == scene.tissue) {
+      const Real moved = (w.particles.x[i] - tissueStart.at(w.particles.id[i])).norm() / spacing;
+      r.maxTissueDisplacement = std::max(r.maxTissueDisplacement, moved);
+    } else {
+      r.deepestFluidBelowFloor =
+          std::max(r.deepestFluidBelowFloor, (scene.floorHeight - w.particles.x[i].y()) / spacing);
+    }
+  }
   return r;
 }
 
