@@ -25,13 +25,15 @@ inline constexpr Real kMinFluidCorrectionDeterminant = 0.05;  // fluid only (gra
 // The moment matrix B_i = sum_j V_j gradW_ij (x_j - x_i)^T over the dynamic neighbours, and the
 // wall neighbours' part of it (the wall completes the support, as a mirror does). Needs the
 // densities of the current step (V_j = m_j / rho_j).
-inline Mat3 fluidGradientMoment(const World& world, Index i) {
+// `liquidsOnly`: only the neighbours of fluid materials (elastic ones left out, as walls are).
+inline Mat3 fluidGradientMoment(const World& world, Index i, bool liquidsOnly = false) {
   const auto& p = world.particles;
   const NeighborList& nf = world.fluidNeighbors();
   const auto& gradF = world.fluidGradients();
   Mat3 b = Mat3::Zero();
   for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
     const Index j = nf.indices[k];
+    if (liquidsOnly && !world.materials.isFluid(p.material[j])) continue;
     b += (p.mass[j] / p.density[j]) * gradF[k] * (p.x[j] - p.x[i]).transpose();
   }
   return b;

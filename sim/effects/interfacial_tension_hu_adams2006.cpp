@@ -14,23 +14,6 @@ inline int colourOf(int m, const InterfacialTension& pair) {
   return m == pair.materialA ? 1 : (m == pair.materialB ? 0 : -1);
 }
 
-// The kernel moment of the colour gradient over the fluid neighbours only. The colour lives on
-// the fluids; elastic neighbours are a wall to them (as in phase 2 below), and at a wall the
-// colour gradient's correction is built from the fluid's one-sided moment, not completed by the
-// wall (fluidGradientMoment's sum runs over every dynamic neighbour, tissue included).
-Mat3 liquidGradientMoment(const World& world, Index i) {
-  const auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
-  const auto& gradF = world.fluidGradients();
-  Mat3 b = Mat3::Zero();
-  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-    const Index j = nf.indices[k];
-    if (world.materials.isFluid(p.material[j]))
-      b += (p.mass[j] / p.density[j]) * gradF[k] * (p.x[j] - p.x[i]).transpose();
-  }
-  return b;
-}
-
 }  // namespace
 
 std::string_view surfaceStressFormName(SurfaceStressForm form) {
@@ -116,9 +99,10 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
       }
       // L_i only where gradC is not 0, i.e. on the interface: the bulk costs no extra pass.
       if (corrected && g.squaredNorm() > 0)
-        g = gradientCorrection(
-                elastic ? liquidGradientMoment(world, i) : fluidGradientMoment(world, i),
-                kMinFluidCorrectionDeterminant) *
+        // The colour lives on the fluids; elastic neighbours are a wall to them (phase 2), and
+        // next to a wall the correction is the fluid's one-sided moment, not completed by it.
+        g = gradientCorrection(fluidGradientMoment(world, i, /*liquidsOnly=*/elastic),
+                               kMinFluidCorrectionDeterminant) *
             g;
       const Real norm = g.norm();  // [1/m]
       gradient_[i] = g;

@@ -17,14 +17,18 @@ namespace {
 // wall continues, the first fluid layer sits in the wall lattice's hollows and the contact line
 // locks (measured from the hemisphere: 120 deg requested stalled at 110 deg, 150 at 128 deg).
 // 0.1 s is four capillary times sqrt(rho R^3 / sigma) = 26 ms.
-testing::SessileResult settle(Real theta, Real tEnd = 0.1) {
+testing::SessileCase layeredCase(Real theta, Real tEnd) {
   testing::SessileCase c;
   c.theta = theta;
   c.solver = "indsph";
   c.wallLayers = 3;
   c.jitter = 0.2;
   c.tEnd = tEnd;
-  return testing::runSessile(c);
+  return c;
+}
+
+testing::SessileResult settle(Real theta, Real tEnd = 0.1) {
+  return testing::runSessile(layeredCase(theta, tEnd));
 }
 
 // +-5 deg: the acceptance for 30-150 deg. The cap fit (the cap of the droplet's volume,
@@ -103,12 +107,7 @@ TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
 TEST_CASE(
     "Sessile droplet on an elastic tissue floor retracts to a 120 deg contact angle (through oil)",
     "[validation][interface][contact_angle][elasticity]") {
-  testing::SessileCase c;
-  c.theta = 120;
-  c.solver = "indsph";
-  c.wallLayers = 3;
-  c.jitter = 0.2;
-  c.tEnd = 0.3;
+  testing::SessileCase c = layeredCase(120, 0.3);
   c.tissueFloorLayers = 3;
   c.tissueFreeLayers = 1;
   c.tissueYoungsModulus = 5e4;
