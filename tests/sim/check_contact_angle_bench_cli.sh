@@ -16,7 +16,7 @@ grep -q "must be cap, hemisphere or both" <<<"$out" || fail "no --start message:
 
 out=$("$bench" --walls painted 2>&1); rc=$?
 [ "$rc" -eq 2 ] || fail "--walls painted exited $rc, expected 2"
-grep -q "must be layered, single or both" <<<"$out" || fail "no --walls message: $out"
+grep -q "must be layered, single, tissue, both (layered and single) or all" <<<"$out" || fail "no --walls message: $out"
 
 out=$("$bench" --time 2>&1); rc=$?
 [ "$rc" -eq 2 ] || fail "--time without a value exited $rc, expected 2"

@@ -3,17 +3,18 @@
 // R0 / d and each start (the requested cap, or the hemisphere so the contact line has to travel)
 // it runs the sessile droplet of interface_sessile.h (INDSPH, 0.2 d jitter, R0 = 3 mm, sigma
 // 0.04 N/m, no gravity) on a floor of three wall layers (the tests' wall) or of one Akinci layer
-// (the eye scenes' wall, --walls single), and writes one row: the angle measured (window mean over
-// the last fifth), at the end, its error, the tolerance (+-5 deg for 30-150, +-10 outside),
-// particles, steps and wall time. The cap fit measures up to 150 deg; above, it cannot tell 165
-// from 180 and the footprint measure (capAngleOfFootprint) is used; the table names which.
+// (the eye scenes' wall, --walls single) or of elastic tissue (--walls tissue), and writes one row:
+// the angle measured (window mean over the last fifth), at the end, its error, the issue's
+// tolerance (+-5 deg for 30-150, +-10 outside), particles, steps and wall time. The cap fit
+// measures up to 150 deg; above, it cannot tell 165 from 180 and the footprint measure
+// (capAngleOfFootprint) is used; the table names which.
 //
 // Files: DIR/contact_angle_bench.csv and DIR/contact_angle_bench.md, rewritten after every run,
 // so an interrupted sweep keeps the rows it finished (the markdown says how many of how many).
 //
 // usage: sim_contact_angle_bench [--angles 60,120,150,165] [--resolutions 6,8] [--time 0.3]
 //                                [--start cap|hemisphere|both] [--viscosity 0.005]
-//                                [--walls layered|single|both] [--out DIR]
+//                                [--walls layered|single|tissue|both|all] [--out DIR]
 // Threads: OMP_NUM_THREADS. Numbers depend on the machine and its load.
 #include <omp.h>
 
@@ -36,7 +37,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: sim_contact_angle_bench [--angles 60,120,150,165] [--resolutions 6,8] [--time 0.3]\n"
     "                               [--start cap|hemisphere|both] [--viscosity 0.005]\n"
-    "                               [--walls layered|single|both] [--out DIR]\n"
+    "                               [--walls layered|single|tissue|both|all] [--out DIR]\n"
     "  --angles       requested contact angles through the oil [deg], each in [1, 179]\n"
     "  --resolutions  R0 / d, droplet radius over particle spacing, each in [4, 24]\n"
     "  --time         simulated time per run [s] (a capillary time is 26 ms)\n"
@@ -47,7 +48,10 @@ constexpr const char* kUsage =
     "                 0.2 s with 0.005, and 142 at 1 s with 0.05\n"
     "  --walls        layered: three wall layers, the wall the [contact_angle] tests use; single:\n"
     "                 one Akinci layer, the eye scenes' wall (docs/interface.md, validation 3,\n"
-    "                 session 14)\n"
+    "                 session 14); tissue: three layers of elastic tissue (50 kPa, top layer "
+    "free)\n"
+    "                 on the layered wall, its top layer wetted, as the retina over an elastic\n"
+    "                 sclera (session 15); both: layered and single; all: the three\n"
     "  --out          folder for contact_angle_bench.csv and .md (default: .)\n";
 
 struct Options {
@@ -87,11 +91,21 @@ std::vector<double> parseList(const std::string& flag, const std::string& text, 
 }
 
 // A two-way option: `a`, `b`, or "both" (a then b).
+// One of `choices`, or "both" (the first two), or with three choices "all".
 std::vector<std::string> parseChoice(const std::string& flag, const std::string& value,
-                                     const std::string& a, const std::string& b) {
-  if (value == "both") return {a, b};
-  if (value == a || value == b) return {value};
-  throw std::invalid_argument(flag + " must be " + a + ", " + b + " or both, not '" + value + "'");
+                                     const std::vector<std::string>& choices) {
+  if (value == "both") return {choices[0], choices[1]};
+  if (value == "all" && choices.size() > 2) return choices;
+  for (const std::string& c : choices)
+    if (value == c) return {value};
+  std::string accepted = choices[0] + ", " + choices[1];
+  if (choices.size() == 2) {
+    accepted += " or both";
+  } else {
+    for (std::size_t k = 2; k < choices.size(); ++k) accepted += ", " + choices[k];
+    accepted += ", both (" + choices[0] + " and " + choices[1] + ") or all";
+  }
+  throw std::invalid_argument(flag + " must be " + accepted + ", not '" + value + "'");
 }
 
 Options parse(int argc, char** argv) {
@@ -113,9 +127,9 @@ Options parse(int argc, char** argv) {
     else if (flag == "--viscosity")
       o.viscosity = parseList(flag, value, 1e-4, 10).front();
     else if (flag == "--start")
-      o.starts = parseChoice(flag, value, "cap", "hemisphere");
+      o.starts = parseChoice(flag, value, {"cap", "hemisphere"});
     else if (flag == "--walls")
-      o.walls = parseChoice(flag, value, "layered", "single");
+      o.walls = parseChoice(flag, value, {"layered", "single", "tissue"});
     else if (flag == "--out")
       o.out = value;
     else
@@ -184,7 +198,12 @@ int main(int argc, char** argv) {
           c.theta = angle;
           c.startCos = start == "cap" ? -std::cos(angle * std::numbers::pi / 180) : 0.0;
           c.solver = "indsph";
-          c.wallLayers = walls == "layered" ? 3 : 0;
+          c.wallLayers = walls == "single" ? 0 : 3;
+          if (walls == "tissue") {  // the test's elastic floor (interface_contact_angle.cpp)
+            c.tissueFloorLayers = 3;
+            c.tissueFreeLayers = 1;
+            c.tissueYoungsModulus = 5e4;
+          }
           c.jitter = 0.2;
           c.perR = resolution;
           // The 30 deg cap's base is 1.7 R0 across: flat caps get the fixture's wider box.
