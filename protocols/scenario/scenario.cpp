@@ -237,8 +237,15 @@ std::string contactAngleRangeNote(double throughTamponadeDeg) {
          "less than asked";
 }
 
-std::string contactAngleWallModelNote() {
-  return "the eye's wall is one layer of wall particles, on which the wall-wetting model holds "
+std::string contactAngleWallModelNote(bool retinaOnElasticSclera) {
+  const std::string wall =
+      retinaOnElasticSclera
+          ? "the retina over the elastic sclera is the sclera's particle lattice, on which a flat "
+            "tissue floor held 120 deg as 121.4 deg (docs/interface.md, validation 3, session 15); "
+            "the rest of the eye's wall (the lens/IOL cap) is one layer of wall particles"
+          : "the eye's wall is one layer of wall particles";
+  return wall +
+         ", on which the wall-wetting model holds "
          "the contact angle less well than on the layered wall it was tested on: on a flat "
          "single-layer wall a sessile droplet kept 90 deg within 3 deg, but read 30 deg as "
          "9.5-37.7 deg and 150 deg as 127-151 deg at 6-8 particle spacings per radius, not settled "
@@ -336,7 +343,11 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
       if (const std::string note = contactAngleRangeNote(180.0 - *oil.contactAngleThroughAqueous);
           !note.empty())
         s.notes.push_back(note);
-      s.notes.push_back(contactAngleWallModelNote());
+      const bool retinaOnElasticSclera =
+          std::any_of(s.tissues.begin(), s.tissues.end(), [](const TissueBody& t) {
+            return t.name == "sclera" && t.decision.elastic && t.count > 0;
+          });
+      s.notes.push_back(contactAngleWallModelNote(retinaOnElasticSclera));
     }
   }
 

@@ -172,6 +172,7 @@ std::string contactAngleRangeNote(double throughTamponadeDeg);
 // The scenario note for any contact angle on the eye's wall, which is one layer of wall particles
 // (not the layered wall the range above was measured on): there 90 deg holds within 3 deg but 30
 // and 150 deg do not within the range's 5 deg (docs/interface.md, validation 3, session 14).
-std::string contactAngleWallModelNote();
+// Over an elastic sclera the retina is the sclera's lattice instead, and the note says so.
+std::string contactAngleWallModelNote(bool retinaOnElasticSclera = false);
 
 }  // namespace protocols

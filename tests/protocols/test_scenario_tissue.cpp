@@ -324,6 +324,9 @@ TEST_CASE("tissue: the retina over the elastic sclera carries the wall's contact
                     [&](const std::string& note) { return note.rfind(expectedNote, 0) == 0; }));
   for (const std::string& note : s.notes)
     CHECK(note.find("has no wall adhesion") == std::string::npos);
+  // The wall-model note names the lattice retina and leaves the single layer to the lens cap.
+  CHECK(std::count(s.notes.begin(), s.notes.end(), contactAngleWallModelNote(true)) == 1);
+  CHECK(std::count(s.notes.begin(), s.notes.end(), contactAngleWallModelNote(false)) == 0);
 }
 
 TEST_CASE("tissue: the anchored sclera layer is backed by the wall or the fat within the kernel's support",
