@@ -241,8 +241,11 @@ std::string contactAngleWallModelNote(bool retinaOnElasticSclera) {
   const std::string wall =
       retinaOnElasticSclera
           ? "the retina over the elastic sclera is the sclera's particle lattice, on which a flat "
-            "tissue floor held 120 deg as 121.4 deg (docs/interface.md, validation 3, session 15); "
-            "the rest of the eye's wall (the lens/IOL cap) is one layer of wall particles"
+            "tissue floor held 120 deg as 121.4 deg but the library oils' 18 deg through the "
+            "aqueous as 34.7 deg (18.7 on a layered wall; docs/interface.md, validation 3, session "
+            "15): read the oil's edge over the sclera as uncertain by about 15 deg; the rest of "
+            "the "
+            "eye's wall (the lens/IOL cap) is one layer of wall particles"
           : "the eye's wall is one layer of wall particles";
   return wall +
          ", on which the wall-wetting model holds "
