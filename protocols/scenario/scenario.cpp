@@ -19,6 +19,7 @@
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/protocol_error.h"
 #include "protocols/scenario/relax_fill.h"
+#include "sim/boundary/wetted_surface.h"
 #include "sim/core/error.h"
 
 namespace protocols {
@@ -244,8 +245,7 @@ std::string contactAngleWallModelNote(bool retinaOnElasticSclera) {
             "tissue floor held 120 deg as 121.4 deg but the library oils' 18 deg through the "
             "aqueous as 34.7 deg (18.7 on a layered wall; docs/interface.md, validation 3, session "
             "15): read the oil's edge over the sclera as uncertain by about 15 deg; the rest of "
-            "the "
-            "eye's wall (the lens/IOL cap) is one layer of wall particles"
+            "the eye's wall (the lens/IOL cap) is one layer of wall particles"
           : "the eye's wall is one layer of wall particles";
   return wall +
          ", on which the wall-wetting model holds "
@@ -346,11 +346,9 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
       if (const std::string note = contactAngleRangeNote(180.0 - *oil.contactAngleThroughAqueous);
           !note.empty())
         s.notes.push_back(note);
-      const bool retinaOnElasticSclera =
-          std::any_of(s.tissues.begin(), s.tissues.end(), [](const TissueBody& t) {
-            return t.name == "sclera" && t.decision.elastic && t.count > 0;
-          });
-      s.notes.push_back(contactAngleWallModelNote(retinaOnElasticSclera));
+      // Tagged tissue (tissue_particles.cpp) is the retina over an elastic sclera.
+      s.notes.push_back(
+          contactAngleWallModelNote(sim::findWettedSurfaceField(s.world->particles) != nullptr));
     }
   }
 

@@ -1,5 +1,6 @@
 #include "sim/effects/wall_adhesion_young.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -55,6 +56,7 @@ void WallAdhesionYoung::attach(World& world) {
   // the layers behind it would triple the area density and see no fluid of their own.
   surface_.resize(nWalls);
   for (std::size_t b = 0; b < nWalls; ++b) surface_[b] = isSurfaceWall(world.walls, b) ? 1 : 0;
+  const std::vector<std::int32_t>* wetted = findWettedSurfaceField(world.particles);  // tag + 1
   for (const auto& angle : angles) {
     const std::string& fluid = materials[angle.fluidMaterial].name;
     require(angle.fluidMaterial == materialA_ || angle.fluidMaterial == materialB_,
@@ -71,19 +73,17 @@ void WallAdhesionYoung::attach(World& world) {
         cosThetaA_[b] = cosA;
         found = true;
       }
-    for (Index i = 0; i < static_cast<Index>(world.particles.size()); ++i)
-      if (wettedSurfaceTag(world.particles, i) == angle.wallTag) {
-        found = true;
-        wettedTissue_ = true;
-      }
+    if (wetted && std::find(wetted->begin(), wetted->end(), angle.wallTag + 1) != wetted->end()) {
+      found = true;
+      wettedTissue_ = true;
+    }
     require(found, "contact angle for wall tag " + std::to_string(angle.wallTag) + " (through '" +
                        fluid + "') but no wall particle and no wetted tissue surface has that tag");
   }
-  for (Index i = 0; i < static_cast<Index>(world.particles.size()); ++i)
-    require(
-        wettedSurfaceTag(world.particles, i) < 0 || !materials.isFluid(world.particles.material[i]),
-        "a fluid particle of '" + materials[world.particles.material[i]].name +
-            "' is marked as a wetted surface: only elastic tissue can be one");
+  for (Index i = 0; wetted && i < static_cast<Index>(world.particles.size()); ++i)
+    require((*wetted)[i] == 0 || !materials.isFluid(world.particles.material[i]),
+            "a fluid particle of '" + materials[world.particles.material[i]].name +
+                "' is marked as a wetted surface: only elastic tissue can be one");
   // Area per wall particle from the surface number density of the wall sample.
   const NeighborList& ss = world.search().staticStatic();
   const Real h = world.supportRadius();

@@ -90,7 +90,6 @@ std::vector<double> parseList(const std::string& flag, const std::string& text, 
   return values;
 }
 
-// A two-way option: `a`, `b`, or "both" (a then b).
 // One of `choices`, or "both" (the first two), or with three choices "all".
 std::vector<std::string> parseChoice(const std::string& flag, const std::string& value,
                                      const std::vector<std::string>& choices) {
@@ -199,11 +198,7 @@ int main(int argc, char** argv) {
           c.startCos = start == "cap" ? -std::cos(angle * std::numbers::pi / 180) : 0.0;
           c.solver = "indsph";
           c.wallLayers = walls == "single" ? 0 : 3;
-          if (walls == "tissue") {  // the test's elastic floor (interface_contact_angle.cpp)
-            c.tissueFloorLayers = 3;
-            c.tissueFreeLayers = 1;
-            c.tissueYoungsModulus = 5e4;
-          }
+          if (walls == "tissue") testing::useTissueFloor(c);
           c.jitter = 0.2;
           c.perR = resolution;
           // The 30 deg cap's base is 1.7 R0 across: flat caps get the fixture's wider box.

@@ -108,9 +108,7 @@ TEST_CASE(
     "Sessile droplet on an elastic tissue floor retracts to a 120 deg contact angle (through oil)",
     "[validation][interface][contact_angle][elasticity]") {
   testing::SessileCase c = layeredCase(120, 0.3);
-  c.tissueFloorLayers = 3;
-  c.tissueFreeLayers = 1;
-  c.tissueYoungsModulus = 5e4;
+  testing::useTissueFloor(c);
   const testing::SessileResult r = testing::runSessile(c);
   std::printf(
       "sessile 120 deg on tissue: %.1f deg measured (%.1f at the end), %ld steps, %.1f s; "

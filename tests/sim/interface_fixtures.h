@@ -175,7 +175,6 @@ inline DropletScene dropletScene(const DropletSpec& s) {
     if (w.particles.material[i] != out.tissue) continue;
     Vec3& x = w.particles.x[i];  // back to its lattice site (the jitter moved it < d/2)
     for (int a = 0; a < 3; ++a) x[a] = gap + d * (std::floor((x[a] - gap) / d) + 0.5);
-    w.particles.mass[i] = w.materials[out.tissue].restDensity * d * d * d;
     if (x.y() > out.floorHeight - d) setWettedSurfaceTag(w.particles, i, kFloorTag);
     if (x.y() < out.floorHeight - s.tissueFreeLayers * d) setFixed(w.particles, i);
   }

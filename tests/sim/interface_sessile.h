@@ -45,6 +45,15 @@ struct SessileCase {
   Force backgroundPressure = Force::kAuto;  // the background_pressure stage (auto: the rule)
 };
 
+// The elastic tissue floor of the [contact_angle] tissue test and of `sim_contact_angle_bench
+// --walls tissue`: three lattice layers of 50 kPa tissue on the three-layer wall, the top one free.
+inline void useTissueFloor(SessileCase& c) {
+  c.wallLayers = 3;
+  c.tissueFloorLayers = 3;
+  c.tissueFreeLayers = 1;
+  c.tissueYoungsModulus = 5e4;
+}
+
 struct SessileResult : AngleRunResult {
   bool adhesion = false;  // the pipeline has the wall_adhesion stage
   // At the end, in units of d: how far the lowest fluid particle is below the floor (negative:

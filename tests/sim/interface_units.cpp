@@ -211,13 +211,14 @@ TEST_CASE("Wall adhesion exerts Young's line force sigma cos(theta) at the conta
 // indsph 3 6 0.005 0.2 tissue=2`; docs/interface.md, validation 3, session 15).
 TEST_CASE("Over a wetted tissue floor the interface stages act as over the wall it replaces",
           "[unit][interface]") {
-  const Real h = 2 * kHemisphereRadius / 6;  // [m] support radius at d = R/6
+  const Real d = kHemisphereRadius / 6;  // [m] the hemisphere fixture's spacing
+  const Real h = 2 * d;                  // [m] its support radius
   for (const Real theta : {60.0, 120.0}) {
     auto wall = hemisphere(3);
     auto tissue = hemisphere(3, 2);
     // The droplet sits 2 d higher on the tissue; compare about each one's own centre.
     const Real lift = tissue.floorHeight - wall.floorHeight;
-    REQUIRE(lift == Approx(2 * kHemisphereRadius / 6));
+    REQUIRE(lift == Approx(2 * d));
     REQUIRE((tissue.centre - wall.centre).y() == Approx(lift));
     for (auto* scene : {&wall, &tissue})
       scene->world->materials.setContactAngle(scene->oil, testing::kFloorTag, theta);
@@ -251,7 +252,6 @@ TEST_CASE("Over a wetted tissue floor the interface stages act as over the wall 
   applyAlone(*wall.world, onWall);
   applyAlone(*tissue.world, onTissue);
   // Particle by particle: the fluid lattices are the same, the tissue's 2 d higher.
-  const Real d = 2 * kHemisphereRadius / 12;
   const auto key = [d](const Vec3& x, Real floor) {
     return std::array<long, 3>{std::lround(x.x() / d - 0.5), std::lround((x.y() - floor) / d - 0.5),
                                std::lround(x.z() / d - 0.5)};
