@@ -234,28 +234,28 @@ std::string contactAngleRangeNote(double throughTamponadeDeg) {
            "walls up to 13 deg steeper; read where the oil's edge meets the retina as uncertain "
            "by several degrees";
   return "contact angle " + angle + " is " + tested +
-         ": at 15 deg a sessile droplet held 16.6-23.6 deg, so a thin tamponade film may spread "
-         "less than asked";
+         ": asked for 18 deg, a sessile droplet on a flat layered wall settled at 25.7-27.6 deg "
+         "(8 particle spacings per radius), so a thin tamponade film may spread less than asked";
 }
 
 std::string contactAngleWallModelNote(bool retinaOnElasticSclera) {
   const std::string wall =
       retinaOnElasticSclera
           ? "the retina over the elastic sclera is the sclera's particle lattice, on which a flat "
-            "tissue floor held 120 deg as 121.4 deg but the library oils' 18 deg through the "
-            "aqueous as 34.7 deg (18.7 on a layered wall; docs/interface.md, validation 3, session "
-            "15): read the oil's edge over the sclera as uncertain by about 15 deg; the rest of "
-            "the eye's wall (the lens/IOL cap) is one layer of wall particles"
+            "tissue floor held 120 deg as 121.4 deg and the library oils' 18 deg through the "
+            "aqueous as 28.5 deg (27.6 on a layered wall; docs/interface.md, validation 3, "
+            "sessions 15-16): read the oil's edge over the sclera as uncertain by about 10 deg; "
+            "the rest of the eye's wall (the lens/IOL cap) is one layer of wall particles"
           : "the eye's wall is one layer of wall particles";
   return wall +
          ", on which the wall-wetting model holds "
          "the contact angle less well than on the layered wall it was tested on: on a flat "
          "single-layer wall a sessile droplet kept 90 deg within 3 deg, but read 30 deg as "
          "9.5-37.7 deg and 150 deg as 127-151 deg at 6-8 particle spacings per radius, not settled "
-         "after 0.3 s, and the library oils' 18 deg through the aqueous as 24-26 deg (18.7-24 on a "
-         "layered wall; docs/interface.md, validation 3, session 14); read where the oil's edge "
-         "meets the retina as uncertain by about 8 deg at the library oils' angle and by 10-20 deg "
-         "at others";
+         "after 0.3 s, and the library oils' 18 deg through the aqueous as 34.4 deg (25.7 on a "
+         "layered wall; docs/interface.md, validation 3, sessions 14 and 16); read where the oil's "
+         "edge meets the retina as uncertain by about 15 deg at the library oils' angle and by "
+         "10-20 deg at others";
 }
 
 std::vector<std::uint8_t> Scenario::tamponadeFlags() const {

@@ -201,7 +201,8 @@ int main(int argc, char** argv) {
           if (walls == "tissue") testing::useTissueFloor(c);
           c.jitter = 0.2;
           c.perR = resolution;
-          // The 30 deg cap's base is 1.7 R0 across: flat caps get the fixture's wider box.
+          // The fixture widens the box further where a cap's contact line would come within 2 h
+          // of the side walls (below about 40 deg at R0 / 8).
           c.halfWidthPerR = angle < 90 ? 2.0 : 1.5;
           c.viscosity = o.viscosity;
           c.tEnd = o.time;

@@ -27,8 +27,10 @@ testing::SessileCase layeredCase(Real theta, Real tEnd) {
   return c;
 }
 
-testing::SessileResult settle(Real theta, Real tEnd = 0.1) {
-  return testing::runSessile(layeredCase(theta, tEnd));
+testing::SessileResult settle(Real theta, Real tEnd = 0.1, Real perR = 6) {
+  testing::SessileCase c = layeredCase(theta, tEnd);
+  c.perR = perR;
+  return testing::runSessile(c);
 }
 
 // +-5 deg: the acceptance for 30-150 deg. The cap fit (the cap of the droplet's volume,
@@ -39,9 +41,10 @@ testing::SessileResult settle(Real theta, Real tEnd = 0.1) {
 // automatic choice): 59.7 deg for 60, 120.2 deg for 120 (0.1 s); 33.4 deg for 30 (0.3 s). Since
 // the wall stress sits on the larger phase (the aqueous, session 12) 120 reads 123.7 (118.4 over
 // 0.3 s); 30 and 60 are unchanged (the aqueous carried it before too). Since background_pressure
-// leaves contact-line particles unshifted: 32.9 / 60.0 / 123.1 for 30 / 60 / 120.
-void checkSessileAngle(Real requested, Real tEnd = 0.1) {
-  const testing::SessileResult r = settle(requested, tEnd);
+// leaves contact-line particles unshifted: 32.9 / 60.0 / 123.1 for 30 / 60 / 120; 30 since session
+// 16 at R0 = 8 d with the side walls clear of its contact line: 32.6 (see its test).
+void checkSessileAngle(Real requested, Real tEnd = 0.1, Real perR = 6) {
+  const testing::SessileResult r = settle(requested, tEnd, perR);
   std::printf("sessile %.0f deg requested: %.1f deg measured (%.1f at the end), %ld steps, %.1f s\n",
               requested, r.angle, r.finalAngle, r.steps, r.seconds);
   REQUIRE(r.adhesion);
@@ -76,16 +79,20 @@ TEST_CASE("Sessile droplet holds a 90 deg contact angle (through oil)",
   checkSessileAngle(90.0, 0.3);
 }
 
-// 30 deg from the hemisphere: the contact line travels 60 deg and the flat cap (2.7 d tall)
-// overlaps the wall's wetted layer over its whole base, the hardest case of the 30-150 band.
-// 0.3 s (12 capillary times): at 0.2 s the window still reads 34.7 deg (coming down), at 0.3 s
-// 33.4; started as the 30 deg cap the droplet retracts to 31.6 deg in 0.3 s, so the balance lies
-// between the two. With the symmetric (neutral-wall) surface stress the cap retracted to 34.9 deg
-// in 0.3 s, and the hemisphere spread only to 39.2 deg in 0.1 s (before the background pressure):
-// the one-sided colour gradient at the wall is what brings 30 deg within 5 deg.
+// 30 deg from the hemisphere: the contact line travels 60 deg and the flat cap overlaps the
+// wall's wetted layer over its whole base, the hardest case of the 30-150 band. 0.3 s (12
+// capillary times). R0 = 8 d, where the cap is 3.6 d tall: with the side walls 2 h clear of the
+// contact line (the fixture's rule since session 16) it reads 32.6 (32.6 at the end; 33.5 in a
+// box one cell narrower, coming down 0.3 deg per 0.03 s). At R0 = 6 d, 2.7 d tall, it reads 35.3,
+// outside by 0.3 deg. Until session 16 the test ran at R0 = 6 d in a 2 R0 box whose side walls
+// stood 1.8 d from the 30 deg cap's contact line and held it at 32.9 (docs/interface.md,
+// validation 3, session 16). With the symmetric (neutral-wall) surface stress the cap retracted
+// to 34.9 deg in 0.3 s, and the hemisphere spread only to 39.2 deg in 0.1 s (before the
+// background pressure, in that box): the one-sided colour gradient at the wall is what brings 30
+// deg within 5 deg.
 TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
           "[validation][interface][contact_angle]") {
-  checkSessileAngle(30.0, 0.3);
+  checkSessileAngle(30.0, 0.3, 8);
 }
 
 // On an elastic tissue floor (the retina over an elastic sclera): three lattice layers of tissue

@@ -27,7 +27,7 @@ struct SessileCase {
                            //     above the floor); 0 is the hemisphere
   Real tEnd = 0.05;        // [s] about 2 capillary times sqrt(rho R^3 / sigma) = 26 ms
   Real perR = 6;           // [1] R0 / d
-  Real halfWidthPerR = 2;  // [1] half the box width over R0 (the 30 deg cap's base is 1.7 R0)
+  Real halfWidthPerR = 2;  // [1] least half box width over R0 (sessileScene widens flat caps' box)
   std::string solver = "wcsph";
   int wallLayers = 0;      // [1] 0: one Akinci layer (WCSPH scenes); >= 1 layered walls
   Real viscosity = 0.005;  // [Pa s] both phases
@@ -68,24 +68,36 @@ inline Real sessileCapTop(Real r0, Real u) {
   return r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u))) * (1 - u);
 }
 
+// [m] Radius of that cap's base (its contact radius), R sin(theta).
+inline Real sessileCapBase(Real r0, Real u) {
+  return r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u))) * std::sqrt(1 - u * u);
+}
+
 // The scene of a sessile case before any step: the droplet as the cap of start angle
 // acos(-startCos) and the hemisphere's volume, the requested angle set on the floor.
 inline DropletScene sessileScene(const SessileCase& c) {
   const Real r0 = c.r0;  // [m]
   DropletSpec s;
   s.spacing = r0 / c.perR;
-  s.halfWidth = c.halfWidthPerR * r0;  // at 2 R0 the 120 deg cap (base 0.73 R) stays 5 h from
-                                       // the side walls
+  const Real h = 2.0 * s.spacing;  // [m] kernel support (World's supportRadiusFactor 2)
+  const Real requestedCos = std::cos(c.theta * std::numbers::pi / 180);
+  // The side walls clear the contact line of the start cap and of the requested one by 2 h, so
+  // that no particle at the contact line reads a neighbour that reads a side wall. In a fixed
+  // 2 R0 box the 18 deg cap (base 2.03 R0) met the side walls, which held it: 18 read 18.7 on
+  // the layered wall and 34.7 on tissue, where with room both recede alike (docs/interface.md,
+  // validation 3, session 16). At 2 R0 the 120 deg cap (base 0.73 R0) stays 5 h from them.
+  // Rounded up to whole cells: the single-layer box is filled with round(width / d) cells.
+  const Real clear =
+      std::max(sessileCapBase(r0, -c.startCos), sessileCapBase(r0, requestedCos)) + 2 * h;
+  s.halfWidth = std::max(c.halfWidthPerR * r0, 0.5 * s.spacing * std::ceil(2 * clear / s.spacing));
   // The lid clears the top of both the start cap and the requested angle's cap by 2 h. A droplet
   // whose top comes within the (neutral, 90 deg) lid's support bridges floor and lid and is held
   // there: in the old fixed 1.6 R0 box the 150 deg cap's top (1.49 R0) sat 0.7 d below the lid,
   // and 150 deg requested read 142.6-144.8 deg, 165 deg 151-153, the bridge's angle, not the
   // floor's (docs/interface.md, validation 3, session 10).
-  const Real h = 2.0 * s.spacing;  // [m] kernel support (World's supportRadiusFactor 2)
-  s.boxHeight = std::max(
-      c.boxHeightPerR * r0,
-      std::max(sessileCapTop(r0, -c.startCos), sessileCapTop(r0, std::cos(c.theta * std::numbers::pi / 180))) +
-          2 * h);
+  s.boxHeight =
+      std::max(c.boxHeightPerR * r0,
+               std::max(sessileCapTop(r0, -c.startCos), sessileCapTop(r0, requestedCos)) + 2 * h);
   s.sigma = 0.04;
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
   s.wallLayers = c.wallLayers;
