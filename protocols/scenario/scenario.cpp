@@ -242,8 +242,8 @@ std::string contactAngleWallModelNote(bool retinaOnElasticSclera) {
   const std::string wall =
       retinaOnElasticSclera
           ? "the retina over the elastic sclera is the sclera's particle lattice, on which a flat "
-            "tissue floor held 120 deg as 121.4 deg and the library oils' 18 deg through the "
-            "aqueous as 28.5 deg (27.6 on a layered wall; docs/interface.md, validation 3, "
+            "tissue floor held 120 deg as 120.8 deg and the library oils' 18 deg through the "
+            "aqueous as 28.9 deg (27.6 on a layered wall; docs/interface.md, validation 3, "
             "sessions 15-16): read the oil's edge over the sclera as uncertain by about 10 deg; "
             "the rest of the eye's wall (the lens/IOL cap) is one layer of wall particles"
           : "the eye's wall is one layer of wall particles";

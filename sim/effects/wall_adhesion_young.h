@@ -36,15 +36,15 @@
 //            each unit of wall area is exactly 1 (sum_i V_i delta_i = sum_b A_b) wherever the
 //            fluid sits, so the wall energy does not depend on the fluid-wall gap
 //   Pi_i     = gamma_{phase of i} delta_i (I - m_i m_i^T)
-//   a_i     += 1/m_i sum_j V_i V_j (Pi_i + Pi_j) gradW_ij
+//   a_i     += 1/m_i sum_j V_i V_j (Pi_i + Pi_j) gradW_ij   (j: fluid neighbours)
 // Walls of tags without a contact angle get no wall stress: they stay neutral (90 deg).
 // Elastic tissue standing in for a wall (the retina over an elastic sclera) is wetted the same
 // way: its fluid-facing particles carry the wall tag (sim/boundary/wetted_surface.h) and enter
 // these sums as wall particles b do, with A_b from the tagged particles' 2-D density, the normal
 // from the gradient of the non-fluid volume fraction, both recomputed each step since the tissue
-// moves. On a flat floor the line force over tissue equals the one over the wall it replaces
-// within 0.5 % (tests/sim/interface_units.cpp); the interfacial_tension stage mirrors its stress
-// across tissue as across walls.
+// moves; like walls, they stay out of the pair sum. On a flat floor the line force over tissue
+// equals the one over the wall it replaces within 0.4 % (tests/sim/interface_units.cpp); the
+// interfacial_tension stage mirrors its stress across tissue as across walls.
 // Layered walls (sim/boundary/wall_layers.h): only the surface layer is the wetted surface.
 // Measured (docs/interface.md, validation 3, session 14): the static line force against 2 pi a
 // sigma cos(theta) at the contact radius a, d = R/6, is 1.03 / 0.85 with three lattice layers
