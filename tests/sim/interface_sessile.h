@@ -86,10 +86,13 @@ inline DropletScene sessileScene(const SessileCase& c) {
   // 2 R0 box the 18 deg cap (base 2.03 R0) met the side walls, which held it: 18 read 18.7 on
   // the layered wall and 34.7 on tissue, where with room both recede alike (docs/interface.md,
   // validation 3, session 16). At 2 R0 the 120 deg cap (base 0.73 R0) stays 5 h from them.
-  // Rounded up to whole cells: the single-layer box is filled with round(width / d) cells.
+  // Rounded up to whole cells: the single-layer box is filled with round(width / d) cells, so a
+  // width of 41.6 d (2.6 R0 at R0/8) put the lattice 0.4 d into the side wall (it blew up in 13
+  // steps). The 1e-9 keeps a whole number of cells that round-off lifts above it.
   const Real clear =
       std::max(sessileCapBase(r0, -c.startCos), sessileCapBase(r0, requestedCos)) + 2 * h;
-  s.halfWidth = std::max(c.halfWidthPerR * r0, 0.5 * s.spacing * std::ceil(2 * clear / s.spacing));
+  const Real cells = std::ceil(2 * std::max(c.halfWidthPerR * r0, clear) / s.spacing - 1e-9);
+  s.halfWidth = 0.5 * s.spacing * cells;
   // The lid clears the top of both the start cap and the requested angle's cap by 2 h. A droplet
   // whose top comes within the (neutral, 90 deg) lid's support bridges floor and lid and is held
   // there: in the old fixed 1.6 R0 box the 150 deg cap's top (1.49 R0) sat 0.7 d below the lid,
