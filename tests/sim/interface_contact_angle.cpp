@@ -104,8 +104,8 @@ TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
 // is the layered wall without it: 120.9 deg (60 deg: 57.8). Measured on tissue (R0/6, 0.3 s,
 // window mean): 120.8 (60 deg: 60.7) since session 16 left the tissue out of wall_adhesion's
 // pair sum, as the walls are; 121.4 (60 deg: 62.0) before; all layers anchored 118.8 (session
-// 15). Before wall_adhesion and the
-// tension's wall mirror acted on tissue, the same droplet settled at 83-85 deg (session 15,
+// 15). Before wall_adhesion and the tension's wall mirror acted on tissue, the same droplet
+// settled at 83-85 deg (session 15,
 // `sim_interface_bench sessile 120 0.3 0 indsph 3 6 0.005 0.2 tissue=3 free=1`). 0.3 s: the
 // angle overshoots to 128 at 0.06 s and settles from 0.15 s on, so a 0.1 s window would read a
 // transient. Also: no fluid particle gets below the tissue's top, and the tissue moves less than

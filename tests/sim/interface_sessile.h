@@ -62,15 +62,20 @@ struct SessileResult : AngleRunResult {
   Real maxTissueDisplacement = 0;
 };
 
-// [m] Height above the floor of the top of the cap that has the volume of a hemisphere of radius
-// r0 and cos(theta through the oil) = u: radius R = r0 cbrt(2 / ((2 + u)(1 - u)^2)), top R (1 - u).
+// [m] Sphere radius of the cap that has the volume of a hemisphere of radius r0 and cos(theta
+// through the oil) = u: cap volume pi R^3 (2 + u)(1 - u)^2 / 3 = 2/3 pi r0^3.
+inline Real sessileCapRadius(Real r0, Real u) {
+  return r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u)));
+}
+
+// [m] Height above the floor of that cap's top, R (1 - u).
 inline Real sessileCapTop(Real r0, Real u) {
-  return r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u))) * (1 - u);
+  return sessileCapRadius(r0, u) * (1 - u);
 }
 
 // [m] Radius of that cap's base (its contact radius), R sin(theta).
 inline Real sessileCapBase(Real r0, Real u) {
-  return r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u))) * std::sqrt(1 - u * u);
+  return sessileCapRadius(r0, u) * std::sqrt(1 - u * u);
 }
 
 // The scene of a sessile case before any step: the droplet as the cap of start angle
@@ -112,10 +117,9 @@ inline DropletScene sessileScene(const SessileCase& c) {
   s.massExcess = c.solver == "wcsph" ? 0.02 : 0.0;
   s.sessileStartCos = c.startCos;
   s.jitter = c.jitter;
-  // Keep the hemisphere's volume 2/3 pi R0^3 for other starts: cap volume pi R^3 (2 + u)(1 - u)^2
-  // / 3 with u = -startCos (the centre startCos R above the floor).
-  const Real u = -c.startCos;
-  s.radius = r0 * std::cbrt(2.0 / ((2 + u) * (1 - u) * (1 - u)));
+  // Keep the hemisphere's volume 2/3 pi R0^3 for other starts, u = -startCos (the centre
+  // startCos R above the floor).
+  s.radius = sessileCapRadius(r0, -c.startCos);
   auto scene = dropletScene(s);
   scene.world->materials.setContactAngle(scene.oil, kFloorTag, c.theta);
   return scene;
