@@ -147,6 +147,8 @@ std::string describeProtocol(const Protocol& p) {
   out.add("accuracy.min_time_step", formatQuantity(a.minTimeStep.value, Dimension::kDuration), a.minTimeStep.where);
   out.add("accuracy.max_time_step", formatQuantity(a.maxTimeStep.value, Dimension::kDuration), a.maxTimeStep.where);
   out.add("accuracy.surface_stress", quoted(std::string(toString(a.surfaceStress.value))), a.surfaceStress.where);
+  out.add("accuracy.wall_model", quoted(std::string(toString(a.wallModel.value))),
+          a.wallModel.where);
 
   const OutputsSpec& o = p.outputs;
   out.add("outputs.folder", quoted(o.folder.value), o.folder.where);

@@ -196,6 +196,9 @@ const ParameterSpec kParameters[] = {
   {.key = "accuracy.surface_stress", .kind = K::kChoice, .choices = kSurfaceStressNames, .defaultText = "auto",
    .example = "\"symmetric\"",
    .doc = "Interfacial tension's discretisation: corrected (first-order consistent on disordered particles), symmetric (momentum-exact; INDSPH Laplace jump -16 %), auto: symmetric under WCSPH, corrected otherwise (docs/interface.md)."},
+  {.key = "accuracy.wall_model", .kind = K::kChoice, .choices = kWallModelNames, .defaultText = "auto",
+   .example = "\"single_layer\"",
+   .doc = "Cavity wall particles: layered (three lattice layers behind the mesh; the fluid fills the cavity; the contact angle holds as on the flat wall it was validated on; about 2x the run time), single_layer (one Akinci layer on the mesh), auto: layered unless an elastic sclera or fat replaces part of the wall (docs/protocols.md)."},
 
   {.key = "outputs", .kind = K::kTable, .defaultText = "all defaults", .doc = "What the run writes."},
   {.key = "outputs.folder", .kind = K::kString, .defaultText = "runs/<protocol file name>",

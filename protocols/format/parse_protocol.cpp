@@ -321,8 +321,10 @@ void ProtocolParser::readAccuracy(const Table& root, Protocol& p) {
   a.minTimeStep = {preset.minTimeStep, defaultAt_};
   a.maxTimeStep = {preset.maxTimeStep, defaultAt_};
   a.surfaceStress = {SurfaceStressName::kAuto, defaultAt_};
+  a.wallModel = {WallModelName::kAuto, defaultAt_};
   if (!t) return;
   a.surfaceStress = choiceOr(*t, "surface_stress", SurfaceStressName::kAuto);
+  a.wallModel = choiceOr(*t, "wall_model", WallModelName::kAuto);
   if (auto v = reader_.quantity(*t, "particle_spacing")) a.particleSpacing = *v;
   if (auto v = reader_.quantity(*t, "solver_tolerance")) a.solverTolerance = *v;
   if (auto v = reader_.quantity(*t, "min_time_step")) a.minTimeStep = *v;

@@ -46,6 +46,12 @@ inline constexpr std::array<std::string_view, 3> kAccuracyPresetNames = {"draft"
 enum class SurfaceStressName { kAuto, kCorrected, kSymmetric };
 inline constexpr std::array<std::string_view, 3> kSurfaceStressNames = {"auto", "corrected",
                                                                         "symmetric"};
+// The cavity wall's particles (protocols/scenario/layered_cavity_walls.h): "layered" three
+// lattice layers behind the mesh (the fluid fills the cavity up to it), "single_layer" one
+// Akinci layer on the mesh; "auto" layered unless an elastic tissue replaces part of the wall.
+enum class WallModelName { kAuto, kLayered, kSingleLayer };
+inline constexpr std::array<std::string_view, 3> kWallModelNames = {"auto", "layered",
+                                                                    "single_layer"};
 // Tamponade agents of the material library (anatomy's data/materials), plus "custom".
 inline constexpr std::array<std::string_view, 6> kTamponadeAgentNames = {
     "silicone_oil_1000", "silicone_oil_5000", "densiron_68",
@@ -145,6 +151,7 @@ struct AccuracySpec {
   Located<double> minTimeStep;      // [s]
   Located<double> maxTimeStep;      // [s]
   Located<SurfaceStressName> surfaceStress;  // not part of the presets
+  Located<WallModelName> wallModel;          // not part of the presets
 };
 
 // Provisional preset values, to be recalibrated against the engine's accuracy study (issue 5
@@ -195,6 +202,7 @@ std::string_view toString(EffectSetting v);
 std::string_view toString(SolverName v);
 std::string_view toString(AccuracyPreset v);
 std::string_view toString(SurfaceStressName v);
+std::string_view toString(WallModelName v);
 // The preset called `name` ("draft", "standard", "fine"), or nothing for any other name.
 std::optional<AccuracyPreset> accuracyPresetFromName(std::string_view name);
 

@@ -81,7 +81,9 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   if (options.resume) {
     // Continue from checkpoint.h5: restore the particle state and the run's counters, recompute
     // the coverage of the frames written so far, drop anything written after the checkpoint.
-    CheckpointState state = readCheckpoint(checkpointPath, {{"fluid", &world.particles.fields}});
+    // The walls' group holds their solver state (INDSPH's wall stiffness on layered walls).
+    CheckpointState state = readCheckpoint(
+        checkpointPath, {{"fluid", &world.particles.fields}, {"wall", &world.walls.fields}});
     world.time = state.time;
     world.stepCount = state.step;
     world.lastTimeStep = state.dt;
@@ -205,6 +207,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     }
     for (const auto& e : pipeline.timers().entries()) state.realCounters["stage:" + e.name] = e.seconds;
     state.groups["fluid"] = &world.particles.fields;
+    state.groups["wall"] = &world.walls.fields;
     writer->flush();
     writeCheckpoint(checkpointPath, state);
   };

@@ -18,7 +18,10 @@
 #include "meshing/sample_volume.h"
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/protocol_error.h"
+#include "protocols/scenario/layered_cavity_walls.h"
+#include "protocols/scenario/point_grid.h"
 #include "protocols/scenario/relax_fill.h"
+#include "sim/boundary/wall_layers.h"
 #include "sim/boundary/wetted_surface.h"
 #include "sim/core/error.h"
 
@@ -81,17 +84,20 @@ void buildCavity(const Protocol& p, Scenario& s) {
   s.cavityArea = measures.area;
 }
 
-// Wall particles, regions, breaks.
-void buildWalls(const Protocol& p, Scenario& s, double spacing) {
-  const meshing::SurfaceSamples walls = meshing::sampleSurface(s.cavity, spacing);
-  s.retina.areas = walls.areas;
-  if (s.eye) {
-    s.retina.regions = anatomy::assignRegions(*s.eye, walls.points, walls.normals);
-  } else {
-    s.retina.regions.assign(walls.size(), anatomy::kRetina);
-  }
-  for (std::size_t w = 0; w < walls.size(); ++w)
-    s.world->walls.add(walls.points[w], walls.normals[w], static_cast<int>(s.retina.regions[w]));
+// Layers of a layered cavity wall (sim/boundary/wall_layers.h: 3 fill the kernel support).
+constexpr int kCavityWallLayers = 3;
+
+// Retina samples (the mesh's Poisson-disk samples at `spacing`, with their regions and areas),
+// breaks, and the one-layer wall on them. A layered wall replaces that wall later
+// (replaceWithLayeredWalls) and keeps the samples: they only say where the coverage is measured.
+meshing::SurfaceSamples buildWalls(const Protocol& p, Scenario& s, double spacing) {
+  meshing::SurfaceSamples samples = meshing::sampleSurface(s.cavity, spacing);
+  s.retina.areas = samples.areas;
+  s.retina.regions = s.eye ? anatomy::assignRegions(*s.eye, samples.points, samples.normals)
+                           : std::vector<anatomy::RegionSet>(samples.size(), anatomy::kRetina);
+  for (std::size_t w = 0; w < samples.size(); ++w)
+    s.world->walls.add(samples.points[w], samples.normals[w],
+                       static_cast<int>(s.retina.regions[w]));
   for (const RetinalBreak& b : p.eye.breaks) {
     anatomy::RetinalBreakSpec spec;
     spec.name = b.name.value;
@@ -108,15 +114,15 @@ void buildWalls(const Protocol& p, Scenario& s, double spacing) {
     }
     const anatomy::RetinalBreak& placed = s.breaks.back();
     std::vector<std::size_t> inside;
-    for (std::size_t w = 0; w < walls.size(); ++w)
-      if (placed.isInBreak(walls.points[w])) inside.push_back(w);
+    for (std::size_t w = 0; w < samples.size(); ++w)
+      if (placed.isInBreak(samples.points[w])) inside.push_back(w);
     if (inside.empty()) {
       // A break smaller than the wall spacing: the wall particle nearest to its centre stands
       // for it (its area is then larger than the break's; noted).
       std::size_t nearest = 0;
       double best = 1e300;
-      for (std::size_t w = 0; w < walls.size(); ++w) {
-        const double r = (walls.points[w] - placed.centre().position).squaredNorm();
+      for (std::size_t w = 0; w < samples.size(); ++w) {
+        const double r = (samples.points[w] - placed.centre().position).squaredNorm();
         if (r < best) best = r, nearest = w;
       }
       inside.push_back(nearest);
@@ -125,6 +131,50 @@ void buildWalls(const Protocol& p, Scenario& s, double spacing) {
     }
     s.retina.breakNames.push_back(spec.name);
     s.retina.breakWalls.push_back(std::move(inside));
+  }
+  return samples;
+}
+
+// Whether the cavity wall is layered (accuracy.wall_model): "auto" takes it unless an elastic
+// tissue replaced part of the one-layer wall (tissue_particles.cpp builds on that wall) or the
+// fill is one of the comparison mass rules, which are defined against the one-layer wall.
+bool chooseLayeredWalls(const Protocol& p, const ScenarioOptions& options, Scenario& s) {
+  const Located<WallModelName>& model = p.accuracy.wallModel;
+  if (model.value == WallModelName::kSingleLayer) return false;
+  const auto elastic = std::find_if(s.tissues.begin(), s.tissues.end(),
+                                    [](const TissueBody& t) { return t.decision.elastic; });
+  if (elastic != s.tissues.end()) {
+    if (model.value == WallModelName::kLayered)
+      fail(model.where,
+           "wall_model = \"layered\", but the elastic " + elastic->name +
+               " replaces part of the cavity wall, and layered walls are not built "
+               "next to elastic tissue yet",
+           "use wall_model = \"auto\" or \"single_layer\", or make the tissue rigid");
+    return false;
+  }
+  if (options.massRule != MassRule::kRelaxedFill) {
+    if (model.value == WallModelName::kLayered)
+      s.notes.push_back(
+          "wall_model = \"layered\" ignored: the comparison fill rule chosen on the "
+          "command line is defined for the one-layer wall");
+    return false;
+  }
+  return true;
+}
+
+// The one-layer wall replaced by three lattice layers behind the mesh (layered_cavity_walls.h).
+// Each wall particle carries the regions of its nearest retina sample as its tag: the wall stages
+// key the contact angle by tag.
+void replaceWithLayeredWalls(Scenario& s, double d) {
+  const LayeredCavityWalls lw = sampleLayeredCavityWalls(s.cavity, d, kCavityWallLayers);
+  sim::WallParticles& walls = s.world->walls;
+  walls.fields.resize(0);
+  const PointGrid samples(s.retinaSamples.restPositions, d);
+  for (std::size_t b = 0; b < lw.positions.size(); ++b) {
+    const long owner = samples.nearest(lw.positions[b], (kCavityWallLayers + 2) * d);
+    const int tag =
+        owner >= 0 ? static_cast<int>(s.retina.regions[static_cast<std::size_t>(owner)]) : 0;
+    sim::addLayeredWallParticle(walls, lw.positions[b], lw.normals[b], tag, d * d * d, lw.layer[b]);
   }
 }
 
@@ -238,16 +288,24 @@ std::string contactAngleRangeNote(double throughTamponadeDeg) {
          "(8 particle spacings per radius), so a thin tamponade film may spread less than asked";
 }
 
-std::string contactAngleWallModelNote(bool retinaOnElasticSclera) {
-  const std::string wall =
-      retinaOnElasticSclera
+std::string contactAngleWallModelNote(RetinaWall wall) {
+  if (wall == RetinaWall::kLayered)
+    return "the eye's wall is three layers of wall particles (accuracy.wall_model = \"layered\"), "
+           "the wall model the contact angle was validated on; on the curved, stepped wall of a "
+           "spherical cavity (8-12 particle spacings per radius) a 120 deg lens read 120-124 deg "
+           "and a 150 deg lens 148-155 deg, where one layer of wall particles read 124-129 deg "
+           "and let the 150 deg lens leave the wall (docs/interface.md, validation 5, session "
+           "17); read where the oil's edge meets the retina as uncertain by about 5 deg";
+  const std::string surface =
+      wall == RetinaWall::kElasticSclera
           ? "the retina over the elastic sclera is the sclera's particle lattice, on which a flat "
             "tissue floor held 120 deg as 120.8 deg and the library oils' 18 deg through the "
             "aqueous as 28.9 deg (27.6 on a layered wall; docs/interface.md, validation 3, "
             "sessions 15-16): read the oil's edge over the sclera as uncertain by about 10 deg; "
             "the rest of the eye's wall (the lens/IOL cap) is one layer of wall particles"
-          : "the eye's wall is one layer of wall particles";
-  return wall +
+          : "the eye's wall is one layer of wall particles (accuracy.wall_model = "
+            "\"single_layer\")";
+  return surface +
          ", on which the wall-wetting model holds "
          "the contact angle less well than on the layered wall it was tested on: on a flat "
          "single-layer wall a sessile droplet kept 90 deg within 3 deg, but read 30 deg as "
@@ -328,9 +386,12 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     fail(p.tamponade.agent.where, error.what(), "check the tamponade's properties");
   }
 
-  buildWalls(p, s, options.wallSpacingFactor * d);
-  recordRetinaSamples(s);  // the coverage's sample points (tissue_particles.h)
+  const meshing::SurfaceSamples retinaSamples = buildWalls(p, s, options.wallSpacingFactor * d);
+  recordRetinaSamples(s, retinaSamples.points, retinaSamples.normals);  // tissue_particles.h
   addTissues(p, s);        // elastic sclera / orbital fat replace the wall they cover (issue 7)
+  s.layeredWalls = chooseLayeredWalls(p, options, s);
+  if (s.layeredWalls) replaceWithLayeredWalls(s, d);
+  const bool layered = s.layeredWalls;
 
   // Interface physics data (issue 6): the stage rules switch interfacial tension and wall
   // adhesion on when both phases are present (sim::effectRegistry()).
@@ -347,8 +408,10 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
           !note.empty())
         s.notes.push_back(note);
       // Tagged tissue (tissue_particles.cpp) is the retina over an elastic sclera.
-      s.notes.push_back(
-          contactAngleWallModelNote(sim::findWettedSurfaceField(s.world->particles) != nullptr));
+      s.notes.push_back(contactAngleWallModelNote(
+          sim::findWettedSurfaceField(s.world->particles) != nullptr ? RetinaWall::kElasticSclera
+          : layered                                                  ? RetinaWall::kLayered
+                                                                     : RetinaWall::kSingleLayer));
     }
   }
 
@@ -359,7 +422,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   meshing::VolumeSamplingOptions vo;
   vo.spacing = d;
   const bool relaxed = options.massRule == MassRule::kRelaxedFill;
-  vo.wallGap = options.wallGapFactor.value_or(relaxed ? 0.65 : 1.2) * d;
+  vo.wallGap = layered ? 0.0 : options.wallGapFactor.value_or(relaxed ? 0.65 : 1.2) * d;
   oil.volume = plane.volumeAbove;
   aqueous.volume = plane.volumeBelow;
   std::vector<sim::Vec3> oilPoints, aqueousPoints;
@@ -469,7 +532,35 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   } catch (const sim::SimError& error) {
     fail(p.accuracy.particleSpacing.where, error.what(), "check the accuracy settings");
   }
-  if (relaxed && oil.count + aqueous.count > 0) {
+  if (layered && oil.count + aqueous.count > 0) {
+    // Fluid and wall are one lattice: no shifting pass is needed; the start's density is measured.
+    const std::vector<double> c = volumeFractions(*s.world);
+    double sum = 0.0, most = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < c.size(); ++i) {
+      const int m = s.world->particles.material[i];
+      if (m != aqueous.materialIndex && m != oil.materialIndex) continue;
+      sum += c[i], most = std::max(most, c[i]), ++n;
+    }
+    s.startMeanFraction = sum / static_cast<double>(n);
+    s.startMaxFraction = most;
+    s.fillCompression = s.startMeanFraction;
+    s.heldVolumeRatio = static_cast<double>(n) * d * d * d / s.cavityVolume;
+    const auto percent = [](double x) {
+      return std::to_string(static_cast<int>(std::lround(100.0 * x)));
+    };
+    const auto oneDecimal = [](double x) {
+      const long v = std::lround(1000.0 * x);
+      return std::to_string(v / 10) + "." + std::to_string(v % 10);
+    };
+    s.notes.push_back(
+        "fluid fill: the lattice points inside the cavity at rest mass rho d^3 hold " +
+        percent(s.heldVolumeRatio) +
+        " % of the cavity, one lattice with the layered "
+        "wall behind them: density at t = 0 is " +
+        oneDecimal(s.startMeanFraction) + " % of rest on average, " +
+        oneDecimal(s.startMaxFraction) + " % at most");
+  } else if (relaxed && oil.count + aqueous.count > 0) {
     FillRelaxation relaxation;
     relaxation.passes = options.relaxationPasses;
     relaxation.movable = {aqueous.materialIndex, oil.materialIndex};

@@ -5,11 +5,16 @@
 // Assembly (assembleScenario):
 //  1. cavity: a parametric eye from anatomy (emmetropic / myopic / staphyloma) or an imported
 //     mesh (meshing::loadMesh, units from the protocol);
-//  2. walls: meshing::sampleSurface at the particle spacing d; outward normals; Akinci volume 0
-//     (World::initialize computes it); regions per wall particle (anatomy::assignRegions) in
-//     RetinaMap, keyed by wall index, and also in the wall `tag` (the RegionSet bits);
-//  3. fluids: lattice particles of rest mass from 0.65 d of the wall, relaxed by a start-up
-//     particle-shifting pass (MassRule::kRelaxedFill, relax_fill.h), split into the two phases
+//  2. retina samples: meshing::sampleSurface at d/2; outward normals; regions per sample
+//     (anatomy::assignRegions) in RetinaMap, keyed by sample index. Walls: accuracy.wall_model
+//     "layered" (the default of a rigid cavity) puts three layers of lattice particles behind the
+//     mesh (layered_cavity_walls.h), each tagged with its nearest sample's regions; "single_layer"
+//     (the default next to an elastic tissue) makes the samples themselves the wall particles,
+//     Akinci volume 0 (World::initialize computes it), regions in the wall `tag`;
+//  3. fluids: lattice particles of rest mass; with layered walls every lattice point inside the
+//     mesh (one lattice with the wall, at rest density); with one wall layer from 0.65 d of the
+//     wall, relaxed by a start-up particle-shifting pass (MassRule::kRelaxedFill, relax_fill.h);
+//     split into the two phases
 //     along the fill direction of the first posture's gravity (light oil floats: -g; heavy oil
 //     sinks: +g) so the tamponade's share is the fill fraction (MassRule below);
 //  4. materials from the anatomy material library (protocol overrides applied), the World and
@@ -143,10 +148,14 @@ struct Scenario {
   double fillCompression = 1.0;       // [1] initial mean density / rest density (MassRule)
   // kRelaxedFill: the kernel-summed volume fraction C (relax_fill.h) of the fluid particles at
   // t = 0, mean and max (1 = rest density); and the fluid volume the particles hold, N d^3, over
-  // the cavity minus the wall's d/2 shell, V - A d/2.
+  // the cavity minus the wall's d/2 shell, V - A d/2. Layered walls (no shifting pass): the same
+  // fractions at t = 0, and N d^3 over the whole cavity V.
   double startMeanFraction = 0.0;     // [1]
   double startMaxFraction = 0.0;      // [1]
   double heldVolumeRatio = 0.0;       // [1]
+  // The cavity wall is three lattice layers (accuracy.wall_model, layered_cavity_walls.h); false:
+  // one Akinci layer on the mesh. The retina samples are the mesh's Poisson-disk points either way.
+  bool layeredWalls = false;
 
   // Tamponade flags of the world's dynamic particles in their current order, for the coverage
   // metric (1 = tamponade material).
@@ -169,10 +178,11 @@ inline constexpr double kTestedContactAngleMax = 120.0;
 // The scenario note for a contact angle outside that range, saying how the model errs there;
 // empty inside it.
 std::string contactAngleRangeNote(double throughTamponadeDeg);
-// The scenario note for any contact angle on the eye's wall, which is one layer of wall particles
-// (not the layered wall the range above was measured on): there 90 deg holds within 3 deg but 30
-// and 150 deg do not within the range's 5 deg (docs/interface.md, validation 3, session 14).
-// Over an elastic sclera the retina is the sclera's lattice instead, and the note says so.
-std::string contactAngleWallModelNote(bool retinaOnElasticSclera = false);
+// What the retina is made of in a scene: the layered cavity wall (accuracy.wall_model, the wall
+// the range above was measured on), one layer of wall particles, or an elastic sclera's lattice.
+enum class RetinaWall { kLayered, kSingleLayer, kElasticSclera };
+// The scenario note for any contact angle on the eye's wall: how well that wall holds it
+// (docs/interface.md, validation 3, sessions 14-16, and validation 5, session 17).
+std::string contactAngleWallModelNote(RetinaWall wall);
 
 }  // namespace protocols

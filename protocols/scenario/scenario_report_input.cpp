@@ -152,11 +152,17 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
       {"kernel support radius", millimetres(2.0 * a.particleSpacing), "h = 2 d, cubic spline"},
       {"solver tolerance", formatNumber(a.solverTolerance, 3),
        "mean relative density error at which the pressure solve stops"},
-      {"time step bounds", formatNumber(a.minTimeStep, 3) + " s to " + formatNumber(a.maxTimeStep, 3) + " s",
+      {"time step bounds",
+       formatNumber(a.minTimeStep, 3) + " s to " + formatNumber(a.maxTimeStep, 3) + " s",
        "CFL 0.4 and the stages' limits choose the step inside these bounds"},
-      {"particles", std::to_string(s.phases[0].count) + " aqueous, " +
-                        std::to_string(s.phases[1].count) + " tamponade, " +
-                        std::to_string(s.world->walls.size()) + " wall" + tissueCounts(s),
+      {"cavity wall", s.layeredWalls ? "layered (3 lattice layers)" : "single layer",
+       s.layeredWalls
+           ? "the wall model the contact angle was validated on (accuracy.wall_model; "
+             "docs/interface.md, validation 5)"
+           : "one Akinci layer: holds the contact angle less well (accuracy.wall_model)"},
+      {"particles",
+       std::to_string(s.phases[0].count) + " aqueous, " + std::to_string(s.phases[1].count) +
+           " tamponade, " + std::to_string(s.world->walls.size()) + " wall" + tissueCounts(s),
        "fluid started at " + formatNumber(s.fillCompression, 3) +
            " x rest density so that it fills the cavity (protocols/scenario/scenario.h MassRule)"},
   };

@@ -150,12 +150,11 @@ double tissueDomainPadding(const Protocol& p, double d) {
   return pad;
 }
 
-void recordRetinaSamples(Scenario& s) {
-  const std::size_t n = s.retina.areas.size();
-  const sim::WallParticles& walls = s.world->walls;
-  s.retinaSamples.restPositions.assign(walls.x.begin(), walls.x.begin() + static_cast<std::ptrdiff_t>(n));
-  s.retinaSamples.normals.assign(walls.normal.begin(), walls.normal.begin() + static_cast<std::ptrdiff_t>(n));
-  s.retinaSamples.followsId.assign(n, -1);
+void recordRetinaSamples(Scenario& s, const std::vector<sim::Vec3>& points,
+                         const std::vector<sim::Vec3>& normals) {
+  s.retinaSamples.restPositions = points;
+  s.retinaSamples.normals = normals;
+  s.retinaSamples.followsId.assign(points.size(), -1);
 }
 
 namespace {

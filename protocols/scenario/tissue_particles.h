@@ -126,9 +126,11 @@ struct RetinaSamples {
 // Extra room [m] the World's domain needs around the cavity for the protocol's tissues.
 double tissueDomainPadding(const Protocol& protocol, double particleSpacing);
 
-// Records the retina samples from the world's walls (call right after the walls are built: the
-// first RetinaMap::areas.size() wall particles are the samples).
-void recordRetinaSamples(Scenario& scenario);
+// Records the retina samples: the mesh points where the coverage is measured, with their outward
+// normals (call right after the walls are built; with the one-layer wall they are the first
+// RetinaMap::areas.size() wall particles, with layered walls the surface samples behind them).
+void recordRetinaSamples(Scenario& scenario, const std::vector<sim::Vec3>& points,
+                         const std::vector<sim::Vec3>& normals);
 
 // Decides each tissue of the protocol and adds the elastic ones (materials, particles, anchors;
 // removes the wall particles they replace). Call right after recordRetinaSamples (before the

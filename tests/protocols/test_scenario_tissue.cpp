@@ -20,6 +20,7 @@
 #include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/run_scenario.h"
 #include "protocols/scenario/scenario.h"
+#include "sim/boundary/wall_layers.h"
 #include "sim/boundary/wetted_surface.h"
 #include "sim/solid/fixed_particles.h"
 #include "sim/world/pipeline.h"
@@ -78,9 +79,11 @@ TEST_CASE("tissue: the physiological sclera is rigid by the rule and changes not
   const TissueBody& fat = s.tissues[1];
   CHECK_FALSE(fat.decision.elastic);
   CHECK(fat.decision.reason.find("behind a rigid sclera") != std::string::npos);
-  // Nothing changes: no tissue particle, every retina sample is a wall particle at rest.
+  // Nothing changes: no tissue particle, the rigid cavity's layered wall (accuracy.wall_model
+  // "auto"), the retina samples at rest.
   CHECK(s.world->particles.size() == s.phases[0].count + s.phases[1].count);
-  CHECK(s.world->walls.size() == s.retina.areas.size());
+  CHECK(s.layeredWalls);
+  CHECK(sim::hasLayeredWalls(s.world->walls));
   CHECK_FALSE(s.retinaSamples.moves());
   const std::vector<std::string> lines = tissueReportLines(s, {}, 0.0);
   REQUIRE(lines.size() == 1);
@@ -325,8 +328,10 @@ TEST_CASE("tissue: the retina over the elastic sclera carries the wall's contact
   for (const std::string& note : s.notes)
     CHECK(note.find("has no wall adhesion") == std::string::npos);
   // The wall-model note names the lattice retina and leaves the single layer to the lens cap.
-  CHECK(std::count(s.notes.begin(), s.notes.end(), contactAngleWallModelNote(true)) == 1);
-  CHECK(std::count(s.notes.begin(), s.notes.end(), contactAngleWallModelNote(false)) == 0);
+  CHECK(std::count(s.notes.begin(), s.notes.end(),
+                   contactAngleWallModelNote(RetinaWall::kElasticSclera)) == 1);
+  CHECK(std::count(s.notes.begin(), s.notes.end(),
+                   contactAngleWallModelNote(RetinaWall::kSingleLayer)) == 0);
 }
 
 TEST_CASE("tissue: the anchored sclera layer is backed by the wall or the fat within the kernel's support",

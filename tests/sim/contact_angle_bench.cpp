@@ -3,9 +3,9 @@
 // R0 / d and each start (the requested cap, or the hemisphere so the contact line has to travel)
 // it runs the sessile droplet of interface_sessile.h (INDSPH, 0.2 d jitter, R0 = 3 mm, sigma
 // 0.04 N/m, no gravity) on a floor of three wall layers (the tests' wall) or of one Akinci layer
-// (the eye scenes' wall, --walls single) or of elastic tissue (--walls tissue), and writes one row:
-// the angle measured (window mean over the last fifth), at the end, its error, the issue's
-// tolerance (+-5 deg for 30-150, +-10 outside), particles, steps and wall time. The cap fit
+// (the eye wall next to elastic tissue, --walls single) or of elastic tissue (--walls tissue), and
+// writes one row: the angle measured (window mean over the last fifth), at the end, its error, the
+// issue's tolerance (+-5 deg for 30-150, +-10 outside), particles, steps and wall time. The cap fit
 // measures up to 150 deg; above, it cannot tell 165 from 180 and the footprint measure
 // (capAngleOfFootprint) is used; the table names which.
 //
@@ -47,7 +47,8 @@ constexpr const char* kUsage =
     "                 speed sigma / viscosity: 150 deg from the hemisphere at R0/8 reads 148 at\n"
     "                 0.2 s with 0.005, and 142 at 1 s with 0.05\n"
     "  --walls        layered: three wall layers, the wall the [contact_angle] tests use; single:\n"
-    "                 one Akinci layer, the eye scenes' wall (docs/interface.md, validation 3,\n"
+    "                 one Akinci layer, the wall of eye scenes with elastic tissue and of\n"
+    "                 accuracy.wall_model = \"single_layer\" (docs/interface.md, validation 3,\n"
     "                 session 14); tissue: three layers of elastic tissue (50 kPa, top layer "
     "free)\n"
     "                 on the layered wall, its top layer wetted, as the retina over an elastic\n"

@@ -315,10 +315,12 @@ int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDe
   testing::CavitySpec s;
   s.cavityRadius = 0.003;
   s.spacing = s.cavityRadius / perR;
-  const Real v = 0.3;
+  Real v = 0.3;
+  if (const char* e = std::getenv("TAMP_CAV_V")) v = std::atof(e);
   s.oilOffset = s.cavityRadius * (1 - 2 * testing::flatCoverage(v));
   const Real tilt = tiltDeg * std::numbers::pi / 180;
   s.oilAxis = Vec3(std::sin(tilt), std::cos(tilt), 0);
+  if (const char* e = std::getenv("TAMP_CAV_LAYERS")) s.latticeWallLayers = std::atoi(e);
   // tilt < 0: a vertical column of the same volume fraction, 1 - (1 - a^2)^(3/2) = v
   if (tiltDeg < 0) {
     s.oilAxis = Vec3::UnitY();

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "scene_fixtures.h"
+#include "sim/boundary/wall_layers.h"
 #include "sim/boundary/wetted_surface.h"
 #include "sim/measure/droplet_pressure_jump.h"
 #include "sim/measure/sessile_contact_angle.h"
@@ -201,6 +202,12 @@ struct CavitySpec {
   // [m] > 0: the oil starts instead as the column of this radius about oilAxis (it touches the
   // wall at both poles; under gravity it must rise and spread into a layer)
   Real oilColumnRadius = 0;
+  // [1] 0: the one Akinci layer above. n >= 1: layered walls cut from one cubic lattice of
+  // spacing d (centred on the cavity, no point at the centre): the lattice points within Rs are
+  // fluid, those in the shell Rs < |x| <= Rs + n d are wall particles of volume d^3, layer
+  // floor((|x| - Rs) / d), normal x / |x|. Fluid and walls then form one lattice, at rest
+  // number density everywhere, and the wall's surface is a staircase about the sphere.
+  int latticeWallLayers = 0;
 };
 
 struct CavityScene {
@@ -216,12 +223,49 @@ inline CavityScene cavityScene(const CavitySpec& s) {
   WorldParameters params;
   params.particleSpacing = d;
   params.gravity = s.gravity;
-  params.domain = Box(Vec3::Constant(-rs - 3 * d), Vec3::Constant(rs + 3 * d));
+  const Real reach = rs + (s.latticeWallLayers + 3) * d;
+  params.domain = Box(Vec3::Constant(-reach), Vec3::Constant(reach));
   out.world = std::make_unique<World>(params);
   World& w = *out.world;
   out.oil = w.materials.add(liquid("oil", s.oilDensity, s.viscosity));
   out.aqueous = w.materials.add(liquid("aqueous", s.aqueousDensity, s.viscosity));
   if (s.sigma > 0) w.materials.setInterfacialTension(out.oil, out.aqueous, s.sigma);
+  const Vec3 axis = s.oilAxis.normalized();
+  auto isOil = [&](const Vec3& x) {
+    return s.oilColumnRadius > 0 ? (x - x.dot(axis) * axis).norm() < s.oilColumnRadius
+                                 : x.dot(axis) > s.oilOffset;
+  };
+  if (s.latticeWallLayers > 0) {
+    const int n = static_cast<int>(std::ceil(rs / d)) + s.latticeWallLayers + 1;
+    const Real shell = rs + s.latticeWallLayers * d;
+    std::size_t surface = 0;
+    Real oilVolume = 0, volume = 0;
+    for (int i = -n; i < n; ++i)
+      for (int j = -n; j < n; ++j)
+        for (int k = -n; k < n; ++k) {
+          const Vec3 x = d * Vec3(i + 0.5, j + 0.5, k + 0.5);
+          const Real r = x.norm();
+          if (r <= rs) {
+            const int mat = isOil(x) ? out.oil : out.aqueous;
+            w.particles.add(x, Vec3::Zero(),
+                            w.materials[mat].restDensity * d * d * d * (1 + s.massExcess), mat);
+            volume += d * d * d;
+            if (mat == out.oil) oilVolume += d * d * d;
+          } else if (r <= shell) {
+            const int layer = std::min(static_cast<int>((r - rs) / d), s.latticeWallLayers - 1);
+            addLayeredWallParticle(w.walls, x, x / r, 0, d * d * d, layer);
+            if (layer == 0) ++surface;
+          }
+        }
+    const auto& layerOf = wallLayerField(w.walls);
+    out.wallArea.assign(w.walls.size(), 0);
+    for (std::size_t b = 0; b < w.walls.size(); ++b)
+      if (layerOf[b] == 0)
+        out.wallArea[b] = 4 * std::numbers::pi * rs * rs / static_cast<Real>(surface);
+    out.oilVolumeFraction = oilVolume / volume;
+    w.initialize();
+    return out;
+  }
   // Fibonacci sphere (golden-angle spiral): equal-area points, spacing close to d everywhere.
   const auto n = static_cast<std::size_t>(std::lround(4 * std::numbers::pi * rs * rs / (d * d)));
   const Real golden = std::numbers::pi * (3 - std::sqrt(5.0));
@@ -237,7 +281,6 @@ inline CavityScene cavityScene(const CavitySpec& s) {
   // cavity up to Rs - (kWallGap - 1/2) d as a lattice block fills a box. (A cubic lattice cut
   // at Rs - kWallGap d fills only the sphere of that radius: 62 % of the cavity at Rs = 8 d, and
   // under gravity the fluid slumped and left the top 1.7 mm of a 3 mm cavity empty.)
-  const Vec3 axis = s.oilAxis.normalized();
   Real oilVolume = 0, volume = 0;
   for (Real r = rs - kWallGap * d; r > 0.25 * d; r -= d) {
     const Real outer = r + 0.5 * d, inner = std::max(r - 0.5 * d, Real(0));
@@ -249,12 +292,10 @@ inline CavityScene cavityScene(const CavitySpec& s) {
       const Real y = 1 - 2 * (k + 0.5) / static_cast<Real>(count);
       const Real rho = std::sqrt(1 - y * y), phi = golden * static_cast<Real>(k);
       const Vec3 x = r * Vec3(rho * std::cos(phi), y, rho * std::sin(phi));
-      const bool isOil = s.oilColumnRadius > 0 ? (x - x.dot(axis) * axis).norm() < s.oilColumnRadius
-                                               : x.dot(axis) > s.oilOffset;
-      const int mat = isOil ? out.oil : out.aqueous;
+      const int mat = isOil(x) ? out.oil : out.aqueous;
       w.particles.add(x, Vec3::Zero(), w.materials[mat].restDensity * v * (1 + s.massExcess), mat);
       volume += v;
-      if (isOil) oilVolume += v;
+      if (mat == out.oil) oilVolume += v;
     }
   }
   out.oilVolumeFraction = oilVolume / volume;
