@@ -81,10 +81,12 @@ int runPlan(Args args) {
       std::printf("  %-20s %9zu  (%s mL, %s kg each)\n", ph.material.c_str(), ph.count,
                   protocols::formatNumber(ph.volume * 1e6, 4).c_str(),
                   protocols::formatNumber(ph.particleMass, 4).c_str());
-    std::printf("  %-20s %9zu  (rigid wall, Akinci volumes)\n", "wall", plan.wallParticles);
+    std::printf("  %-20s %9zu  (rigid wall: %s)\n", "wall", plan.wallParticles,
+                scenario.layeredWalls ? "three lattice layers of volume d^3, accuracy.wall_model"
+                                      : "one Akinci layer, accuracy.wall_model");
     std::printf("  retinal breaks: %zu\n", scenario.breaks.size());
-    std::printf("  initial mean density: %s x rest density (the lattice is expanded to fill the "
-                "cavity in the first ms)\n", protocols::formatNumber(scenario.fillCompression, 3).c_str());
+    std::printf("  initial mean density: %s x rest density (see the fluid fill note)\n",
+                protocols::formatNumber(scenario.fillCompression, 3).c_str());
     for (const std::string& note : scenario.notes) std::printf("  note: %s\n", note.c_str());
     if (!scenario.tissues.empty()) std::printf("\ntissues (elastic only when it matters, issue 7):\n");
     for (const protocols::TissueBody& t : scenario.tissues) std::printf("  %s\n", t.describe().c_str());
