@@ -9,6 +9,19 @@
 namespace protocols {
 namespace {
 
+// What accuracy.solver_tolerance does under the scene's solver: only DFSPH reads it; INDSPH and
+// IISPH stop at their own eta (IndsphParameters, IisphParameters), the explicit solvers have none.
+std::string solverToleranceMeaning(const std::string& solver) {
+  if (solver == "dfsph") return "mean relative density error at which the pressure solve stops";
+  if (solver == "indsph" || solver == "iisph")
+    return "read by DFSPH only: " + solver +
+           " stops at its own mean density error of 1e-4 (or "
+           "after 100 iterations)";
+  return "read by DFSPH only: " + solver +
+         " is explicit; its speed of sound bounds the density "
+         "error near 1 %";
+}
+
 constexpr int kOutlinePoints = 96;  // points per closed outline on the map
 
 // Ring of wall points at chord distance `radius` [m] from the wall point at theta = 0 (the
@@ -151,7 +164,7 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
        "the whole-retina coverage error by |z0| d / R^2 + 1 % (tests/protocols/test_coverage.cpp)"},
       {"kernel support radius", millimetres(2.0 * a.particleSpacing), "h = 2 d, cubic spline"},
       {"solver tolerance", formatNumber(a.solverTolerance, 3),
-       "mean relative density error at which the pressure solve stops"},
+       solverToleranceMeaning(s.pipelineOptions.solver)},
       {"time step bounds",
        formatNumber(a.minTimeStep, 3) + " s to " + formatNumber(a.maxTimeStep, 3) + " s",
        "CFL 0.4 and the stages' limits choose the step inside these bounds"},
