@@ -84,6 +84,16 @@ void buildCavity(const Protocol& p, Scenario& s) {
   s.cavityArea = measures.area;
 }
 
+// "42" for 0.42: the fill notes' percentages.
+std::string percent(double fraction) {
+  return std::to_string(static_cast<int>(std::lround(100.0 * fraction)));
+}
+// "100.8" for 1.008: a fraction in percent with one decimal.
+std::string percentOneDecimal(double fraction) {
+  const long v = std::lround(1000.0 * fraction);
+  return std::to_string(v / 10) + "." + std::to_string(v % 10);
+}
+
 // Layers of a layered cavity wall (sim/boundary/wall_layers.h: 3 fill the kernel support).
 constexpr int kCavityWallLayers = 3;
 
@@ -292,8 +302,8 @@ std::string contactAngleWallModelNote(RetinaWall wall) {
   if (wall == RetinaWall::kLayered)
     return "the eye's wall is three layers of wall particles (accuracy.wall_model = \"layered\"), "
            "the wall model the contact angle was validated on; on the curved, stepped wall of a "
-           "spherical cavity (8-12 particle spacings per radius) a 120 deg lens read 120-124 deg "
-           "and a 150 deg lens 148-155 deg, where one layer of wall particles read 124-129 deg "
+           "spherical cavity (8-12 particle spacings per radius) a 120 deg lens read 120-126 deg "
+           "and a 150 deg lens 148-155 deg, where one layer of wall particles read 124-130 deg "
            "and let the 150 deg lens leave the wall (docs/interface.md, validation 5, session "
            "17); read where the oil's edge meets the retina as uncertain by about 5 deg";
   const std::string surface =
@@ -546,20 +556,13 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     s.startMaxFraction = most;
     s.fillCompression = s.startMeanFraction;
     s.heldVolumeRatio = static_cast<double>(n) * d * d * d / s.cavityVolume;
-    const auto percent = [](double x) {
-      return std::to_string(static_cast<int>(std::lround(100.0 * x)));
-    };
-    const auto oneDecimal = [](double x) {
-      const long v = std::lround(1000.0 * x);
-      return std::to_string(v / 10) + "." + std::to_string(v % 10);
-    };
     s.notes.push_back(
         "fluid fill: the lattice points inside the cavity at rest mass rho d^3 hold " +
         percent(s.heldVolumeRatio) +
         " % of the cavity, one lattice with the layered "
         "wall behind them: density at t = 0 is " +
-        oneDecimal(s.startMeanFraction) + " % of rest on average, " +
-        oneDecimal(s.startMaxFraction) + " % at most");
+        percentOneDecimal(s.startMeanFraction) + " % of rest on average, " +
+        percentOneDecimal(s.startMaxFraction) + " % at most");
   } else if (relaxed && oil.count + aqueous.count > 0) {
     FillRelaxation relaxation;
     relaxation.passes = options.relaxationPasses;
@@ -570,18 +573,14 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     s.fillCompression = r.meanAfter;
     const double shell = s.cavityVolume - 0.5 * d * s.cavityArea;  // [m^3]
     s.heldVolumeRatio = static_cast<double>(oil.count + aqueous.count) * d * d * d / shell;
-    auto percent = [](double x) { return std::to_string(static_cast<int>(std::lround(100.0 * x))); };
-    auto oneDecimal = [](double x) {
-      const long v = std::lround(1000.0 * x);
-      return std::to_string(v / 10) + "." + std::to_string(v % 10);
-    };
     s.notes.push_back(
         "fluid fill: particles at rest mass rho d^3 hold " + percent(s.heldVolumeRatio) +
         " % of the cavity minus the wall's d/2 shell (" +
         percent(static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume) +
         " % of the cavity); a start-up shifting pass (" + std::to_string(relaxation.passes) +
         " passes, not simulated time) spreads them: density at t = 0 is " +
-        oneDecimal(r.meanAfter) + " % of rest on average, " + oneDecimal(r.maxAfter) + " % at most");
+        percentOneDecimal(r.meanAfter) + " % of rest on average, " + percentOneDecimal(r.maxAfter) +
+        " % at most");
     s.world->updateNeighbors();
   }
   resolveOutputFields(p, s);
