@@ -78,6 +78,29 @@ double deepestPastMesh(const Scenario& s) {
   return deepest / s.world->particleSpacing();
 }
 
+// Steps a scene with its own pipeline and records the largest volume fraction C seen, then
+// whether every position and velocity is finite and the fastest particle.
+struct StepStats {
+  bool finite = true;
+  double maxFraction = 0.0;  // [1]
+  double maxSpeed = 0.0;     // [m/s]
+};
+StepStats stepScene(Scenario& s, int steps) {
+  sim::Pipeline pipeline = sim::assemblePipeline(*s.world, s.pipelineOptions);
+  pipeline.attach(*s.world);
+  StepStats out;
+  for (int step = 0; step < steps; ++step) {
+    pipeline.step(*s.world);
+    out.maxFraction = std::max(out.maxFraction, fractionStats(s).max);
+  }
+  for (std::size_t i = 0; i < s.world->particles.size(); ++i) {
+    out.finite =
+        out.finite && s.world->particles.x[i].allFinite() && s.world->particles.v[i].allFinite();
+    out.maxSpeed = std::max(out.maxSpeed, s.world->particles.v[i].norm());
+  }
+  return out;
+}
+
 }  // namespace
 
 TEST_CASE("layered wall fill: the lattice inside the mesh holds the cavity at rest density",
@@ -116,19 +139,9 @@ TEST_CASE("layered wall fill: INDSPH steps the tiny protocol, finite and inside 
   const Protocol p = parseProtocol((kProtocols / "tiny.toml").string());
   Scenario s = assembleScenario(p);
   REQUIRE(s.layeredWalls);
-  sim::Pipeline pipeline = sim::assemblePipeline(*s.world, s.pipelineOptions);
-  pipeline.attach(*s.world);
-  double maxC = 0.0;
-  for (int step = 0; step < 30; ++step) {
-    pipeline.step(*s.world);
-    maxC = std::max(maxC, fractionStats(s).max);
-  }
-  bool finite = true;
-  double maxSpeed = 0.0;
-  for (std::size_t i = 0; i < s.world->particles.size(); ++i) {
-    finite = finite && s.world->particles.x[i].allFinite() && s.world->particles.v[i].allFinite();
-    maxSpeed = std::max(maxSpeed, s.world->particles.v[i].norm());
-  }
+  const StepStats r = stepScene(s, 30);
+  const double maxC = r.maxFraction, maxSpeed = r.maxSpeed;
+  const bool finite = r.finite;
   WARN("layered, after 30 steps, t = " << s.world->time << " s: max C " << maxC << ", max speed "
                                        << maxSpeed << ", deepest past the mesh "
                                        << deepestPastMesh(s) << " d");
@@ -178,19 +191,9 @@ TEST_CASE("default fill: INDSPH steps the tiny protocol, finite and inside the w
   const Protocol p = singleLayer(parseProtocol((kProtocols / "tiny.toml").string()));
   Scenario s = assembleScenario(p);
   s.pipelineOptions.solver = "indsph";
-  sim::Pipeline pipeline = sim::assemblePipeline(*s.world, s.pipelineOptions);
-  pipeline.attach(*s.world);
-  double maxC = 0.0;
-  for (int step = 0; step < 30; ++step) {
-    pipeline.step(*s.world);
-    maxC = std::max(maxC, fractionStats(s).max);
-  }
-  bool finite = true;
-  double maxSpeed = 0.0;
-  for (std::size_t i = 0; i < s.world->particles.size(); ++i) {
-    finite = finite && s.world->particles.x[i].allFinite() && s.world->particles.v[i].allFinite();
-    maxSpeed = std::max(maxSpeed, s.world->particles.v[i].norm());
-  }
+  const StepStats r = stepScene(s, 30);
+  const double maxC = r.maxFraction, maxSpeed = r.maxSpeed;
+  const bool finite = r.finite;
   WARN("after 30 steps, t = " << s.world->time << " s: max C " << maxC << ", max speed " << maxSpeed
                               << ", penetration " << deepestPenetration(s));
   CHECK(finite);
