@@ -302,7 +302,7 @@ std::string contactAngleWallModelNote(RetinaWall wall) {
   if (wall == RetinaWall::kLayered)
     return "the eye's wall is three layers of wall particles (accuracy.wall_model = \"layered\"), "
            "the wall model the contact angle was validated on; on the curved, stepped wall of a "
-           "spherical cavity (8-12 particle spacings per radius) a 120 deg lens read 120-126 deg "
+           "spherical cavity (8-12 particle spacings per radius) a 120 deg lens read 121-126 deg "
            "and a 150 deg lens 155-157 deg, where one layer of wall particles read 124-130 deg "
            "and let the 150 deg lens leave the wall (docs/interface.md, validation 5, session "
            "17); read where the oil's edge meets the retina as uncertain by about 5 deg";
