@@ -778,21 +778,36 @@ TEST_CASE("tissue: bad input is reported at its place with exit code 2", "[unit]
   const fs::path mesh = fs::path(TAMPONADE_SOURCE_DIR) / "data" / "meshes" / "emmetropic_al23.58mm.stl";
   // Locations are file:line:column in paper_sclera_10kpa.toml as edited by each case.
   const std::vector<Case> cases = {
-      {"zero modulus", paperWith("youngs_modulus = \"10 kPa\"", "youngs_modulus = \"0 kPa\""), "validate",
-       "eye.sclera.youngs_modulus", ":32:18"},
-      {"negative modulus", paperWith("youngs_modulus = \"1 kPa\"", "youngs_modulus = \"-1 kPa\""), "validate",
-       "eye.orbital_fat.youngs_modulus", ":38:18"},
-      {"poisson 0.5", paperWith("mode = \"elastic\"\nanchoring = \"outer", "poisson_ratio = 0.5\nmode = \"elastic\"\nanchoring = \"outer"),
+      {"zero modulus", paperWith("youngs_modulus = \"10 kPa\"", "youngs_modulus = \"0 kPa\""),
+       "validate", "eye.sclera.youngs_modulus", ":32:18"},
+      {"negative modulus", paperWith("youngs_modulus = \"1 kPa\"", "youngs_modulus = \"-1 kPa\""),
+       "validate", "eye.orbital_fat.youngs_modulus", ":38:18"},
+      {"poisson 0.5",
+       paperWith("mode = \"elastic\"\nanchoring = \"outer",
+                 "poisson_ratio = 0.5\nmode = \"elastic\"\nanchoring = \"outer"),
        "validate", "eye.sclera.poisson_ratio", ":33:17"},
-      {"poisson negative", paperWith("mode = \"elastic\"\nanchoring = \"back", "poisson_ratio = -0.1\nmode = \"elastic\"\nanchoring = \"back"),
+      {"poisson negative",
+       paperWith("mode = \"elastic\"\nanchoring = \"back",
+                 "poisson_ratio = -0.1\nmode = \"elastic\"\nanchoring = \"back"),
        "validate", "eye.orbital_fat.poisson_ratio", ":39:17"},
-      {"sclera thicker than the anatomy allows", paperWith("mode = \"elastic\"\nanchoring = \"outer", "thickness = \"2 mm\"\nmode = \"elastic\"\nanchoring = \"outer"),
+      {"sclera thicker than the anatomy allows",
+       paperWith("mode = \"elastic\"\nanchoring = \"outer",
+                 "thickness = \"2 mm\"\nmode = \"elastic\"\nanchoring = \"outer"),
        "plan", "sclera thickness", ":33:13"},
+      {"layered cavity wall asked for next to the elastic sclera",
+       paperWith("particle_spacing = \"1.2 mm\"",
+                 "particle_spacing = \"1.2 mm\"\nwall_model = \"layered\""),
+       "plan", "wall_model = \"layered\", but the elastic sclera replaces part of the cavity wall",
+       ":67:14"},
       {"forced elastic sclera on an imported mesh",
-       paperWith("kind = \"staphyloma\"          # the paper's MRI eye is myopic with an irregular posterior wall\n"
-                 "side = \"OD\"\naxial_length = \"26 mm\"\nstaphyloma_depth = \"1.5 mm\"\nstaphyloma_width = \"8 mm\"",
-                 "kind = \"mesh\"\nside = \"OD\"\nmesh = \"" + mesh.string() + "\"\nmesh_units = \"mm\""),
-       "plan", "mode = \"elastic\" for the sclera, but an imported mesh cavity has no anatomy", ":32:8"},
+       paperWith(
+           "kind = \"staphyloma\"          # the paper's MRI eye is myopic with an irregular "
+           "posterior wall\n"
+           "side = \"OD\"\naxial_length = \"26 mm\"\nstaphyloma_depth = \"1.5 "
+           "mm\"\nstaphyloma_width = \"8 mm\"",
+           "kind = \"mesh\"\nside = \"OD\"\nmesh = \"" + mesh.string() + "\"\nmesh_units = \"mm\""),
+       "plan", "mode = \"elastic\" for the sclera, but an imported mesh cavity has no anatomy",
+       ":32:8"},
   };
   for (const Case& c : cases) {
     const fs::path file = dir / "bad.toml";
