@@ -25,13 +25,16 @@
 
 namespace tools {
 
-int runBenchSolvers(Args args);  // tools/cmd_bench_solvers.cpp
+int runBenchSolvers(Args args);   // tools/cmd_bench_solvers.cpp
+int runBenchAccuracy(Args args);  // tools/cmd_bench_accuracy.cpp
 
 namespace {
 
 constexpr const char* kBenchUsage =
     "usage: tamponade bench solvers [--quick] [--out DIR]   (the multiphase solver comparison;\n"
     "                                                         --help for its options)\n"
+    "       tamponade bench accuracy PROTOCOL.toml [--tolerances ...] [--spacings ...]\n"
+    "                              (what each accuracy choice costs and changes; --help)\n"
     "       tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
     "                              [--solvers dfsph,wcsph] [--out DIR]\n\n"
     "Runs the 3D dam break (water column a x 2a x a, a = 0.1 m, in a 4a long tank) with about\n"
@@ -194,6 +197,7 @@ int runBench(Args args) {
     return 0;
   }
   if (!args.empty() && args[0] == "solvers") return runBenchSolvers(args.subspan(1));
+  if (!args.empty() && args[0] == "accuracy") return runBenchAccuracy(args.subspan(1));
   if (args.empty() || args[0] != "engine") {
     std::fputs(kBenchUsage, stderr);
     return 2;

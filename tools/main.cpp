@@ -32,7 +32,7 @@ constexpr std::array kCommands = {
     tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
     tools::Command{"mesh", "check, repair, sample and generate eye meshes", tools::runMesh},
     tools::Command{"demo", "run the built-in dam-break scene, write HDF5 + XDMF frames", tools::runDemo},
-    tools::Command{"bench", "benchmarks: bench engine (dam break speed), bench solvers (multiphase comparison)", tools::runBench},
+    tools::Command{"bench", "benchmarks: bench engine (dam break speed), bench solvers (multiphase comparison), bench accuracy (accuracy vs time of a protocol)", tools::runBench},
     tools::Command{"version", "print the version", tools::runVersion},
 };
 

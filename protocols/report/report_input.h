@@ -2,6 +2,7 @@
 // can be rebuilt from a run's files (`tamponade report DIR`) as well as at the end of a run.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,18 @@ struct ReportStage {
   std::string reason;    // why it is (not) in the pipeline
   double seconds = 0.0;  // [s] wall-clock time spent in it (0 when not run)
   long calls = 0;
+};
+
+// What the implicit pressure solve achieved over the run (absent for explicit solvers and for
+// runs that did not record it).
+struct ReportPressureSolve {
+  double tolerance = 0.0;          // [1] accuracy.solver_tolerance asked for
+  double meanDensityError = 0.0;   // [1] the steps' final mean density errors, dt-weighted
+  double maxStepDensityError = 0.0;  // [1]
+  double meanIterations = 0.0;     // density-solve iterations per step
+  double capFraction = 0.0;        // [1] steps that stopped at the iteration cap
+  int iterationCap = 0;
+  long steps = 0;
 };
 
 struct ReportSetting {
@@ -60,6 +73,7 @@ struct ReportInput {
   std::vector<ReportOutline> outlines;
   std::vector<ReportStage> stages;
   std::vector<ReportSetting> accuracy;
+  std::optional<ReportPressureSolve> pressureSolve;
   // Elastic tissue (issue 7), one sentence each: the decision, maximum displacements, the cavity
   // volume change; one line ("tissue rigid (estimate ...)") when no tissue is elastic.
   std::vector<std::string> tissue;

@@ -197,7 +197,17 @@ std::string renderSummaryJson(const ReportInput& in) {
       << (in.stages[k].active ? "true" : "false") << ", \"seconds\": "
       << formatNumber(in.stages[k].seconds, 6) << "}" << (k + 1 < in.stages.size() ? "," : "")
       << "\n";
-  s << "  ]\n}\n";
+  s << "  ]";
+  if (in.pressureSolve) {
+    const ReportPressureSolve& ps = *in.pressureSolve;
+    s << ",\n  \"pressure_solve\": {\"tolerance\": " << formatNumber(ps.tolerance, 6)
+      << ", \"mean_density_error\": " << formatNumber(ps.meanDensityError, 6)
+      << ", \"max_step_density_error\": " << formatNumber(ps.maxStepDensityError, 6)
+      << ", \"mean_iterations\": " << formatNumber(ps.meanIterations, 6)
+      << ", \"steps_at_iteration_cap_fraction\": " << formatNumber(ps.capFraction, 6)
+      << ", \"iteration_cap\": " << ps.iterationCap << ", \"steps\": " << ps.steps << "}";
+  }
+  s << "\n}\n";
   return s.str();
 }
 

@@ -33,6 +33,15 @@ ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& s, cons
   }
   for (const auto& d : r.decisions)
     if (!d.active) in.stages.push_back({d.name, false, d.reason, 0.0, 0});
+  const PressureSolveTotals& solve = r.pressureSolve;
+  if (solve.steps > 0 && solve.implicitSolve()) {
+    in.pressureSolve = ReportPressureSolve{s.accuracy.solverTolerance, solve.meanDensityError(),
+                                           solve.maxStepDensityError, solve.meanIterations(),
+                                           solve.capFraction(),        solve.iterationCap,
+                                           solve.steps};
+    in.accuracy.push_back({"pressure solve (achieved)", pressureSolveValue(*in.pressureSolve),
+                           pressureSolveNote(*in.pressureSolve)});
+  }
   return in;
 }
 
@@ -129,6 +138,15 @@ void rebuildReport(const std::filesystem::path& folder) {
   const SeriesData calls = reader.readSeries("stage_calls");
   for (std::size_t c = 1; c < calls.columns.size() && c - 1 < r.timers.size(); ++c)
     r.timers[c - 1].calls = static_cast<long>(calls.values[(calls.rows - 1) * calls.columns.size() + c]);
+  const std::vector<std::string> series = reader.seriesNames();
+  if (std::find(series.begin(), series.end(), "pressure_solve") != series.end()) {
+    const SeriesData solve = reader.readSeries("pressure_solve");
+    const std::size_t width = solve.columns.size();
+    if (solve.rows > 0 && width > 1)
+      r.pressureSolve = PressureSolveTotals::fromRow(std::vector<double>(
+          solve.values.begin() + static_cast<std::ptrdiff_t>((solve.rows - 1) * width + 1),
+          solve.values.begin() + static_cast<std::ptrdiff_t>(solve.rows * width)));
+  }
   r.decisions = sim::assemblePipeline(*s.world, s.pipelineOptions).decisions();
   const ReportInput in = makeRunReportInput(protocol, s, r);
   writeReport(in, folder);

@@ -14,6 +14,7 @@
 
 #include "protocols/coverage/schedule_coverage.h"
 #include "protocols/report/report_input.h"
+#include "protocols/scenario/pressure_solve_totals.h"
 #include "protocols/scenario/scenario.h"
 #include "sim/world/pipeline.h"
 
@@ -26,6 +27,7 @@ struct RunResults {
   std::vector<sim::StageDecision> decisions;
   TissueMeasures lastTissue;                    // tissue state of the last frame
   double meanTimeStep = 0.0;                    // [s] simulated time / steps (0 = unknown)
+  PressureSolveTotals pressureSolve;            // steps = 0: not recorded (an older run)
 };
 
 ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& scenario,

@@ -76,6 +76,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   double postureStart = 0.0;                // [s] simulated time the current posture began
   double nextSample = 0.0;                  // [s] next steady-state sample (until steady)
   std::vector<SteadySample> samples;        // of the current posture, trimmed to one window
+  PressureSolveTotals solve;                // since the run's start (carried over a resume)
 
   std::optional<FrameWriter> writer;
   if (options.resume) {
@@ -100,6 +101,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
         restored.coverage.push_back(state.realCounters.at(key + "coverage:" + std::to_string(c)));
       samples.push_back(std::move(restored));
     }
+    solve = PressureSolveTotals::restore(state.realCounters);
     for (std::size_t k = 0; k < stageNames.size(); ++k) {
       const auto it = state.realCounters.find("stage:" + stageNames[k]);
       if (it != state.realCounters.end()) pipeline.timers().add(static_cast<int>(k), it->second);
@@ -181,6 +183,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     }
     writer->appendSeries("stage_seconds", world.time, seconds, stageNames);
     writer->appendSeries("stage_calls", world.time, calls, stageNames);
+    writer->appendSeries("pressure_solve", world.time, solve.row(), PressureSolveTotals::columns());
   };
   // Checkpoints are taken only at steps that are multiples of the Z-sort interval: World keeps
   // its sort counter privately and a resumed World starts it at 0 (World::initialize), which is
@@ -206,6 +209,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
         state.realCounters[key + "coverage:" + std::to_string(c)] = samples[k].coverage[c];
     }
     for (const auto& e : pipeline.timers().entries()) state.realCounters["stage:" + e.name] = e.seconds;
+    solve.save(state.realCounters);
     state.groups["fluid"] = &world.particles.fields;
     state.groups["wall"] = &world.walls.fields;
     writer->flush();
@@ -255,6 +259,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     if (ended) endPosture(false);
     while (!ended) {
       pipeline.step(world);
+      solve.add(pipeline.solver().stats(), world.lastTimeStep);
       if (world.time >= nextFrame) {
         record();
         while (nextFrame <= world.time) nextFrame += interval;
@@ -294,8 +299,12 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   writer->close();
 
   // Report.
-  RunResults results{frames, lastFractions, pipeline.timers().entries(), pipeline.decisions(), lastTissue,
-                     world.stepCount > 0 ? world.time / static_cast<double>(world.stepCount) : 0.0};
+  RunResults results{frames,     lastFractions,
+                     pipeline.timers().entries(),
+                     pipeline.decisions(),
+                     lastTissue,
+                     world.stepCount > 0 ? world.time / static_cast<double>(world.stepCount) : 0.0,
+                     solve};
   const ReportInput in = makeRunReportInput(protocol, s, results);
   if (protocol.outputs.report.value) writeReport(in, options.outputFolder);
 
@@ -303,6 +312,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   summary.wallSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   summary.retinaCoverage = in.summary.regions[0];
+  summary.pressureSolve = solve;
+  summary.coverage = in.summary;
   return summary;
 }
 

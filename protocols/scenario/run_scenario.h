@@ -23,7 +23,9 @@
 #include <string>
 
 #include "protocols/format/protocol.h"
+#include "protocols/coverage/schedule_coverage.h"
 #include "protocols/io/frame_reader.h"
+#include "protocols/scenario/pressure_solve_totals.h"
 #include "protocols/scenario/scenario.h"
 #include "protocols/scenario/steady_state.h"
 
@@ -56,6 +58,8 @@ struct RunSummary {
   double simulatedTime = 0.0;  // [s]
   double wallSeconds = 0.0;    // [s]
   double retinaCoverage = 0.0; // [1] time-weighted mean
+  PressureSolveTotals pressureSolve;
+  ScheduleCoverage coverage;   // every reported region's and break's time-weighted mean
 };
 
 // Runs `scenario` (built from `protocol`). Throws IoError for output problems, SimError when the

@@ -515,8 +515,12 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     case SurfaceStressName::kCorrected: s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kCorrected; break;
     case SurfaceStressName::kSymmetric: s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kSymmetric; break;
   }
+  // accuracy.solver_tolerance is the mean relative density error every implicit pressure solve
+  // stops at (each within its own iteration cap); the explicit solvers have no solve to stop.
   s.pipelineOptions.dfsph.densityTolerance = s.accuracy.solverTolerance;
   s.pipelineOptions.dfsph.divergenceTolerance = s.accuracy.solverTolerance;
+  s.pipelineOptions.indsph.tolerance = s.accuracy.solverTolerance;
+  s.pipelineOptions.iisph.tolerance = s.accuracy.solverTolerance;
   // WCSPH: c = 10 x the free-fall speed over the cavity, sqrt(2 g L), bounds density errors near
   // 1 % (Becker & Teschner 2007, sec. 4); flows in the eye are far slower than free fall.
   const double extent = (bounds.max() - bounds.min()).maxCoeff();  // [m]

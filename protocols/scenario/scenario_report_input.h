@@ -11,4 +11,8 @@ namespace protocols {
 
 ReportInput makeReportInput(const Protocol& protocol, const Scenario& scenario);
 
+// The "pressure solve (achieved)" row of the report's accuracy table: value and note.
+std::string pressureSolveValue(const ReportPressureSolve& solve);
+std::string pressureSolveNote(const ReportPressureSolve& solve);
+
 }  // namespace protocols

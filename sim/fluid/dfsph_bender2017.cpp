@@ -210,6 +210,7 @@ void DfsphBender2017::correctVelocities(World& world, const StepContext& context
     ++iteration;
   }
   stats_.densityIterations = iteration;
+  stats_.densityIterationLimit = params_.maxIterations;
   stats_.averageCompression = error;
   stats_.maxCompression = maxError;
   // Pressure p = kappa * rho (kappa is p/rho in Bender's notation), for output. Both solves apply

@@ -125,6 +125,7 @@ void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) p.v[i] += dt * acceleration_[i];
   stats_.densityIterations = iteration;
+  stats_.densityIterationLimit = params_.maxIterations;
   stats_.divergenceIterations = 0;
   stats_.averageCompression = error;
   stats_.maxCompression = DeterministicReducer::max(static_cast<std::size_t>(n), [&](std::size_t i) {

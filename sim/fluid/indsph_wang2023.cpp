@@ -339,6 +339,7 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
     ++iteration;
   }
   stats_.densityIterations = iteration;
+  stats_.densityIterationLimit = params_.maxIterations;
   stats_.averageCompression = error;
   stats_.maxCompression = DeterministicReducer::max(predicted_.size(), [&](std::size_t i) {
     return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;

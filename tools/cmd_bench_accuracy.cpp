@@ -1,0 +1,220 @@
+// `tamponade bench accuracy PROTOCOL [--tolerances ...] [--spacings ...] [--out DIR]`: what each
+// accuracy choice costs and what it changes, side by side. Runs the protocol once per (particle
+// spacing, solver tolerance) pair and writes DIR/accuracy.csv and DIR/accuracy.md: wall time,
+// steps, the pressure solve's iterations and achieved density error, and every run's coverage
+// against the most accurate run (finest spacing, then tightest tolerance). Each run's own output
+// (frames, report) stays in DIR/runs/. Not a test: times depend on the machine and its load.
+// Exit codes: 0 ok, 2 bad usage or protocol, 1 a run failed or the output is not writable.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+#ifdef _OPENMP
+#include <omp.h>
+#endif
+
+#include "protocols/format/parse_protocol.h"
+#include "protocols/io/io_error.h"
+#include "protocols/report/report_format.h"
+#include "protocols/scenario/run_scenario.h"
+#include "sim/core/error.h"
+#include "tools/cli_args.h"
+#include "tools/commands.h"
+
+namespace tools {
+namespace {
+
+constexpr const char* kUsage =
+    "usage: tamponade bench accuracy PROTOCOL.toml [--tolerances 0.005,0.001,...]\n"
+    "                                [--spacings 1.2,0.8,...] [--out DIR] [--threads N]\n\n"
+    "Runs the protocol once per pair of particle spacing and solver tolerance and writes\n"
+    "DIR/accuracy.csv and DIR/accuracy.md: wall time, steps, pressure-solve iterations per step,\n"
+    "the mean density error the solve reached, the share of steps that stopped at its iteration\n"
+    "cap, and the mean retinal coverage with its difference from the most accurate run (finest\n"
+    "spacing, then tightest tolerance) for the whole retina and the worst region. The runs'\n"
+    "frames and reports go to DIR/runs/ (replaced when the bench is run again).\n"
+    "  --tolerances  accuracy.solver_tolerance values as fractions, each in (0, 0.05]\n"
+    "                (default 0.005,0.001,0.0001: the draft and standard presets and the papers' eta)\n"
+    "  --spacings    accuracy.particle_spacing values in mm (default: the protocol's own)\n"
+    "  --out         output folder (default bench_accuracy)\n"
+    "  --threads     OpenMP threads (default OMP_NUM_THREADS); one thread times most steadily\n"
+    "Exit codes: 0 done, 2 bad usage or protocol (nothing run), 1 a run failed.\n";
+
+struct AccuracyRun {
+  double spacing = 0;    // [m]
+  double tolerance = 0;  // [1]
+  long particles = 0;    // fluid
+  protocols::RunSummary summary;
+  std::string folder;
+};
+
+std::vector<double> parseList(const std::string& text, const char* option, double scale, double max) {
+  std::vector<double> values;
+  for (const std::string& item : splitList(text)) {
+    const double v = parsePositive(item, option) * scale;
+    if (v > max) throw UsageError(std::string(option) + " '" + item + "' is above its largest value");
+    values.push_back(v);
+  }
+  if (values.empty()) throw UsageError(std::string(option) + " needs at least one value");
+  return values;
+}
+
+std::string label(double spacing, double tolerance) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, "d%gmm_tol%g", spacing * 1e3, tolerance);
+  return buffer;
+}
+
+// Largest |difference| over the reported regions' mean coverage (whole retina, quadrants, zones).
+double worstRegionDifference(const protocols::ScheduleCoverage& a, const protocols::ScheduleCoverage& b,
+                             std::string& region) {
+  double worst = -1;
+  for (std::size_t k = 0; k < a.regions.size(); ++k) {
+    const double diff = std::abs(a.regions[k] - b.regions[k]);
+    if (diff > worst) {
+      worst = diff;
+      region = std::string(protocols::kReportedRegions[k].name);
+    }
+  }
+  return worst;
+}
+
+void writeTables(const std::vector<AccuracyRun>& runs, const std::filesystem::path& dir,
+                 const std::string& protocolFile, const std::string& solver, int threads) {
+  const AccuracyRun& ref = runs.back();  // sorted coarse -> fine, loose -> tight
+  const std::filesystem::path csvPath = dir / "accuracy.csv", mdPath = dir / "accuracy.md";
+  std::ofstream csv(csvPath);
+  if (!csv) throw protocols::IoError(csvPath.string(), "", "cannot be written", "choose another --out");
+  csv << "spacing_mm,solver_tolerance,fluid_particles,steps,wall_s,mean_iterations,"
+         "steps_at_iteration_cap,mean_density_error,worst_step_density_error,whole_retina_mean,"
+         "whole_retina_diff,worst_region_diff,worst_region,threads\n";
+  std::ofstream md(mdPath);
+  if (!md) throw protocols::IoError(mdPath.string(), "", "cannot be written", "choose another --out");
+  md << "Protocol `" << protocolFile << "`, solver " << solver << ", " << threads
+     << " thread(s). Differences are in coverage points against the last row (finest spacing, "
+        "tightest tolerance).\n\n"
+        "| spacing [mm] | tolerance | fluid particles | steps | wall [s] | iterations/step | at cap | "
+        "density error reached (worst step) | whole retina | diff | worst region diff |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+  char line[640];
+  for (const AccuracyRun& r : runs) {
+    const protocols::PressureSolveTotals& ps = r.summary.pressureSolve;
+    std::string region;
+    const double worst = worstRegionDifference(r.summary.coverage, ref.summary.coverage, region);
+    const double whole = r.summary.coverage.regions[0] - ref.summary.coverage.regions[0];
+    csv << r.spacing * 1e3 << ',' << r.tolerance << ',' << r.particles << ',' << r.summary.steps << ','
+        << r.summary.wallSeconds << ',' << ps.meanIterations() << ',' << ps.stepsAtIterationCap << ','
+        << ps.meanDensityError() << ',' << ps.maxStepDensityError << ',' << r.summary.coverage.regions[0]
+        << ',' << whole << ',' << worst << ",\"" << region << "\"," << threads << '\n';
+    std::snprintf(line, sizeof line,
+                  "| %g | %.3g %% | %ld | %ld | %.1f | %.1f | %.0f %% | %.3g %% (%.3g %%) | %.1f %% | %+.1f | "
+                  "%.1f (%s) |\n",
+                  r.spacing * 1e3, 100 * r.tolerance, r.particles, r.summary.steps, r.summary.wallSeconds,
+                  ps.meanIterations(), 100 * ps.capFraction(), 100 * ps.meanDensityError(),
+                  100 * ps.maxStepDensityError, 100 * r.summary.coverage.regions[0], 100 * whole, 100 * worst,
+                  region.c_str());
+    md << line;
+  }
+  std::printf("wrote %s and %s\n", csvPath.string().c_str(), mdPath.string().c_str());
+}
+
+}  // namespace
+
+int runBenchAccuracy(Args args) {
+  std::string file, out = "bench_accuracy";
+  std::vector<double> tolerances{5e-3, 1e-3, 1e-4}, spacings;
+  int threads = 0;
+  try {
+    for (std::size_t k = 0; k < args.size(); ++k) {
+      const std::string_view flag = args[k];
+      if (flag == "--help" || flag == "-h") {
+        std::fputs(kUsage, stdout);
+        return 0;
+      }
+      if (!flag.starts_with("-") && file.empty()) {
+        file = std::string(flag);
+        continue;
+      }
+      if (k + 1 >= args.size()) throw UsageError("option " + std::string(flag) + " needs a value");
+      const std::string value(args[++k]);
+      if (flag == "--tolerances") {
+        tolerances = parseList(value, "--tolerances", 1.0, 0.05);
+      } else if (flag == "--spacings") {
+        spacings = parseList(value, "--spacings", 1e-3, 5e-3);
+      } else if (flag == "--out") {
+        out = value;
+      } else if (flag == "--threads") {
+        threads = static_cast<int>(parsePositive(value, "--threads"));
+      } else {
+        throw UsageError("unknown option '" + std::string(flag) + "'");
+      }
+    }
+    if (file.empty()) throw UsageError("no protocol file given");
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "tamponade bench accuracy: %s\n\n%s", e.what(), kUsage);
+    return 2;
+  }
+#ifdef _OPENMP
+  if (threads > 0) omp_set_num_threads(threads);
+  threads = omp_get_max_threads();
+#else
+  threads = 1;
+#endif
+  try {
+    const protocols::Protocol protocol = protocols::parseProtocol(file);
+    if (spacings.empty()) spacings.push_back(protocol.accuracy.particleSpacing.value);
+    // Coarse to fine, loose to tight: the last run is the reference.
+    std::sort(spacings.begin(), spacings.end(), std::greater<>());
+    std::sort(tolerances.begin(), tolerances.end(), std::greater<>());
+    const std::filesystem::path dir(out);
+    std::filesystem::create_directories(dir / "runs");
+    std::vector<AccuracyRun> runs;
+    std::string solver;
+    const std::size_t total = spacings.size() * tolerances.size();
+    for (const double spacing : spacings) {
+      for (const double tolerance : tolerances) {
+        protocols::Protocol p = protocol;
+        p.accuracy.particleSpacing.value = spacing;
+        p.accuracy.solverTolerance.value = tolerance;
+        protocols::Scenario scenario = protocols::assembleScenario(p);
+        solver = scenario.pipelineOptions.solver;
+        AccuracyRun r;
+        r.spacing = spacing;
+        r.tolerance = tolerance;
+        for (const auto& phase : scenario.phases) r.particles += static_cast<long>(phase.count);
+        r.folder = (dir / "runs" / label(spacing, tolerance)).string();
+        std::filesystem::remove_all(r.folder);
+        std::filesystem::create_directories(r.folder);
+        std::fprintf(stderr, "bench accuracy %zu/%zu: d = %g mm, tolerance %g, %ld fluid particles ...\n",
+                     runs.size() + 1, total, spacing * 1e3, tolerance, r.particles);
+        protocols::RunOptions options;
+        options.outputFolder = r.folder;
+        r.summary = protocols::runScenario(p, scenario, options);
+        std::fprintf(stderr, "  %ld steps in %.1f s, %.1f iterations per step, density error %.3g %%, "
+                     "coverage %s\n",
+                     r.summary.steps, r.summary.wallSeconds, r.summary.pressureSolve.meanIterations(),
+                     100 * r.summary.pressureSolve.meanDensityError(),
+                     protocols::formatPercent(r.summary.retinaCoverage).c_str());
+        runs.push_back(std::move(r));
+      }
+    }
+    if (solver != "dfsph" && solver != "indsph" && solver != "iisph")
+      std::fprintf(stderr, "note: solver %s is explicit: the tolerance changes nothing\n", solver.c_str());
+    writeTables(runs, dir, file, solver, threads);
+    std::ifstream md(dir / "accuracy.md");
+    std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
+    return 0;
+  } catch (const protocols::ProtocolError& e) {
+    for (const protocols::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.toString().c_str());
+    std::fprintf(stderr, "%zu problem%s found; nothing was run.\n", e.diagnostics().size(),
+                 e.diagnostics().size() == 1 ? "" : "s");
+    return 2;
+  }
+}
+
+}  // namespace tools
