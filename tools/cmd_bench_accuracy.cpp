@@ -203,7 +203,7 @@ int runBenchAccuracy(Args args) {
         runs.push_back(std::move(r));
       }
     }
-    if (solver != "dfsph" && solver != "indsph" && solver != "iisph")
+    if (!protocols::isImplicitSolver(solver))
       std::fprintf(stderr, "note: solver %s is explicit: the tolerance changes nothing\n", solver.c_str());
     writeTables(runs, dir, file, solver, threads);
     std::ifstream md(dir / "accuracy.md");

@@ -74,8 +74,13 @@ int runPlan(Args args) {
     std::printf("cavity: %s mL, wall area %s cm^2\n",
                 protocols::formatNumber(scenario.cavityVolume * 1e6, 4).c_str(),
                 protocols::formatNumber(scenario.cavityArea * 1e4, 4).c_str());
-    std::printf("accuracy: %s, particle spacing %s mm\n\n", scenario.accuracy.preset.c_str(),
-                protocols::formatNumber(scenario.accuracy.particleSpacing * 1e3, 3).c_str());
+    std::printf("accuracy: %s, particle spacing %s mm, solver tolerance %s %% (%s)\n\n",
+                scenario.accuracy.preset.c_str(),
+                protocols::formatNumber(scenario.accuracy.particleSpacing * 1e3, 3).c_str(),
+                protocols::formatNumber(scenario.accuracy.solverTolerance * 100, 3).c_str(),
+                protocols::isImplicitSolver(scenario.pipelineOptions.solver)
+                    ? "mean density error where the pressure solve stops"
+                    : "not used by the explicit solver");
     std::printf("particles per material:\n");
     for (const protocols::FluidPhase& ph : scenario.phases)
       std::printf("  %-20s %9zu  (%s mL, %s kg each)\n", ph.material.c_str(), ph.count,

@@ -186,7 +186,7 @@ const ParameterSpec kParameters[] = {
    .doc = "Particle spacing."},
   {.key = "accuracy.solver_tolerance", .kind = K::kQuantity, .dimension = D::kFraction, .min = 0, .max = 0.05,
    .minInclusive = false, .defaultText = "preset", .example = "\"0.1 %\"",
-   .doc = "Relative density error at which the DFSPH pressure solve stops (INDSPH and IISPH stop at their own 1e-4; the explicit solvers have none)."},
+   .doc = "Mean relative density error at which the implicit pressure solve (INDSPH, DFSPH, IISPH) stops, within its 100-iteration cap; the report states what it reached. The explicit solvers have none. `tamponade bench accuracy` measures its cost and effect."},
   {.key = "accuracy.min_time_step", .kind = K::kQuantity, .dimension = D::kDuration, .displayUnit = "s",
    .min = 0, .max = 1, .minInclusive = false, .defaultText = "preset", .example = "\"1e-7 s\"",
    .doc = "Smallest time step before the run stops as unstable."},

@@ -154,9 +154,11 @@ struct AccuracySpec {
   Located<WallModelName> wallModel;          // not part of the presets
 };
 
-// Provisional preset values, to be recalibrated against the engine's accuracy study (issue 5
-// `tamponade plan`). Spacings give ~1e4 / 4e4 / 2e5 fluid particles in a 5 mL cavity; the
-// tolerances stay well below the 3 % oil/aqueous density difference (issue 6).
+// Preset values. Spacings give ~1e4 / 4e4 / 2e5 fluid particles in a 5 mL cavity; the
+// tolerances (mean density error where every implicit pressure solve stops) stay well below the
+// 3 % oil/aqueous density difference (issue 6). Measured on the example eyes (docs/benchmarks.md,
+// `tamponade bench accuracy`): 0.5 % runs 3.6-3.9x faster than 0.01 % and moves the whole-retina
+// coverage by one point; 0.1 % by 0.5.
 struct AccuracyPresetValues {
   std::string_view name;
   double particleSpacing;  // [m]

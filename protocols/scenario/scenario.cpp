@@ -340,6 +340,10 @@ double Scenario::totalDuration() const {
   return t;
 }
 
+bool isImplicitSolver(const std::string& solver) {
+  return solver == "dfsph" || solver == "indsph" || solver == "iisph";
+}
+
 Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   Scenario s;
   s.title = p.title ? p.title->value : p.file.filename().string();

@@ -169,6 +169,10 @@ struct Scenario {
 // outputs.fields name that is not a particle field of the assembled pipeline (with "did you mean").
 Scenario assembleScenario(const Protocol& protocol, const ScenarioOptions& options = {});
 
+// Whether the named pressure solver iterates to accuracy.solver_tolerance (DFSPH, INDSPH, IISPH);
+// the explicit solvers (WCSPH, number_density) have no solve to stop.
+bool isImplicitSolver(const std::string& solver);
+
 // Contact angles through the tamponade [deg] at which the wall-wetting model holds the requested
 // angle within 5 deg on a flat wall of layered wall particles (docs/interface.md, validation 3:
 // tests at 30, 60, 90 and 120). The library's oils (18 deg through the aqueous, 162 through the

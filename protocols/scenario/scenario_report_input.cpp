@@ -12,7 +12,7 @@ namespace {
 // What accuracy.solver_tolerance does under the scene's solver: the implicit solves stop at it
 // (scenario.cpp), the explicit solvers have no solve to stop.
 std::string solverToleranceMeaning(const std::string& solver) {
-  if (solver == "dfsph" || solver == "indsph" || solver == "iisph")
+  if (isImplicitSolver(solver))
     return "mean relative density error at which the " + solver +
            " pressure solve stops (or at its 100-iteration cap; what it reached: 'pressure solve "
            "(achieved)')";

@@ -244,14 +244,16 @@ TEST_CASE("tamponade plan: tiny protocol prints counts, stages, memory and estim
   const CommandResult r = runTamponade("plan '" + (kProtocols / "tiny.toml").string() + "'", dir);
   INFO(r.output);
   CHECK(r.exitCode == 0);
-  for (const char* text : {"particles per material:", "aqueous", "silicone_oil_1000", "wall",
-                           "pipeline (in execution order):", "stage decisions:", "memory:",
-                           "cost model: calibrated by 5 steps", "estimated run time", "draft",
-                           "standard", "fine",
-                           // issue 6 exposure: the library's sigma and contact angle, the stages'
-                           // own time-step limits
-                           "interfacial tension 40 mN/m", "18.2 deg through the aqueous",
-                           "time-step limits of the stages at the start: interfacial_tension"})
+  for (const char* text :
+       {"particles per material:", "aqueous", "silicone_oil_1000", "wall",
+        "pipeline (in execution order):", "stage decisions:", "memory:",
+        "cost model: calibrated by 5 steps", "estimated run time", "draft", "standard", "fine",
+        // issue 6 exposure: the library's sigma and contact angle, the stages'
+        // own time-step limits
+        "interfacial tension 40 mN/m", "18.2 deg through the aqueous",
+        "time-step limits of the stages at the start: interfacial_tension",
+        // the draft preset's tolerance, which the INDSPH solve stops at
+        "solver tolerance 0.5 % (mean density error where the pressure solve stops)"})
     CHECK(r.output.find(text) != std::string::npos);
   // The library's own numbers match what is printed.
   Scenario s = assembleScenario(parseProtocol((kProtocols / "tiny.toml").string()));

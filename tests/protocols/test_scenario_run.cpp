@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "protocols/io/frame_reader.h"
 #include "sim/core/particle_set.h"
@@ -83,6 +85,13 @@ constexpr const char* kIndsphProtocol =
     "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n"
     "[outputs]\nframe_interval = \"10 ms\"\n";
 
+// The "pressure_solve" object of a summary.json (one line), or "" when it has none.
+std::string pressureSolveJson(const std::string& json) {
+  const std::size_t at = json.find("\"pressure_solve\"");
+  if (at == std::string::npos) return "";
+  return json.substr(at, json.find('\n', at) - at);
+}
+
 }  // namespace
 
 TEST_CASE("tamponade run: a short protocol writes frames, series and a well-formed report",
@@ -103,6 +112,9 @@ TEST_CASE("tamponade run: a short protocol writes frames, series and a well-form
   // The report states the interface physics used (issue 6): sigma and the contact angle.
   CHECK(html.find("Interfacial tension against aqueous 40 mN/m") != std::string::npos);
   CHECK(html.find("18.2\u00b0 through the aqueous") != std::string::npos);
+  // WCSPH has no pressure solve to report on.
+  CHECK(pressureSolveJson(readText(dir / "a" / "summary.json")).empty());
+  CHECK(html.find("pressure solve (achieved)") == std::string::npos);
   // Frames at 0, every 2 ms (the first step past each multiple) and the end: 5 rows.
   const std::string csv = readText(dir / "a" / "coverage.csv");
   CHECK(std::count(csv.begin(), csv.end(), '\n') == 1 + 5);
@@ -188,5 +200,64 @@ TEST_CASE("tamponade run: an INDSPH run stopped twice and resumed ends bit-ident
   REQUIRE(last.exitCode == 0);
   CHECK(readText(dir / "s" / "coverage.csv") == readText(dir / "a" / "coverage.csv"));
   checkSameFrames(dir / "a" / "frames.h5", dir / "s" / "frames.h5");
+  // What the pressure solve achieved is carried over both resumes (checkpoint counters) and
+  // rebuilt by `tamponade report` from the frames' series: the same totals, digit for digit.
+  const std::string solve = pressureSolveJson(readText(dir / "a" / "summary.json"));
+  INFO(solve);
+  CHECK(solve.find("\"steps\": 33}") != std::string::npos);
+  CHECK(pressureSolveJson(readText(dir / "s" / "summary.json")) == solve);
+  fs::remove(dir / "a" / "summary.json");
+  REQUIRE(runTamponade("report a", dir).exitCode == 0);
+  CHECK(pressureSolveJson(readText(dir / "a" / "summary.json")) == solve);
+  fs::remove_all(dir);
+}
+
+TEST_CASE(
+    "tamponade bench accuracy: a table of tolerance against cost and coverage, bad usage exits 2",
+    "[unit][scenario][cli]") {
+  const fs::path dir = fs::temp_directory_path() / "tamponade_bench_accuracy_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "ind.toml") << kIndsphProtocol;
+  const CommandResult r =
+      runTamponade("bench accuracy ind.toml --tolerances 0.001,0.005 --out acc --threads 1", dir);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  const std::string csv = readText(dir / "acc" / "accuracy.csv");
+  INFO(csv);
+  // Header and one row per tolerance, loose first; the last (tightest) run is the reference.
+  std::vector<std::vector<std::string>> rows;
+  std::istringstream lines(csv);
+  for (std::string line; std::getline(lines, line);) {
+    std::vector<std::string> cells;
+    std::istringstream cellStream(line);
+    for (std::string cell; std::getline(cellStream, cell, ',');) cells.push_back(cell);
+    rows.push_back(cells);
+  }
+  REQUIRE(rows.size() == 3);
+  CHECK(rows[0][1] == "solver_tolerance");
+  CHECK(std::stod(rows[1][1]) == 0.005);
+  CHECK(std::stod(rows[2][1]) == 0.001);
+  CHECK(std::stod(rows[2][10]) == 0.0);  // whole_retina_diff of the reference itself
+  // The looser solve takes fewer iterations and stops at a larger mean density error, each at
+  // or below its tolerance (no step of this short run reaches the cap).
+  CHECK(std::stod(rows[1][5]) < std::stod(rows[2][5]));
+  CHECK(std::stod(rows[1][7]) > std::stod(rows[2][7]));
+  CHECK(std::stod(rows[1][7]) <= 0.005);
+  CHECK(std::stod(rows[2][7]) <= 0.001);
+  CHECK(fs::exists(dir / "acc" / "accuracy.md"));
+  CHECK(fs::exists(dir / "acc" / "runs" / "d1.5mm_tol0.005" / "report.html"));
+
+  // Bad usage and a bad protocol: exit 2, the reason, nothing written.
+  const CommandResult tooLoose =
+      runTamponade("bench accuracy ind.toml --tolerances 0.2 --out x", dir);
+  CHECK(tooLoose.exitCode == 2);
+  CHECK(tooLoose.output.find("--tolerances '0.2' is above its largest value") != std::string::npos);
+  CHECK(runTamponade("bench accuracy --out x", dir).exitCode == 2);
+  std::ofstream(dir / "bad.toml") << "format_version = 1\n[eye]\nkind = \"emetropic\"\n";
+  const CommandResult bad = runTamponade("bench accuracy bad.toml --out x", dir);
+  CHECK(bad.exitCode == 2);
+  CHECK(bad.output.find("bad.toml:3:") != std::string::npos);
+  CHECK_FALSE(fs::exists(dir / "x"));
   fs::remove_all(dir);
 }
