@@ -25,6 +25,7 @@
 #include "sim/core/error.h"
 #include "tools/cli_args.h"
 #include "tools/commands.h"
+#include "tools/protocol_error_print.h"
 
 namespace tools {
 namespace {
@@ -210,10 +211,7 @@ int runBenchAccuracy(Args args) {
     std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
     return 0;
   } catch (const protocols::ProtocolError& e) {
-    for (const protocols::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.toString().c_str());
-    std::fprintf(stderr, "%zu problem%s found; nothing was run.\n", e.diagnostics().size(),
-                 e.diagnostics().size() == 1 ? "" : "s");
-    return 2;
+    return printProtocolError(e);
   }
 }
 

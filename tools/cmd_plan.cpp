@@ -12,6 +12,7 @@
 #include "sim/core/error.h"
 #include "tools/accuracy_option.h"
 #include "tools/commands.h"
+#include "tools/protocol_error_print.h"
 
 namespace tools {
 namespace {
@@ -31,13 +32,6 @@ std::string duration(double seconds) {
   if (seconds < 120) return protocols::formatNumber(seconds, 3) + " s";
   if (seconds < 7200) return protocols::formatNumber(seconds / 60, 3) + " min";
   return protocols::formatNumber(seconds / 3600, 3) + " h";
-}
-
-int printProtocolError(const protocols::ProtocolError& e) {
-  for (const protocols::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.toString().c_str());
-  std::fprintf(stderr, "%zu problem%s found; nothing was run.\n", e.diagnostics().size(),
-               e.diagnostics().size() == 1 ? "" : "s");
-  return 2;
 }
 
 }  // namespace

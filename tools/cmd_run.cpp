@@ -22,6 +22,7 @@
 #include "protocols/scenario/run_scenario.h"
 #include "tools/accuracy_option.h"
 #include "tools/commands.h"
+#include "tools/protocol_error_print.h"
 
 namespace tools {
 namespace {
@@ -165,10 +166,7 @@ int runRun(Args args) {
                 protocols::formatPercent(summary.retinaCoverage).c_str(), folder.string().c_str());
     return 0;
   } catch (const protocols::ProtocolError& e) {
-    for (const protocols::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.toString().c_str());
-    std::fprintf(stderr, "%zu problem%s found; nothing was run.\n", e.diagnostics().size(),
-                 e.diagnostics().size() == 1 ? "" : "s");
-    return 2;
+    return printProtocolError(e);
   }
 }
 

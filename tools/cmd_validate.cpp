@@ -7,6 +7,7 @@
 #include "protocols/format/parameter_table.h"
 #include "protocols/format/parse_protocol.h"
 #include "tools/commands.h"
+#include "tools/protocol_error_print.h"
 
 namespace tools {
 
@@ -42,11 +43,7 @@ int runValidate(Args args) {
     std::fputs(protocols::describeProtocol(protocol).c_str(), stdout);
     return 0;
   } catch (const protocols::ProtocolError& e) {
-    for (const protocols::Diagnostic& d : e.diagnostics())
-      std::fprintf(stderr, "%s\n", d.toString().c_str());
-    std::fprintf(stderr, "%zu problem%s found; nothing was run.\n", e.diagnostics().size(),
-                 e.diagnostics().size() == 1 ? "" : "s");
-    return 2;
+    return printProtocolError(e);
   }
 }
 
