@@ -31,14 +31,17 @@ constexpr std::array<double, 5> kGaussWeights = {0.5688888888888889, 0.478628670
 CavityShape::CavityShape(const CavityGeometry& g) : geometry_(g) {
   const double a = g.semiAxisHorizontal, b = g.semiAxisVertical, c = g.semiAxisAxial;
   require(a > 0.0 && b > 0.0 && c > 0.0 && std::isfinite(a + b + c),
-          "cavity: ellipsoid semi-axes must be positive and finite (got " + mmText(a) + ", " + mmText(b) +
-              ", " + mmText(c) + ")");
+          "cavity: ellipsoid semi-axes must be positive and finite (got " + mmText(a) + ", " +
+              mmText(b) + ", " + mmText(c) + ")");
   require(g.capSag >= 0.0, "cavity: cap sag must be >= 0 (got " + mmText(g.capSag) + ")");
   rimZ_ = c + g.apexDepth - g.capPlaneDepth;
   require(rimZ_ > -0.5 * c && rimZ_ < 0.95 * c,
-          "cavity: the cap plane (" + mmText(g.capPlaneDepth) + " behind the corneal apex) must cut "
-          "the ellipsoid between its anterior tip (" + mmText(g.apexDepth) + ") and a quarter of "
-          "its axial length behind the centre; move the lens/IOL plane");
+          "cavity: the cap plane (" + mmText(g.capPlaneDepth) +
+              " behind the corneal apex) must cut "
+              "the ellipsoid between its anterior tip (" +
+              mmText(g.apexDepth) +
+              ") and a quarter of "
+              "its axial length behind the centre; move the lens/IOL plane");
   rimTheta_ = std::acos(-rimZ_ / c);
   const double rimA = a * std::sin(rimTheta_), rimB = b * std::sin(rimTheta_);
   require(g.capSag < 0.5 * (rimZ_ + c),
@@ -50,7 +53,8 @@ CavityShape::CavityShape(const CavityGeometry& g) : geometry_(g) {
     bumpRadius_ = 0.5 * g.staphylomaWidth;
     require(bumpRadius_ <= 0.7 * std::min(a, b),
             "cavity: staphyloma width " + mmText(g.staphylomaWidth) + " is too wide; at most " +
-                mmText(1.4 * std::min(a, b)) + " (70 % of the eye's transverse diameter) so that it "
+                mmText(1.4 * std::min(a, b)) +
+                " (70 % of the eye's transverse diameter) so that it "
                 "stays on the posterior wall");
     require(bumpRadius_ >= 1.0 * kMm, "cavity: staphyloma width " + mmText(g.staphylomaWidth) +
                                           " is too narrow (at least 2 mm)");
@@ -58,7 +62,8 @@ CavityShape::CavityShape(const CavityGeometry& g) : geometry_(g) {
     const double concaveRadius = 2.0 * bumpRadius_ * bumpRadius_ / (kPi * kPi * g.staphylomaDepth);
     require(concaveRadius >= kMinimumConcaveRadius,
             "cavity: staphyloma depth " + mmText(g.staphylomaDepth) + " over width " +
-                mmText(g.staphylomaWidth) + " folds its edge (concave radius " + mmText(concaveRadius) +
+                mmText(g.staphylomaWidth) + " folds its edge (concave radius " +
+                mmText(concaveRadius) +
                 " < 1.5 mm, the sclera could not be offset); use depth <= " +
                 mmText(2.0 * bumpRadius_ * bumpRadius_ / (kPi * kPi * kMinimumConcaveRadius)) +
                 " or a wider staphyloma");
@@ -83,12 +88,12 @@ CavityShape::CavityShape(const CavityGeometry& g) : geometry_(g) {
       const double bumpHeight = bump(rho);
       for (int k = 0; k < nPsi; ++k) {
         const double psi = (k + 0.5) * 2.0 * kPi / nPsi;
-        const double w = 1.0 - rho * rho * (std::pow(std::cos(psi) / a, 2) +
-                                            std::pow(std::sin(psi) / b, 2));
+        const double w =
+            1.0 - rho * rho * (std::pow(std::cos(psi) / a, 2) + std::pow(std::sin(psi) / b, 2));
         const double zEllipsoid = -c * std::sqrt(w);
         // moment of the slab between zEllipsoid - bump and zEllipsoid
-        momentBump += (zEllipsoid * bumpHeight - 0.5 * bumpHeight * bumpHeight) * rho *
-                      (R / nRho) * (2.0 * kPi / nPsi);
+        momentBump += (zEllipsoid * bumpHeight - 0.5 * bumpHeight * bumpHeight) * rho * (R / nRho) *
+                      (2.0 * kPi / nPsi);
       }
     }
   }
@@ -199,8 +204,8 @@ double CavityShape::arcLength(double theta0, double theta1, double meridian) con
 WallCoordinate CavityShape::closestWallCoordinate(const Vec3& p) const {
   Vec3 local = p;
   local.z() += centroidZ_;
-  const double azimuth = std::hypot(local.x(), local.y()) > 0.0 ? std::atan2(local.y(), local.x())
-                                                                : 0.0;
+  const double azimuth =
+      std::hypot(local.x(), local.y()) > 0.0 ? std::atan2(local.y(), local.x()) : 0.0;
   const double meridian = meridianOfAzimuth(azimuth);
   // localWall() with the meridian's trigonometry hoisted out: this runs ~90 times per query.
   const double ax = geometry_.semiAxisHorizontal * std::cos(meridian);
@@ -249,8 +254,7 @@ CavityProjection CavityShape::project(const Vec3& p, const Vec3* normal) const {
   // Beyond the rim ellipse the nearest cap point is on the rim, which the wall also contains.
   if (u2 > 1.0) return result;
   // The vertical distance to the cap graph bounds the true distance from above.
-  const double capDistance =
-      std::abs(p.z() + centroidZ_ - (rimZ_ - geometry_.capSag * (1.0 - u2)));
+  const double capDistance = std::abs(p.z() + centroidZ_ - (rimZ_ - geometry_.capSag * (1.0 - u2)));
   // Within 1 um of both parts (the rim) the normal decides; without one the wall wins, so rim
   // vertices get the wall's sclera thickness and clinical position.
   constexpr double kTie = 1e-6;  // [m]
@@ -301,9 +305,8 @@ meshing::TriangleMesh CavityShape::triangulate(int segments) const {
   const int n = segments;
   int rings = std::max(4, static_cast<int>(std::ceil(n * rimTheta_ / (2.0 * kPi))));
   if (geometry_.staphylomaDepth > 0.0) {
-    const double bumpTheta =
-        std::asin(std::min(1.0, bumpRadius_ / std::max(geometry_.semiAxisHorizontal,
-                                                        geometry_.semiAxisVertical)));
+    const double bumpTheta = std::asin(std::min(
+        1.0, bumpRadius_ / std::max(geometry_.semiAxisHorizontal, geometry_.semiAxisVertical)));
     rings = std::max(rings, static_cast<int>(std::ceil(6.0 * rimTheta_ / bumpTheta)));
   }
   const int capRings = std::max(2, static_cast<int>(std::ceil(n / (2.0 * kPi))));

@@ -33,11 +33,11 @@ struct CavityGeometry {
   double semiAxisHorizontal = 0.0;  // [m] a, along x
   double semiAxisVertical = 0.0;    // [m] b, along y
   double semiAxisAxial = 0.0;       // [m] c, along z
-  double apexDepth = 0.0;        // [m] corneal apex to the anterior apex of the base ellipsoid
-  double capPlaneDepth = 0.0;    // [m] corneal apex to the plane of the cap rim
-  double capSag = 0.0;           // [m] >= 0, how far the cap centre dents into the cavity
-  double staphylomaDepth = 0.0;  // [m] >= 0, 0 = no staphyloma
-  double staphylomaWidth = 0.0;  // [m] base diameter of the staphyloma
+  double apexDepth = 0.0;           // [m] corneal apex to the anterior apex of the base ellipsoid
+  double capPlaneDepth = 0.0;       // [m] corneal apex to the plane of the cap rim
+  double capSag = 0.0;              // [m] >= 0, how far the cap centre dents into the cavity
+  double staphylomaDepth = 0.0;     // [m] >= 0, 0 = no staphyloma
+  double staphylomaWidth = 0.0;     // [m] base diameter of the staphyloma
 };
 
 // A point of the wall in surface parameters.
@@ -99,13 +99,13 @@ class CavityShape {
 
  private:
   Vec3 localWall(double theta, double meridian) const;
-  double bump(double rho) const;              // depth * g(rho) [m]
-  double bumpSlopeOverRho(double rho) const;  // depth * g'(rho) / rho [1/m]
+  double bump(double rho) const;                              // depth * g(rho) [m]
+  double bumpSlopeOverRho(double rho) const;                  // depth * g'(rho) / rho [1/m]
   double meridianSpeed(double theta, double meridian) const;  // |dP/dtheta| [m/rad]
 
   CavityGeometry geometry_;
-  double rimZ_ = 0.0;      // [m] local z of the rim plane
-  double rimTheta_ = 0.0;  // [rad]
+  double rimZ_ = 0.0;        // [m] local z of the rim plane
+  double rimTheta_ = 0.0;    // [rad]
   double bumpRadius_ = 0.0;  // [m] R
   double volume_ = 0.0;      // [m^3]
   double centroidZ_ = 0.0;   // [m] local z of the eye-frame origin

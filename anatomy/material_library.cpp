@@ -31,7 +31,8 @@ const std::array<PropertySpec, 6> kProperties = {{
 
 std::string_view trim(std::string_view s) {
   while (!s.empty() && (s.front() == ' ' || s.front() == '\t')) s.remove_prefix(1);
-  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r')) s.remove_suffix(1);
+  while (!s.empty() && (s.back() == ' ' || s.back() == '\t' || s.back() == '\r'))
+    s.remove_suffix(1);
   return s;
 }
 
@@ -67,19 +68,24 @@ MaterialLibrary MaterialLibrary::parseCsv(std::string_view text, const std::stri
     for (size_t k = 0; k < 6; ++k) {
       const size_t comma = rest.find(',');
       require(comma != std::string_view::npos,
-              where + "expected 7 columns (material,kind,property,value,unit,flag,source), "
-                      "found " + std::to_string(k + 1));
+              where +
+                  "expected 7 columns (material,kind,property,value,unit,flag,source), "
+                  "found " +
+                  std::to_string(k + 1));
       column[k] = trim(rest.substr(0, comma));
       rest = rest.substr(comma + 1);
     }
     column[6] = trim(rest);
     const std::string name(column[0]);
-    require(isValidName(name), where + "material name '" + name +
-                                   "' must be lower_snake_case (a-z, 0-9, _)");
+    require(isValidName(name),
+            where + "material name '" + name + "' must be lower_snake_case (a-z, 0-9, _)");
     MaterialKind kind;
-    if (column[1] == "fluid") kind = MaterialKind::kFluid;
-    else if (column[1] == "tissue") kind = MaterialKind::kTissue;
-    else throw AnatomyError(where + "kind '" + std::string(column[1]) + "' must be fluid or tissue");
+    if (column[1] == "fluid")
+      kind = MaterialKind::kFluid;
+    else if (column[1] == "tissue")
+      kind = MaterialKind::kTissue;
+    else
+      throw AnatomyError(where + "kind '" + std::string(column[1]) + "' must be fluid or tissue");
 
     const PropertySpec* spec = nullptr;
     for (const auto& p : kProperties)
@@ -102,10 +108,14 @@ MaterialLibrary MaterialLibrary::parseCsv(std::string_view text, const std::stri
                 " is out of the physical range");
     SourcedValue sourced;
     sourced.value = value;
-    if (column[5] == "S") sourced.flag = Provenance::kSourced;
-    else if (column[5] == "D") sourced.flag = Provenance::kDerived;
-    else if (column[5] == "U") sourced.flag = Provenance::kUnsourced;
-    else throw AnatomyError(where + "flag '" + std::string(column[5]) + "' must be S, D or U");
+    if (column[5] == "S")
+      sourced.flag = Provenance::kSourced;
+    else if (column[5] == "D")
+      sourced.flag = Provenance::kDerived;
+    else if (column[5] == "U")
+      sourced.flag = Provenance::kUnsourced;
+    else
+      throw AnatomyError(where + "flag '" + std::string(column[5]) + "' must be S, D or U");
     require(!column[6].empty(), where + "every value needs a source (or a reason it has none)");
     sourced.source = std::string(column[6]);
 
@@ -122,8 +132,8 @@ MaterialLibrary MaterialLibrary::parseCsv(std::string_view text, const std::stri
                                       (record->kind == MaterialKind::kFluid ? "fluid" : "tissue") +
                                       " earlier");
     auto& slot = (*record).*(spec->field);
-    require(!slot.has_value(), where + "material '" + name + "' gives " +
-                                   std::string(spec->name) + " twice");
+    require(!slot.has_value(),
+            where + "material '" + name + "' gives " + std::string(spec->name) + " twice");
     slot = std::move(sourced);
   }
 

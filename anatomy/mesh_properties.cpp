@@ -25,8 +25,8 @@ MeshProperties measureMesh(const meshing::TriangleMesh& mesh) {
   const auto vertexCount = static_cast<long long>(mesh.vertices.size());
   for (const auto& f : mesh.faces) {
     bool valid = f[0] != f[1] && f[1] != f[2] && f[0] != f[2];
-    for (int k = 0; k < 3; ++k) valid = valid && f[static_cast<size_t>(k)] >= 0 &&
-                                        f[static_cast<size_t>(k)] < vertexCount;
+    for (int k = 0; k < 3; ++k)
+      valid = valid && f[static_cast<size_t>(k)] >= 0 && f[static_cast<size_t>(k)] < vertexCount;
     if (!valid) {
       ++result.degenerateFaces;
       continue;
@@ -47,9 +47,12 @@ MeshProperties measureMesh(const meshing::TriangleMesh& mesh) {
     }
   }
   for (const auto& [key, use] : edges) {
-    if (use.faces == 1) ++result.boundaryEdges;
-    else if (use.faces > 2) ++result.nonManifoldEdges;
-    else if (use.direction != 0) ++result.misorientedEdges;
+    if (use.faces == 1)
+      ++result.boundaryEdges;
+    else if (use.faces > 2)
+      ++result.nonManifoldEdges;
+    else if (use.direction != 0)
+      ++result.misorientedEdges;
   }
   return result;
 }

@@ -14,10 +14,10 @@ struct MeshProperties {
   double area = 0.0;          // [unit^2]
   meshing::Vec3 boundsMin = meshing::Vec3::Zero();
   meshing::Vec3 boundsMax = meshing::Vec3::Zero();
-  std::size_t boundaryEdges = 0;       // edges used by one face only (holes)
-  std::size_t nonManifoldEdges = 0;    // edges used by more than two faces
-  std::size_t misorientedEdges = 0;    // edges whose two faces traverse them the same way
-  std::size_t degenerateFaces = 0;     // faces repeating a vertex index or out-of-range indices
+  std::size_t boundaryEdges = 0;     // edges used by one face only (holes)
+  std::size_t nonManifoldEdges = 0;  // edges used by more than two faces
+  std::size_t misorientedEdges = 0;  // edges whose two faces traverse them the same way
+  std::size_t degenerateFaces = 0;   // faces repeating a vertex index or out-of-range indices
 
   // Every edge shared by exactly two faces that traverse it in opposite directions.
   bool isWatertight() const {

@@ -16,9 +16,9 @@
 namespace anatomy {
 
 struct OrbitalFatParameters {
-  double thickness = 6.0e-3;                        // [m] 0.5..30 mm [U]
-  double polarExtent = std::numbers::pi / 3.0;      // [rad] from the posterior pole, 10..90 deg [U]
-  int resolution = 64;                              // segments around the axis
+  double thickness = 6.0e-3;                    // [m] 0.5..30 mm [U]
+  double polarExtent = std::numbers::pi / 3.0;  // [rad] from the posterior pole, 10..90 deg [U]
+  int resolution = 64;                          // segments around the axis
 };
 
 struct OrbitalFat {

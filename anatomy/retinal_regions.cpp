@@ -32,18 +32,25 @@ RegionSet regionsAt(const Eye& eye, const Vec3& point, const Vec3* normal) {
   if (std::hypot(q.x(), q.y()) > 1e-9) {
     const double hour = clockHourOf(q);
     const bool rightEye = eye.laterality() == Laterality::kRight;
-    if (inSector(hour, 12.0)) regions |= kSuperior;
-    else if (inSector(hour, 6.0)) regions |= kInferior;
-    else if (inSector(hour, 3.0)) regions |= rightEye ? kNasal : kTemporal;
-    else regions |= rightEye ? kTemporal : kNasal;
+    if (inSector(hour, 12.0))
+      regions |= kSuperior;
+    else if (inSector(hour, 6.0))
+      regions |= kInferior;
+    else if (inSector(hour, 3.0))
+      regions |= rightEye ? kNasal : kTemporal;
+    else
+      regions |= rightEye ? kTemporal : kNasal;
   }
   const double toFovea = (q - eye.fovea()).norm();
   if (toFovea <= 0.5 * l.maculaDiameter) regions |= kMacula;
   if ((q - eye.opticDisc()).norm() <= 0.5 * l.opticDiscDiameter) regions |= kOpticDisc;
   const double equatorTheta = std::min(0.5 * std::numbers::pi, cavity.rimTheta());
-  if (toFovea <= l.posteriorPoleRadius) regions |= kPosteriorPole;
-  else if (w.theta < equatorTheta) regions |= kMidPeriphery;
-  else regions |= kPeriphery;
+  if (toFovea <= l.posteriorPoleRadius)
+    regions |= kPosteriorPole;
+  else if (w.theta < equatorTheta)
+    regions |= kMidPeriphery;
+  else
+    regions |= kPeriphery;
   return regions;
 }
 
@@ -60,9 +67,15 @@ std::vector<RegionSet> assignRegions(const Eye& eye, const std::vector<Vec3>& po
 
 std::string describeRegions(RegionSet regions) {
   static constexpr std::array<std::pair<RegionSet, const char*>, 10> kNames = {{
-      {kRetina, "retina"}, {kSuperior, "superior"}, {kInferior, "inferior"}, {kNasal, "nasal"},
-      {kTemporal, "temporal"}, {kMacula, "macula"}, {kOpticDisc, "optic-disc"},
-      {kPosteriorPole, "posterior-pole"}, {kMidPeriphery, "mid-periphery"},
+      {kRetina, "retina"},
+      {kSuperior, "superior"},
+      {kInferior, "inferior"},
+      {kNasal, "nasal"},
+      {kTemporal, "temporal"},
+      {kMacula, "macula"},
+      {kOpticDisc, "optic-disc"},
+      {kPosteriorPole, "posterior-pole"},
+      {kMidPeriphery, "mid-periphery"},
       {kPeriphery, "periphery"},
   }};
   std::string text;

@@ -11,18 +11,18 @@ namespace {
 
 constexpr double kMm = 1e-3;  // [m]
 // Atchison posterior-chamber ellipsoid (gkaModelEye modelEyeParameters.m; see the header).
-constexpr double kAxialRadius0 = 10.176e-3;       // [m]
-constexpr double kHorizontalRadius0 = 11.456e-3;  // [m]
-constexpr double kVerticalRadius0 = 11.377e-3;    // [m]
-constexpr double kAxialRadiusSlope = -0.1495e-3;       // [m/D]
-constexpr double kHorizontalRadiusSlope = -0.0393e-3;  // [m/D]
-constexpr double kVerticalRadiusSlope = -0.0864e-3;    // [m/D]
-constexpr double kEmmetropicAxialLength = 23.58e-3;    // [m] Atchison 2006
+constexpr double kAxialRadius0 = 10.176e-3;                                  // [m]
+constexpr double kHorizontalRadius0 = 11.456e-3;                             // [m]
+constexpr double kVerticalRadius0 = 11.377e-3;                               // [m]
+constexpr double kAxialRadiusSlope = -0.1495e-3;                             // [m/D]
+constexpr double kHorizontalRadiusSlope = -0.0393e-3;                        // [m/D]
+constexpr double kVerticalRadiusSlope = -0.0864e-3;                          // [m/D]
+constexpr double kEmmetropicAxialLength = 23.58e-3;                          // [m] Atchison 2006
 constexpr double kApexDepth = kEmmetropicAxialLength - 2.0 * kAxialRadius0;  // [m] 3.228 mm
 
 void requireRange(double value, double lo, double hi, const std::string& what) {
-  require(value >= lo && value <= hi, what + " " + mmText(value) + " is out of range: use " + mmText(lo) +
-                                          " .. " + mmText(hi));
+  require(value >= lo && value <= hi,
+          what + " " + mmText(value) + " is out of range: use " + mmText(lo) + " .. " + mmText(hi));
 }
 
 void validateAnterior(const AnteriorBoundary& a) {
@@ -82,9 +82,9 @@ CavityGeometry staphylomaGeometry(const StaphylomaCavityParameters& p) {
   requireRange(p.staphylomaDepth, 0.2 * kMm, 6.0 * kMm, "staphyloma depth");
   validateAnterior(p.anterior);
   const double baseAxialLength = p.axialLength - p.staphylomaDepth;
-  require(baseAxialLength >= 22.0 * kMm,
-          "staphyloma: axial length " + mmText(p.axialLength) + " minus depth " +
-              mmText(p.staphylomaDepth) + " leaves a globe shorter than 22 mm");
+  require(baseAxialLength >= 22.0 * kMm, "staphyloma: axial length " + mmText(p.axialLength) +
+                                             " minus depth " + mmText(p.staphylomaDepth) +
+                                             " leaves a globe shorter than 22 mm");
   CavityGeometry g =
       atchisonGeometry(refractionForAxialLength(baseAxialLength), kApexDepth, p.anterior);
   g.staphylomaDepth = p.staphylomaDepth;

@@ -49,22 +49,22 @@ struct MyopicCavityParameters {
 };
 
 struct StaphylomaCavityParameters {
-  double axialLength = 29.0e-3;       // [m] biometric, including the staphyloma; 24..36 mm
-  double staphylomaDepth = 2.0e-3;    // [m] 0.2..6 mm
-  double staphylomaWidth = 12.0e-3;   // [m] base diameter, 2 mm..70 % of the eye's width
+  double axialLength = 29.0e-3;      // [m] biometric, including the staphyloma; 24..36 mm
+  double staphylomaDepth = 2.0e-3;   // [m] 0.2..6 mm
+  double staphylomaWidth = 12.0e-3;  // [m] base diameter, 2 mm..70 % of the eye's width
   AnteriorBoundary anterior;
   int resolution = 96;
 };
 
 struct VitreousCavity {
-  std::string type;            // "emmetropic", "myopic", "staphyloma"
-  CavityShape shape;           // the analytic surface, eye frame
-  meshing::TriangleMesh mesh;  // closed, outward, eye frame [m]
-  double axialLength = 0.0;    // [m] corneal apex to posterior pole (analytic)
-  double axialDepth = 0.0;     // [m] cavity length on the axis, cap to posterior pole
-  double volume = 0.0;         // [m^3] of the mesh
-  double analyticVolume = 0.0; // [m^3] of the defining surface
-  double area = 0.0;           // [m^2] of the mesh
+  std::string type;             // "emmetropic", "myopic", "staphyloma"
+  CavityShape shape;            // the analytic surface, eye frame
+  meshing::TriangleMesh mesh;   // closed, outward, eye frame [m]
+  double axialLength = 0.0;     // [m] corneal apex to posterior pole (analytic)
+  double axialDepth = 0.0;      // [m] cavity length on the axis, cap to posterior pole
+  double volume = 0.0;          // [m^3] of the mesh
+  double analyticVolume = 0.0;  // [m^3] of the defining surface
+  double area = 0.0;            // [m^2] of the mesh
 };
 
 // Spherical refraction [D] that the Atchison fit associates with an axial length [m].

@@ -35,25 +35,32 @@ std::string faceList(const std::vector<int>& faces) {
   std::ostringstream s;
   for (size_t k = 0; k < unique.size() && k < kMaxListed; ++k) {
     s << (k ? ", " : "");
-    if (unique[k] < 0) s << "new";
-    else s << unique[k];
+    if (unique[k] < 0)
+      s << "new";
+    else
+      s << unique[k];
   }
   if (unique.size() > kMaxListed) s << ", ... (" << unique.size() << " in all)";
   return s.str();
 }
 
-std::string faceName(int f) { return f < 0 ? std::string("a hole-filling face") : "face " + std::to_string(f); }
+std::string faceName(int f) {
+  return f < 0 ? std::string("a hole-filling face") : "face " + std::to_string(f);
+}
 
 Vec3 centroid(const TriangleMesh& m, size_t f) {
   const Triangle& t = m.faces[f];
   return (m.vertices[static_cast<size_t>(t[0])] + m.vertices[static_cast<size_t>(t[1])] +
-          m.vertices[static_cast<size_t>(t[2])]) / 3.0;
+          m.vertices[static_cast<size_t>(t[2])]) /
+         3.0;
 }
 
 double faceArea(const TriangleMesh& m, size_t f) {
   const Triangle& t = m.faces[f];
   const Vec3& a = m.vertices[static_cast<size_t>(t[0])];
-  return 0.5 * (m.vertices[static_cast<size_t>(t[1])] - a).cross(m.vertices[static_cast<size_t>(t[2])] - a).norm();
+  return 0.5 * (m.vertices[static_cast<size_t>(t[1])] - a)
+                   .cross(m.vertices[static_cast<size_t>(t[2])] - a)
+                   .norm();
 }
 
 using EdgeKey = std::pair<int, int>;  // (smaller, larger) vertex index
@@ -69,7 +76,8 @@ std::map<EdgeKey, std::vector<EdgeUse>> edgeUses(const TriangleMesh& m) {
   std::map<EdgeKey, std::vector<EdgeUse>> uses;
   for (size_t f = 0; f < m.faces.size(); ++f)
     for (int k = 0; k < 3; ++k) {
-      const int a = m.faces[f][static_cast<size_t>(k)], b = m.faces[f][static_cast<size_t>((k + 1) % 3)];
+      const int a = m.faces[f][static_cast<size_t>(k)],
+                b = m.faces[f][static_cast<size_t>((k + 1) % 3)];
       uses[edgeKey(a, b)].push_back({static_cast<int>(f), a});
     }
   return uses;
@@ -79,7 +87,9 @@ struct UnionFind {
   std::vector<int> parent;
   explicit UnionFind(size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
   int find(int x) {
-    while (parent[static_cast<size_t>(x)] != x) x = parent[static_cast<size_t>(x)] = parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
+    while (parent[static_cast<size_t>(x)] != x)
+      x = parent[static_cast<size_t>(x)] =
+          parent[static_cast<size_t>(parent[static_cast<size_t>(x)])];
     return x;
   }
   void unite(int a, int b) { parent[static_cast<size_t>(find(a))] = find(b); }
@@ -116,7 +126,8 @@ void dropTrivialFaces(TriangleMesh& m, std::vector<int>& origin, MeshReport& rep
   }
   if (!repeated.empty())
     report.repairs.push_back("removed " + std::to_string(repeated.size()) +
-                             " degenerate faces that repeat a vertex (faces " + faceList(repeated) + ")");
+                             " degenerate faces that repeat a vertex (faces " + faceList(repeated) +
+                             ")");
   if (!duplicate.empty())
     report.repairs.push_back("removed " + std::to_string(duplicate.size()) +
                              " duplicate faces (faces " + faceList(duplicate) + ")");
@@ -130,7 +141,8 @@ bool checkManifold(const TriangleMesh& m, const std::vector<int>& origin,
     if (list.size() <= 2) continue;
     std::vector<int> faces;
     for (const EdgeUse& u : list) faces.push_back(origin[static_cast<size_t>(u.face)]);
-    const Vec3 mid = 0.5 * (m.vertices[static_cast<size_t>(edge.first)] + m.vertices[static_cast<size_t>(edge.second)]);
+    const Vec3 mid = 0.5 * (m.vertices[static_cast<size_t>(edge.first)] +
+                            m.vertices[static_cast<size_t>(edge.second)]);
     report.refusals.push_back("non-manifold edge shared by " + std::to_string(list.size()) +
                               " faces (faces " + faceList(faces) + ") at " + point(mid) +
                               "; separate the touching surfaces in the modelling tool");
@@ -153,7 +165,8 @@ bool checkManifold(const TriangleMesh& m, const std::vector<int>& origin,
           fans.unite(static_cast<int>(k), local.at(u.face));
       }
     int roots = 0;
-    for (size_t k = 0; k < around.size(); ++k) roots += fans.find(static_cast<int>(k)) == static_cast<int>(k);
+    for (size_t k = 0; k < around.size(); ++k)
+      roots += fans.find(static_cast<int>(k)) == static_cast<int>(k);
     if (roots > 1) {
       std::vector<int> faces;
       for (int f : around) faces.push_back(origin[static_cast<size_t>(f)]);
@@ -181,15 +194,17 @@ void selectComponent(TriangleMesh& m, std::vector<int>& origin,
     ++facesOf[r];
   }
   if (areaOf.size() <= 1) return;
-  const int largest = std::max_element(areaOf.begin(), areaOf.end(), [](const auto& a, const auto& b) {
-                        return a.second < b.second;
-                      })->first;
+  const int largest =
+      std::max_element(areaOf.begin(), areaOf.end(), [](const auto& a, const auto& b) {
+        return a.second < b.second;
+      })->first;
   std::ostringstream others;
   int listed = 0;
   for (const auto& [root, area] : areaOf) {
     if (root == largest || listed >= 3) continue;
-    others << (listed++ ? "; " : "") << facesOf[root] << " faces near " << point(centroid(m, static_cast<size_t>(root)))
-           << " starting at face " << origin[static_cast<size_t>(root)];
+    others << (listed++ ? "; " : "") << facesOf[root] << " faces near "
+           << point(centroid(m, static_cast<size_t>(root))) << " starting at face "
+           << origin[static_cast<size_t>(root)];
   }
   const std::string what = std::to_string(areaOf.size()) + " connected components";
   if (!options.keepLargestComponent) {
@@ -229,7 +244,8 @@ bool orientConsistently(TriangleMesh& m, const std::vector<int>& origin,
       } else if (flip[static_cast<size_t>(g)] != want) {
         report.refusals.push_back("non-orientable surface (like a Moebius strip) around face " +
                                   std::to_string(origin[static_cast<size_t>(g)]) + " at " +
-                                  point(centroid(m, static_cast<size_t>(g))) + "; rebuild the surface");
+                                  point(centroid(m, static_cast<size_t>(g))) +
+                                  "; rebuild the surface");
         return false;
       }
     }
@@ -251,8 +267,8 @@ bool orientConsistently(TriangleMesh& m, const std::vector<int>& origin,
 // Phase: boundary loops; fill those with at most maxHoleEdges edges by a fan around their
 // centroid, refuse the others.
 bool closeHoles(TriangleMesh& m, std::vector<int>& origin,
-                const std::map<EdgeKey, std::vector<EdgeUse>>& uses, const MeshCheckOptions& options,
-                MeshReport& report) {
+                const std::map<EdgeKey, std::vector<EdgeUse>>& uses,
+                const MeshCheckOptions& options, MeshReport& report) {
   std::unordered_map<int, int> next;  // boundary edge a -> b as traversed by its one face
   std::unordered_map<int, int> faceOfEdge;
   for (const auto& [edge, list] : uses)
@@ -282,10 +298,11 @@ bool closeHoles(TriangleMesh& m, std::vector<int>& origin,
     for (int v : loop) c += m.vertices[static_cast<size_t>(v)];
     c /= static_cast<double>(loop.size());
     if (static_cast<int>(loop.size()) > options.maxHoleEdges) {
-      report.refusals.push_back("open surface: a hole with " + std::to_string(loop.size()) +
-                                " boundary edges around " + point(c) + " (bordering faces " +
-                                faceList(faces) + "); close it in the modelling tool (holes up to " +
-                                std::to_string(options.maxHoleEdges) + " edges are filled automatically)");
+      report.refusals.push_back(
+          "open surface: a hole with " + std::to_string(loop.size()) + " boundary edges around " +
+          point(c) + " (bordering faces " + faceList(faces) +
+          "); close it in the modelling tool (holes up to " + std::to_string(options.maxHoleEdges) +
+          " edges are filled automatically)");
       ok = false;
       continue;
     }
@@ -324,12 +341,14 @@ MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options)
   MeshReport report;
   report.inputVertices = static_cast<int>(input.vertices.size());
   report.inputFaces = static_cast<int>(input.faces.size());
-  if (input.faces.empty()) throw MeshError("mesh", "has no faces", "give a closed triangle surface");
+  if (input.faces.empty())
+    throw MeshError("mesh", "has no faces", "give a closed triangle surface");
   for (size_t f = 0; f < input.faces.size(); ++f)
     for (int v : input.faces[f])
       if (v < 0 || static_cast<size_t>(v) >= input.vertices.size())
-        throw MeshError("mesh", "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
-                                    " but there are only " + std::to_string(input.vertices.size()),
+        throw MeshError("mesh",
+                        "face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                            " but there are only " + std::to_string(input.vertices.size()),
                         "fix the face indices");
   for (size_t v = 0; v < input.vertices.size(); ++v)
     if (!input.vertices[v].allFinite())
@@ -343,7 +362,8 @@ MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options)
 
   // Phase 1: duplicate vertices, repeated-vertex and duplicate faces.
   if (const int joined = joinIdenticalVertices(m); joined > 0) {
-    report.repairs.push_back("removed " + std::to_string(joined) + " duplicate (identical coordinates) or unused vertices");
+    report.repairs.push_back("removed " + std::to_string(joined) +
+                             " duplicate (identical coordinates) or unused vertices");
   }
   dropTrivialFaces(m, origin, report);
   if (m.faces.empty()) {
@@ -388,9 +408,9 @@ MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options)
                               centroid(m, static_cast<size_t>(pairs[0].second)));
     report.refusals.push_back(
         "self-intersecting surface: " + std::string(pairs.size() >= 64 ? "at least " : "") +
-        std::to_string(pairs.size()) + " pairs of faces cross, e.g. " + faceName(faces[0]) + " and " +
-        faceName(faces[1]) + " near " + point(where) +
-        " (faces " + faceList(faces) + "); fix the surface in the modelling tool");
+        std::to_string(pairs.size()) + " pairs of faces cross, e.g. " + faceName(faces[0]) +
+        " and " + faceName(faces[1]) + " near " + point(where) + " (faces " + faceList(faces) +
+        "); fix the surface in the modelling tool");
     return report;
   }
 
@@ -400,8 +420,9 @@ MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options)
   if (measures.signedVolume < 0) {
     for (Triangle& t : m.faces) std::swap(t[1], t[2]);
     measures.signedVolume = -measures.signedVolume;
-    report.repairs.push_back("reversed all " + std::to_string(m.faces.size()) +
-                             " faces so that normals point outward (the enclosed volume was negative)");
+    report.repairs.push_back(
+        "reversed all " + std::to_string(m.faces.size()) +
+        " faces so that normals point outward (the enclosed volume was negative)");
   }
   report.measures = measures;
   report.mesh = std::move(m);
@@ -413,7 +434,8 @@ MeshReport requireUsableMesh(const TriangleMesh& mesh, const std::string& source
   MeshReport report = checkMesh(mesh, options);
   if (!report.isUsable()) {
     std::string what = "mesh refused: ";
-    for (size_t k = 0; k < report.refusals.size(); ++k) what += (k ? "; " : "") + report.refusals[k];
+    for (size_t k = 0; k < report.refusals.size(); ++k)
+      what += (k ? "; " : "") + report.refusals[k];
     throw MeshError(source, what, "");
   }
   return report;

@@ -12,8 +12,8 @@
 namespace meshing {
 
 struct MeshCheckOptions {
-  int maxHoleEdges = 8;             // holes with at most this many boundary edges are filled
-  bool keepLargestComponent = true; // false: several components are refused instead
+  int maxHoleEdges = 8;              // holes with at most this many boundary edges are filled
+  bool keepLargestComponent = true;  // false: several components are refused instead
 };
 
 struct MeshReport {

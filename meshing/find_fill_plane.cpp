@@ -13,7 +13,7 @@ double clippedVolume(const TriangleMesh& mesh, const Vec3& u, double c) {
   const Vec3 o = c * u;  // a point on the plane (u is a unit vector)
   // Sequential on purpose: a parallel floating-point reduction would make the bisection depend on
   // the thread count (DESIGN.md principle 7), and one pass over 20 000 faces takes ~0.1 ms.
-  double volume = 0;     // [unit^3]
+  double volume = 0;  // [unit^3]
   for (long long fl = 0; fl < static_cast<long long>(mesh.faces.size()); ++fl) {
     const Triangle& t = mesh.faces[static_cast<size_t>(fl)];
     std::array<Vec3, 3> p;
@@ -41,14 +41,16 @@ double clippedVolume(const TriangleMesh& mesh, const Vec3& u, double c) {
       }
     }
     for (int k = 1; k + 1 < n; ++k)
-      volume += poly[0].dot(poly[static_cast<size_t>(k)].cross(poly[static_cast<size_t>(k + 1)])) / 6.0;
+      volume +=
+          poly[0].dot(poly[static_cast<size_t>(k)].cross(poly[static_cast<size_t>(k + 1)])) / 6.0;
   }
   return volume;
 }
 
 FillPlane findFillPlane(const TriangleMesh& mesh, double fraction, const Vec3& direction) {
   if (!(fraction >= 0 && fraction <= 1))
-    throw MeshError("fill level", "fill fraction " + std::to_string(fraction) + " is outside [0, 1]",
+    throw MeshError("fill level",
+                    "fill fraction " + std::to_string(fraction) + " is outside [0, 1]",
                     "give the fraction of the cavity volume, e.g. 0.8 for 80 %");
   if (!(direction.norm() > 0) || !direction.allFinite())
     throw MeshError("fill level", "fill direction is zero or not finite",
@@ -85,7 +87,9 @@ PhaseSamples sampleFillPhases(const TriangleMesh& mesh, const FillPlane& plane,
   VolumeSamplingOptions side = options;
   side.keep = [&](const Vec3& p) { return plane.isAbove(p) && (!options.keep || options.keep(p)); };
   out.above = sampleVolume(mesh, query, side);
-  side.keep = [&](const Vec3& p) { return !plane.isAbove(p) && (!options.keep || options.keep(p)); };
+  side.keep = [&](const Vec3& p) {
+    return !plane.isAbove(p) && (!options.keep || options.keep(p));
+  };
   out.below = sampleVolume(mesh, query, side);
   return out;
 }

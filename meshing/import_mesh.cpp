@@ -1,8 +1,8 @@
 #include "meshing/import_mesh.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
+#include <assimp/Importer.hpp>
 
 #include <algorithm>
 #include <array>
@@ -21,8 +21,7 @@ namespace meshing {
 LengthUnit parseLengthUnit(std::string_view text) {
   if (text == "mm") return LengthUnit::millimetre;
   if (text == "m") return LengthUnit::metre;
-  throw MeshError("units", "unknown length unit '" + std::string(text) + "'",
-                  "use 'mm' or 'm'");
+  throw MeshError("units", "unknown length unit '" + std::string(text) + "'", "use 'mm' or 'm'");
 }
 
 const char* toString(LengthUnit unit) {
@@ -60,9 +59,12 @@ struct Vec3BitsHash {
 std::string formatLength(double metres) {
   std::ostringstream s;
   s.precision(3);
-  if (metres >= 0.1) s << metres << " m";
-  else if (metres >= 1e-3) s << metres * 1e3 << " mm";
-  else s << metres * 1e6 << " um";
+  if (metres >= 0.1)
+    s << metres << " m";
+  else if (metres >= 1e-3)
+    s << metres * 1e3 << " mm";
+  else
+    s << metres * 1e6 << " um";
   return s.str();
 }
 
@@ -130,9 +132,11 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
   if (!fs::exists(path, ec))
     throw MeshError(path, "file not found", "check the path and the working directory");
   if (fs::is_directory(path, ec))
-    throw MeshError(path, "is a directory, not a mesh file", "give the path of a .stl/.obj/.ply/.off file");
+    throw MeshError(path, "is a directory, not a mesh file",
+                    "give the path of a .stl/.obj/.ply/.off file");
   if (fs::file_size(path, ec) == 0)
-    throw MeshError(path, "file is empty (0 bytes)", "re-export the mesh; the write probably failed");
+    throw MeshError(path, "file is empty (0 bytes)",
+                    "re-export the mesh; the write probably failed");
 
   Assimp::Importer importer;
   const std::string ext = lowerExtension(path);
@@ -142,7 +146,8 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
     throw MeshError(path, "unknown mesh format '" + ext + "'",
                     "export as .stl, .obj, .ply or .off (assimp also reads " + list + ")");
   }
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
+                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
   // DropNormals: STL gives every corner its face normal, which stops JoinIdenticalVertices from
   // merging corners (STACK.md pitfall 8). We join again ourselves across sub-meshes below.
   const aiScene* scene = importer.ReadFile(
@@ -153,7 +158,8 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
   if (scene == nullptr && assimpError.find("No meshes remaining") != std::string::npos)
     throw MeshError(path, "contains no triangles (only points, lines or nothing)",
                     "export the cavity as a closed triangle surface");
-  if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) || scene->mRootNode == nullptr)
+  if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) ||
+      scene->mRootNode == nullptr)
     throw MeshError(path, "cannot read the file as a mesh: " + assimpError,
                     "check that it is a valid " + ext.substr(1) +
                         " file (not truncated, not another format renamed)");
@@ -166,8 +172,8 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
   for (size_t v = 0; v < result.mesh.vertices.size(); ++v) {
     if (!result.mesh.vertices[v].allFinite()) {
       std::ostringstream s;
-      s << "vertex " << v << " has a NaN or infinite coordinate (" << result.mesh.vertices[v].transpose()
-        << ")";
+      s << "vertex " << v << " has a NaN or infinite coordinate ("
+        << result.mesh.vertices[v].transpose() << ")";
       throw MeshError(path, s.str(), "repair or re-export the mesh in the modelling tool");
     }
   }
@@ -185,15 +191,21 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
       const double s = raw.size() * metresPer(u);
       return s >= kMinEyeSize && s <= kMaxEyeSize;
     };
-    if (diagonal >= 10 && diagonal <= 60) unit = LengthUnit::millimetre;
-    else if (diagonal >= 0.01 && diagonal <= 0.06) unit = LengthUnit::metre;
-    else if (plausible(LengthUnit::millimetre)) unit = LengthUnit::millimetre;
-    else if (plausible(LengthUnit::metre)) unit = LengthUnit::metre;
+    if (diagonal >= 10 && diagonal <= 60)
+      unit = LengthUnit::millimetre;
+    else if (diagonal >= 0.01 && diagonal <= 0.06)
+      unit = LengthUnit::metre;
+    else if (plausible(LengthUnit::millimetre))
+      unit = LengthUnit::millimetre;
+    else if (plausible(LengthUnit::metre))
+      unit = LengthUnit::metre;
     else
       throw MeshError(path,
-                      "size " + diag.str() + " (bounding-box diagonal, file units) is implausible for "
-                      "an eye in mm (" + formatLength(raw.size() * 1e-3) + " across) and in m (" +
-                      formatLength(raw.size()) + " across)",
+                      "size " + diag.str() +
+                          " (bounding-box diagonal, file units) is implausible for "
+                          "an eye in mm (" +
+                          formatLength(raw.size() * 1e-3) + " across) and in m (" +
+                          formatLength(raw.size()) + " across)",
                       "an eye cavity is 20-30 mm across; rescale the mesh to mm or m");
     result.warnings.push_back(std::string("no units declared: assumed ") + toString(unit) +
                               " because the bounding-box diagonal is " + diag.str() +
@@ -208,14 +220,18 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
   if (size > kMaxEyeSize || size < kMinEyeSize) {
     const bool big = size > kMaxEyeSize;
     std::string fix;
-    if (unit == LengthUnit::metre && big) fix = "the file is probably in mm: declare --units mm";
-    else if (unit == LengthUnit::millimetre && !big) fix = "the file is probably in m: declare --units m";
-    else fix = "an eye cavity is 20-30 mm across; check the units the file was exported in";
-    throw MeshError(path,
-                    "implausible size " + formatLength(size) + " across with units " + toString(unit) +
-                        (big ? " (an eye cavity is smaller than " : " (an eye cavity is larger than ") +
-                        formatLength(big ? kMaxEyeSize : kMinEyeSize) + ")",
-                    fix);
+    if (unit == LengthUnit::metre && big)
+      fix = "the file is probably in mm: declare --units mm";
+    else if (unit == LengthUnit::millimetre && !big)
+      fix = "the file is probably in m: declare --units m";
+    else
+      fix = "an eye cavity is 20-30 mm across; check the units the file was exported in";
+    throw MeshError(
+        path,
+        "implausible size " + formatLength(size) + " across with units " + toString(unit) +
+            (big ? " (an eye cavity is smaller than " : " (an eye cavity is larger than ") +
+            formatLength(big ? kMaxEyeSize : kMinEyeSize) + ")",
+        fix);
   }
   return result;
 }

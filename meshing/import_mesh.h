@@ -16,11 +16,11 @@ enum class LengthUnit { unknown, millimetre, metre };
 
 // "mm" / "m" -> the unit; anything else throws MeshError saying which spellings are accepted.
 LengthUnit parseLengthUnit(std::string_view text);
-const char* toString(LengthUnit unit);       // "mm", "m" or "unknown"
-double metresPer(LengthUnit unit);           // 1e-3, 1, or throws for unknown
+const char* toString(LengthUnit unit);  // "mm", "m" or "unknown"
+double metresPer(LengthUnit unit);      // 1e-3, 1, or throws for unknown
 
 struct ImportResult {
-  TriangleMesh mesh;                  // [m]
+  TriangleMesh mesh;                      // [m]
   LengthUnit unit = LengthUnit::unknown;  // the unit used: declared, or guessed from the size
   bool unitGuessed = false;
   std::vector<std::string> warnings;  // e.g. the guessed unit and how to declare it

@@ -26,7 +26,8 @@ SpacingStatistics measureSpacing(const std::vector<Vec3>& points, double searchR
     const size_t i = static_cast<size_t>(il);
     double best = std::numeric_limits<double>::infinity();
     grid.forEachNear(points[i], [&](int j) {
-      if (static_cast<size_t>(j) != i) best = std::min(best, (points[static_cast<size_t>(j)] - points[i]).squaredNorm());
+      if (static_cast<size_t>(j) != i)
+        best = std::min(best, (points[static_cast<size_t>(j)] - points[i]).squaredNorm());
     });
     if (best <= searchRadius * searchRadius) nearest[i] = std::sqrt(best);
   }

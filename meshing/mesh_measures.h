@@ -6,8 +6,8 @@
 namespace meshing {
 
 struct MeshMeasures {
-  double area = 0;           // [unit^2] sum of triangle areas
-  double signedVolume = 0;   // [unit^3] > 0 for a closed outward mesh (divergence theorem)
+  double area = 0;                // [unit^2] sum of triangle areas
+  double signedVolume = 0;        // [unit^3] > 0 for a closed outward mesh (divergence theorem)
   Vec3 boundsMin = Vec3::Zero();  // [unit] axis-aligned bounding box of the vertices
   Vec3 boundsMax = Vec3::Zero();  // [unit]
   // [unit] largest extent of the bounding box ("size" in reports and the plausibility check)

@@ -37,8 +37,8 @@ MeshQuery::MeshQuery(const TriangleMesh& input) : impl_(std::make_unique<Impl>()
   for (const Vec3& p : input.vertices) v.push_back(sm.add_vertex(Point(p.x(), p.y(), p.z())));
   for (size_t f = 0; f < input.faces.size(); ++f) {
     const Triangle& t = input.faces[f];
-    if (sm.add_face(v[static_cast<size_t>(t[0])], v[static_cast<size_t>(t[1])], v[static_cast<size_t>(t[2])]) ==
-        SurfaceMesh::null_face())
+    if (sm.add_face(v[static_cast<size_t>(t[0])], v[static_cast<size_t>(t[1])],
+                    v[static_cast<size_t>(t[2])]) == SurfaceMesh::null_face())
       throw MeshError("mesh", "face " + std::to_string(f) + " makes the surface non-manifold",
                       "run checkMesh() first and use its repaired mesh");
   }
@@ -66,7 +66,8 @@ double MeshQuery::squaredDistance(const Vec3& p) const {
 
 bool MeshQuery::isWithin(const Vec3& p, double distance) const {
   // Sphere_3 queries on the AABB tree test the solid ball (squared distance <= r^2).
-  return impl_->tree->do_intersect(Kernel::Sphere_3(Point(p.x(), p.y(), p.z()), distance * distance));
+  return impl_->tree->do_intersect(
+      Kernel::Sphere_3(Point(p.x(), p.y(), p.z()), distance * distance));
 }
 
 Vec3 MeshQuery::closestPoint(const Vec3& p, int* face) const {

@@ -13,7 +13,8 @@ namespace {
 
 std::string lowerExtension(const std::string& path) {
   std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char c) { return std::tolower(c); });
   return ext;
 }
 
@@ -58,7 +59,8 @@ void writeMesh(const TriangleMesh& mesh, const std::string& path, double scale) 
     out << "# written by tamponade\n";
     for (const auto& v : mesh.vertices)
       out << "v " << v.x() * scale << ' ' << v.y() * scale << ' ' << v.z() * scale << '\n';
-    for (const auto& f : mesh.faces) out << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
+    for (const auto& f : mesh.faces)
+      out << "f " << f[0] + 1 << ' ' << f[1] + 1 << ' ' << f[2] + 1 << '\n';
   } else {
     out << "ply\nformat ascii 1.0\ncomment written by tamponade\nelement vertex "
         << mesh.vertices.size() << "\nproperty double x\nproperty double y\nproperty double z\n"

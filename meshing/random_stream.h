@@ -9,7 +9,8 @@ namespace meshing::detail {
 
 class RandomStream {
  public:
-  RandomStream(std::uint64_t seed, std::uint64_t stream) : state_(seed ^ (stream * 0x9E3779B97F4A7C15ull)) {
+  RandomStream(std::uint64_t seed, std::uint64_t stream)
+      : state_(seed ^ (stream * 0x9E3779B97F4A7C15ull)) {
     next();
   }
   std::uint64_t next() {

@@ -10,7 +10,7 @@
 namespace meshing {
 
 struct ShellSamplingOptions {
-  double spacing = 0;   // [unit] d, the lattice spacing
+  double spacing = 0;  // [unit] d, the lattice spacing
   // [unit] thickness t at a surface point (the point of the surface nearest to the particle);
   // called from several OpenMP threads at once, so it must not modify shared state
   std::function<double(const Vec3& surfacePoint)> thickness;

@@ -29,7 +29,8 @@ SurfaceSamples sampleSurface(const TriangleMesh& mesh, const SurfaceSamplingOpti
   for (size_t f = 0; f < nf; ++f) {
     const Triangle& t = mesh.faces[f];
     const Vec3& a = mesh.vertices[static_cast<size_t>(t[0])];
-    const Vec3 n = (mesh.vertices[static_cast<size_t>(t[1])] - a).cross(mesh.vertices[static_cast<size_t>(t[2])] - a);
+    const Vec3 n = (mesh.vertices[static_cast<size_t>(t[1])] - a)
+                       .cross(mesh.vertices[static_cast<size_t>(t[2])] - a);
     faceArea[f] = 0.5 * n.norm();
     faceNormal[f] = n.norm() > 0 ? Vec3(n.normalized()) : Vec3::Zero();
     total += faceArea[f];
@@ -37,14 +38,15 @@ SurfaceSamples sampleSurface(const TriangleMesh& mesh, const SurfaceSamplingOpti
   const double perArea = options.candidatesPerArea / (d * d);  // [1/unit^2]
   if (total * perArea > 5e7)
     throw MeshError("surface sampling",
-                    "spacing too small for this surface (" + std::to_string(static_cast<long long>(total / (d * d))) +
-                        " samples)",
+                    "spacing too small for this surface (" +
+                        std::to_string(static_cast<long long>(total / (d * d))) + " samples)",
                     "increase the spacing or check the units");
   std::vector<size_t> first(nf + 1, 0);
   for (size_t f = 0; f < nf; ++f) {
     detail::RandomStream rng(options.seed, f);
     const double expected = faceArea[f] * perArea;
-    first[f + 1] = first[f] + std::max<size_t>(1, static_cast<size_t>(std::floor(expected + rng.uniform())));
+    first[f + 1] =
+        first[f] + std::max<size_t>(1, static_cast<size_t>(std::floor(expected + rng.uniform())));
   }
   const size_t nc = first[nf];
   std::vector<Vec3> candidate(nc);
@@ -91,7 +93,8 @@ SurfaceSamples sampleSurface(const TriangleMesh& mesh, const SurfaceSamplingOpti
   for (size_t c : sequence) {
     bool free = true;
     grid.forEachNear(candidate[c], [&](int s) {
-      if (free && (out.points[static_cast<size_t>(s)] - candidate[c]).squaredNorm() < r2) free = false;
+      if (free && (out.points[static_cast<size_t>(s)] - candidate[c]).squaredNorm() < r2)
+        free = false;
     });
     if (!free) continue;
     grid.insert(static_cast<int>(out.points.size()), candidate[c]);

@@ -11,8 +11,8 @@
 namespace meshing {
 
 struct VolumeSamplingOptions {
-  double spacing = 0;     // [unit] d, the lattice spacing
-  double wallGap = -1;    // [unit] minimum distance from the wall; negative means d/2
+  double spacing = 0;                 // [unit] d, the lattice spacing
+  double wallGap = -1;                // [unit] minimum distance from the wall; negative means d/2
   Vec3 latticeOrigin = Vec3::Zero();  // [unit] one lattice point; the lattice is origin + d*(i,j,k)
   std::function<bool(const Vec3&)> keep;  // optional restriction, e.g. one side of a fill plane
 };

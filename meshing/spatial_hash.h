@@ -21,7 +21,8 @@ class SpatialHash {
     const double extent = (hi - lo).maxCoeff();
     cell_ = std::max(radius, extent / 200.0);
     if (!(cell_ > 0)) cell_ = 1;
-    for (int a = 0; a < 3; ++a) n_[a] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / cell_)) + 1;
+    for (int a = 0; a < 3; ++a)
+      n_[a] = static_cast<std::int64_t>(std::floor((hi[a] - lo[a]) / cell_)) + 1;
     head_.assign(static_cast<size_t>(n_[0] * n_[1] * n_[2]), -1);
   }
 
@@ -38,18 +39,23 @@ class SpatialHash {
   template <class Visit>
   void forEachNear(const Vec3& p, Visit&& visit) const {
     const std::array<std::int64_t, 3> c = cellOf(p);
-    for (std::int64_t z = std::max<std::int64_t>(c[2] - 1, 0); z <= std::min(c[2] + 1, n_[2] - 1); ++z)
-      for (std::int64_t y = std::max<std::int64_t>(c[1] - 1, 0); y <= std::min(c[1] + 1, n_[1] - 1); ++y)
-        for (std::int64_t x = std::max<std::int64_t>(c[0] - 1, 0); x <= std::min(c[0] + 1, n_[0] - 1); ++x)
-          for (int id = head_[flat({x, y, z})]; id >= 0; id = next_[static_cast<size_t>(id)]) visit(id);
+    for (std::int64_t z = std::max<std::int64_t>(c[2] - 1, 0); z <= std::min(c[2] + 1, n_[2] - 1);
+         ++z)
+      for (std::int64_t y = std::max<std::int64_t>(c[1] - 1, 0); y <= std::min(c[1] + 1, n_[1] - 1);
+           ++y)
+        for (std::int64_t x = std::max<std::int64_t>(c[0] - 1, 0);
+             x <= std::min(c[0] + 1, n_[0] - 1); ++x)
+          for (int id = head_[flat({x, y, z})]; id >= 0; id = next_[static_cast<size_t>(id)])
+            visit(id);
   }
 
  private:
   std::array<std::int64_t, 3> cellOf(const Vec3& p) const {
     std::array<std::int64_t, 3> c{};
     for (int a = 0; a < 3; ++a)
-      c[static_cast<size_t>(a)] = std::clamp(static_cast<std::int64_t>(std::floor((p[a] - lo_[a]) / cell_)),
-                                             std::int64_t{0}, n_[a] - 1);
+      c[static_cast<size_t>(a)] =
+          std::clamp(static_cast<std::int64_t>(std::floor((p[a] - lo_[a]) / cell_)),
+                     std::int64_t{0}, n_[a] - 1);
     return c;
   }
   size_t flat(const std::array<std::int64_t, 3>& c) const {

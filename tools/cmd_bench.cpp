@@ -42,14 +42,12 @@ constexpr const char* kBenchUsage =
     "and writes DIR/bench_engine.csv and DIR/bench_engine.md (default DIR: .). Prints progress.\n"
     "Threads: OMP_NUM_THREADS. On a shared machine set OMP_WAIT_POLICY=passive.\n";
 
-
 struct BenchOptions {
   std::vector<long> particles{30000, 100000};
   double time = 0.05;  // [s] simulated
   std::vector<std::string> solvers{"dfsph", "wcsph"};
   std::string out = ".";
 };
-
 
 BenchOptions parseBenchOptions(Args args) {
   BenchOptions o;
@@ -125,7 +123,8 @@ BenchResult runOne(const std::string& solver, long targetParticles, double simTi
     iterations += pipeline.solver().stats().densityIterations;
     divIterations += pipeline.solver().stats().divergenceIterations;
     if (world.time >= nextReport * simTime) {
-      const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double wall =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       std::fprintf(stderr, "  %3.0f %%  t = %.4f s  steps %ld  wall %.1f s\n",
                    100 * std::min(1.0, world.time / simTime), world.time, world.stepCount, wall);
       while (nextReport <= world.time / simTime) nextReport += 0.1;  // one line per 10 %
@@ -150,7 +149,8 @@ void writeReports(const std::vector<BenchResult>& results, const std::string& di
   std::ofstream csv(csvPath);
   if (!csv) throw std::runtime_error("cannot write " + csvPath);
   csv << "solver,particles,steps,rejected_steps,simulated_time_s,mean_dt_s,mean_density_iterations,"
-         "mean_divergence_iterations,wall_s,wall_per_step_ms,particle_steps_per_s,threads,stage_seconds\n";
+         "mean_divergence_iterations,wall_s,wall_per_step_ms,particle_steps_per_s,threads,stage_"
+         "seconds\n";
   const int threads = omp_get_max_threads();
   for (const BenchResult& r : results) {
     csv << r.solver << ',' << r.particles << ',' << r.steps << ',' << r.rejected << ','
@@ -167,21 +167,25 @@ void writeReports(const std::vector<BenchResult>& results, const std::string& di
   std::ofstream md(mdPath);
   if (!md) throw std::runtime_error("cannot write " + mdPath);
   char line[512];
-  md << "| solver | particles | steps (rejected) | mean dt [s] | iterations/step (density + divergence) "
+  md << "| solver | particles | steps (rejected) | mean dt [s] | iterations/step (density + "
+        "divergence) "
         "| wall/step [ms] | particle-steps/s |\n|---|---|---|---|---|---|---|\n";
   for (const BenchResult& r : results) {
-    std::snprintf(line, sizeof line, "| %s | %ld | %ld (%ld) | %.3g | %.1f + %.1f | %.2f | %.3g |\n",
-                  r.solver.c_str(), r.particles, r.steps, r.rejected, r.meanDt, r.meanIterations,
-                  r.meanDivIterations, 1e3 * r.wallSeconds / static_cast<double>(r.steps),
+    std::snprintf(line, sizeof line,
+                  "| %s | %ld | %ld (%ld) | %.3g | %.1f + %.1f | %.2f | %.3g |\n", r.solver.c_str(),
+                  r.particles, r.steps, r.rejected, r.meanDt, r.meanIterations, r.meanDivIterations,
+                  1e3 * r.wallSeconds / static_cast<double>(r.steps),
                   static_cast<double>(r.particles) * static_cast<double>(r.steps) / r.wallSeconds);
     md << line;
   }
-  md << "\nTime per stage, % of the time loop (" << threads << " OpenMP threads; no output is "
+  md << "\nTime per stage, % of the time loop (" << threads
+     << " OpenMP threads; no output is "
         "written during the benchmark):\n\n";
   for (const BenchResult& r : results) {
     md << "- " << r.solver << ", " << r.particles << " particles:";
     for (const auto& e : r.stages) {
-      std::snprintf(line, sizeof line, " %s %.1f %%", e.name.c_str(), 100 * e.seconds / r.wallSeconds);
+      std::snprintf(line, sizeof line, " %s %.1f %%", e.name.c_str(),
+                    100 * e.seconds / r.wallSeconds);
       md << line << (&e == &r.stages.back() ? "" : ",");
     }
     md << '\n';
@@ -216,7 +220,8 @@ int runBench(Args args) {
   }
   std::vector<BenchResult> results;
   for (long n : options.particles)
-    for (const std::string& solver : options.solvers) results.push_back(runOne(solver, n, options.time));
+    for (const std::string& solver : options.solvers)
+      results.push_back(runOne(solver, n, options.time));
   writeReports(results, options.out);
   std::ifstream md(options.out + "/bench_engine.md");
   std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());

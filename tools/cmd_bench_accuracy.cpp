@@ -40,7 +40,8 @@ constexpr const char* kUsage =
     "spacing, then tightest tolerance) for the whole retina and the worst region. The runs'\n"
     "frames and reports go to DIR/runs/ (replaced when the bench is run again).\n"
     "  --tolerances  accuracy.solver_tolerance values as fractions, each in (0, 0.05]\n"
-    "                (default 0.005,0.001,0.0001: the draft and standard presets and the papers' eta)\n"
+    "                (default 0.005,0.001,0.0001: the draft and standard presets and the papers' "
+    "eta)\n"
     "  --spacings    accuracy.particle_spacing values in mm (default: the protocol's own)\n"
     "  --out         output folder (default bench_accuracy)\n"
     "  --threads     OpenMP threads (default OMP_NUM_THREADS); one thread times most steadily\n"
@@ -54,11 +55,13 @@ struct AccuracyRun {
   std::string folder;
 };
 
-std::vector<double> parseList(const std::string& text, const char* option, double scale, double max) {
+std::vector<double> parseList(const std::string& text, const char* option, double scale,
+                              double max) {
   std::vector<double> values;
   for (const std::string& item : splitList(text)) {
     const double v = parsePositive(item, option) * scale;
-    if (v > max) throw UsageError(std::string(option) + " '" + item + "' is above its largest value");
+    if (v > max)
+      throw UsageError(std::string(option) + " '" + item + "' is above its largest value");
     values.push_back(v);
   }
   if (values.empty()) throw UsageError(std::string(option) + " needs at least one value");
@@ -72,8 +75,8 @@ std::string label(double spacing, double tolerance) {
 }
 
 // Largest |difference| over the reported regions' mean coverage (whole retina, quadrants, zones).
-double worstRegionDifference(const protocols::ScheduleCoverage& a, const protocols::ScheduleCoverage& b,
-                             std::string& region) {
+double worstRegionDifference(const protocols::ScheduleCoverage& a,
+                             const protocols::ScheduleCoverage& b, std::string& region) {
   double worst = -1;
   for (std::size_t k = 0; k < a.regions.size(); ++k) {
     const double diff = std::abs(a.regions[k] - b.regions[k]);
@@ -90,16 +93,19 @@ void writeTables(const std::vector<AccuracyRun>& runs, const std::filesystem::pa
   const AccuracyRun& ref = runs.back();  // sorted coarse -> fine, loose -> tight
   const std::filesystem::path csvPath = dir / "accuracy.csv", mdPath = dir / "accuracy.md";
   std::ofstream csv(csvPath);
-  if (!csv) throw protocols::IoError(csvPath.string(), "", "cannot be written", "choose another --out");
+  if (!csv)
+    throw protocols::IoError(csvPath.string(), "", "cannot be written", "choose another --out");
   csv << "spacing_mm,solver_tolerance,fluid_particles,steps,wall_s,mean_iterations,"
          "steps_at_iteration_cap,mean_density_error,worst_step_density_error,whole_retina_mean,"
          "whole_retina_diff,worst_region_diff,worst_region,threads\n";
   std::ofstream md(mdPath);
-  if (!md) throw protocols::IoError(mdPath.string(), "", "cannot be written", "choose another --out");
+  if (!md)
+    throw protocols::IoError(mdPath.string(), "", "cannot be written", "choose another --out");
   md << "Protocol `" << protocolFile << "`, solver " << solver << ", " << threads
      << " thread(s). Differences are in coverage points against the last row (finest spacing, "
         "tightest tolerance).\n\n"
-        "| spacing [mm] | tolerance | fluid particles | steps | wall [s] | iterations/step | at cap | "
+        "| spacing [mm] | tolerance | fluid particles | steps | wall [s] | iterations/step | at "
+        "cap | "
         "density error reached (worst step) | whole retina | diff | worst region diff |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|\n";
   char line[640];
@@ -108,17 +114,19 @@ void writeTables(const std::vector<AccuracyRun>& runs, const std::filesystem::pa
     std::string region;
     const double worst = worstRegionDifference(r.summary.coverage, ref.summary.coverage, region);
     const double whole = r.summary.coverage.regions[0] - ref.summary.coverage.regions[0];
-    csv << r.spacing * 1e3 << ',' << r.tolerance << ',' << r.particles << ',' << r.summary.steps << ','
-        << r.summary.wallSeconds << ',' << ps.meanIterations() << ',' << ps.stepsAtIterationCap << ','
-        << ps.meanDensityError() << ',' << ps.maxStepDensityError << ',' << r.summary.coverage.regions[0]
-        << ',' << whole << ',' << worst << ",\"" << region << "\"," << threads << '\n';
+    csv << r.spacing * 1e3 << ',' << r.tolerance << ',' << r.particles << ',' << r.summary.steps
+        << ',' << r.summary.wallSeconds << ',' << ps.meanIterations() << ','
+        << ps.stepsAtIterationCap << ',' << ps.meanDensityError() << ',' << ps.maxStepDensityError
+        << ',' << r.summary.coverage.regions[0] << ',' << whole << ',' << worst << ",\"" << region
+        << "\"," << threads << '\n';
     std::snprintf(line, sizeof line,
-                  "| %g | %.3g %% | %ld | %ld | %.1f | %.1f | %.0f %% | %.3g %% (%.3g %%) | %.1f %% | %+.1f | "
+                  "| %g | %.3g %% | %ld | %ld | %.1f | %.1f | %.0f %% | %.3g %% (%.3g %%) | %.1f "
+                  "%% | %+.1f | "
                   "%.1f (%s) |\n",
-                  r.spacing * 1e3, 100 * r.tolerance, r.particles, r.summary.steps, r.summary.wallSeconds,
-                  ps.meanIterations(), 100 * ps.capFraction(), 100 * ps.meanDensityError(),
-                  100 * ps.maxStepDensityError, 100 * r.summary.coverage.regions[0], 100 * whole, 100 * worst,
-                  region.c_str());
+                  r.spacing * 1e3, 100 * r.tolerance, r.particles, r.summary.steps,
+                  r.summary.wallSeconds, ps.meanIterations(), 100 * ps.capFraction(),
+                  100 * ps.meanDensityError(), 100 * ps.maxStepDensityError,
+                  100 * r.summary.coverage.regions[0], 100 * whole, 100 * worst, region.c_str());
     md << line;
   }
   std::printf("wrote %s and %s\n", csvPath.string().c_str(), mdPath.string().c_str());
@@ -191,21 +199,25 @@ int runBenchAccuracy(Args args) {
         r.folder = (dir / "runs" / label(spacing, tolerance)).string();
         std::filesystem::remove_all(r.folder);
         std::filesystem::create_directories(r.folder);
-        std::fprintf(stderr, "bench accuracy %zu/%zu: d = %g mm, tolerance %g, %ld fluid particles ...\n",
+        std::fprintf(stderr,
+                     "bench accuracy %zu/%zu: d = %g mm, tolerance %g, %ld fluid particles ...\n",
                      runs.size() + 1, total, spacing * 1e3, tolerance, r.particles);
         protocols::RunOptions options;
         options.outputFolder = r.folder;
         r.summary = protocols::runScenario(p, scenario, options);
-        std::fprintf(stderr, "  %ld steps in %.1f s, %.1f iterations per step, density error %.3g %%, "
+        std::fprintf(stderr,
+                     "  %ld steps in %.1f s, %.1f iterations per step, density error %.3g %%, "
                      "coverage %s\n",
-                     r.summary.steps, r.summary.wallSeconds, r.summary.pressureSolve.meanIterations(),
+                     r.summary.steps, r.summary.wallSeconds,
+                     r.summary.pressureSolve.meanIterations(),
                      100 * r.summary.pressureSolve.meanDensityError(),
                      protocols::formatPercent(r.summary.retinaCoverage).c_str());
         runs.push_back(std::move(r));
       }
     }
     if (!protocols::isImplicitSolver(solver))
-      std::fprintf(stderr, "note: solver %s is explicit: the tolerance changes nothing\n", solver.c_str());
+      std::fprintf(stderr, "note: solver %s is explicit: the tolerance changes nothing\n",
+                   solver.c_str());
     writeTables(runs, dir, file, solver, threads);
     std::ifstream md(dir / "accuracy.md");
     std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());

@@ -28,12 +28,11 @@ constexpr const char* kUsage =
     "with every registered pressure solver at density ratios 1:2, 1:3, 1:10, 1:30, 1:75: stable\n"
     "or not (and when it failed), mean/max compression, iterations, interface gap, wall time per\n"
     "simulated second. Writes DIR/solvers.csv, DIR/solvers.md, DIR/compression_<run>.csv\n"
-    "(paper Fig. 4) and DIR/iterations_<run>.csv (cumulative, Fig. 7). Default DIR: bench_solvers.\n"
+    "(paper Fig. 4) and DIR/iterations_<run>.csv (cumulative, Fig. 7). Default DIR: "
+    "bench_solvers.\n"
     "  default: a = 5 cm, d = a/10, depth 4 d (~3200 particles), 0.6 s simulated\n"
     "  --quick: a = 4 cm, d = a/8, depth 4 d (~1000 particles), 0.25 s simulated (a few minutes)\n"
     "Threads: OMP_NUM_THREADS. On a shared machine set OMP_WAIT_POLICY=passive.\n";
-
-
 
 }  // namespace
 
@@ -65,7 +64,8 @@ int runBenchSolvers(Args args) {
         ratios.clear();
         for (const std::string& r : splitList(value)) {
           const double ratio = parsePositive(r, "--ratios");
-          if (ratio < 1) throw UsageError("--ratios '" + r + "': give heavy/light >= 1 (75 for 1:75)");
+          if (ratio < 1)
+            throw UsageError("--ratios '" + r + "': give heavy/light >= 1 (75 for 1:75)");
           ratios.push_back(ratio);
         }
         if (ratios.empty()) throw UsageError("--ratios needs at least one ratio");
@@ -79,7 +79,8 @@ int runBenchSolvers(Args args) {
             known = known || entry.name == s;
             names += (names.empty() ? "" : ", ") + entry.name;
           }
-          if (!known) throw UsageError("--solvers: unknown solver '" + s + "' (known: " + names + ")");
+          if (!known)
+            throw UsageError("--solvers: unknown solver '" + s + "' (known: " + names + ")");
         }
       } else {
         throw UsageError("unknown option '" + std::string(flag) + "'");
@@ -91,9 +92,9 @@ int runBenchSolvers(Args args) {
   }
 
   protocols::TwoPhaseDamBreakSpec spec;
-  spec.columnWidth = quick ? 0.04 : 0.05;                      // [m]
-  spec.spacing = spec.columnWidth / (quick ? 8.0 : 10.0);      // [m]
-  spec.depth = 4 * spec.spacing;                               // [m] a slab, as the paper's 2D-like figure
+  spec.columnWidth = quick ? 0.04 : 0.05;                  // [m]
+  spec.spacing = spec.columnWidth / (quick ? 8.0 : 10.0);  // [m]
+  spec.depth = 4 * spec.spacing;  // [m] a slab, as the paper's 2D-like figure
   const double duration = time > 0 ? time : (quick ? 0.25 : 0.6);  // [s]
   std::fprintf(stderr, "bench solvers: a = %.3g m, d = %.3g mm, %.3g s simulated, %d thread(s)\n",
                spec.columnWidth, spec.spacing * 1e3, duration, omp_get_max_threads());
@@ -103,10 +104,13 @@ int runBenchSolvers(Args args) {
       spec.solver = solver;
       spec.densityRatio = ratio;
       protocols::SolverComparisonRun r = protocols::runSolverComparison(spec, duration);
-      std::fprintf(stderr, "  %-15s 1:%-3g %s  t = %.3f s  %ld steps  max compression %.2e  gap %.2f d  %.1f s wall\n",
-                   solver.c_str(), ratio, r.stable ? "stable  " : "FAILED  ", r.simulatedTime, r.steps,
-                   r.maxCompression, r.finalInterfaceGap, r.wallSeconds);
-      if (!r.stable) std::fprintf(stderr, "      failed at %.4f s: %s\n", r.failedAt, r.failure.c_str());
+      std::fprintf(stderr,
+                   "  %-15s 1:%-3g %s  t = %.3f s  %ld steps  max compression %.2e  gap %.2f d  "
+                   "%.1f s wall\n",
+                   solver.c_str(), ratio, r.stable ? "stable  " : "FAILED  ", r.simulatedTime,
+                   r.steps, r.maxCompression, r.finalInterfaceGap, r.wallSeconds);
+      if (!r.stable)
+        std::fprintf(stderr, "      failed at %.4f s: %s\n", r.failedAt, r.failure.c_str());
       runs.push_back(std::move(r));
     }
   try {

@@ -96,7 +96,8 @@ int runDemo(Args args) {
   world.materials.add(water);
   sim::addTankWalls(world, tank, d);
   const double gap = 0.7 * d;  // first particle 1.2 d from the walls (see sim/scenes/box_scene.h)
-  sim::addFluidBlock(world, sim::Vec3(gap, gap, gap), sim::Vec3(gap + 0.2, gap + 0.4, gap + 0.1), d, 0);
+  sim::addFluidBlock(world, sim::Vec3(gap, gap, gap), sim::Vec3(gap + 0.2, gap + 0.4, gap + 0.1), d,
+                     0);
   world.initialize();
 
   sim::PipelineOptions options;
@@ -127,9 +128,9 @@ int runDemo(Args args) {
       nextFrame += frameInterval;
       const double elapsed =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      std::printf("  t = %5.3f s of %.3f s, step %6ld, dt %.2e s, max speed %.2f m/s, %.0f s elapsed\n",
-                  world.time, o.time, world.stepCount, world.lastTimeStep, sim::maxSpeed(world),
-                  elapsed);
+      std::printf(
+          "  t = %5.3f s of %.3f s, step %6ld, dt %.2e s, max speed %.2f m/s, %.0f s elapsed\n",
+          world.time, o.time, world.stepCount, world.lastTimeStep, sim::maxSpeed(world), elapsed);
       std::fflush(stdout);
     }
     pipeline.step(world);

@@ -29,16 +29,18 @@ constexpr const char* kMeshUsage =
     "check   reads a mesh (STL, OBJ, PLY, OFF, ...), reports what is wrong and what was repaired,\n"
     "        area, volume, size and units. Exit 0 if usable (as is or repaired), 2 if refused.\n"
     "sample  checks the mesh, then samples wall particles on its surface and interior particles\n"
-    "        on a cubic lattice (gap spacing/2 from the wall); prints counts and nearest-neighbour\n"
-    "        spacing; --out writes both as a PLY point cloud in metres (label 0 wall, 1 interior).\n"
+    "        on a cubic lattice (gap spacing/2 from the wall); prints counts and "
+    "nearest-neighbour\n"
+    "        spacing; --out writes both as a PLY point cloud in metres (label 0 wall, 1 "
+    "interior).\n"
     "        HDF5 output comes with protocols/.\n\n"
     "--units   units of the file; without it they are guessed from the size (with a warning)\n"
     "--spacing particle spacing with a unit: 0.4mm, 400um, 0.0004m\n";
 
-
 // Strict "<number><unit>" with unit m, mm or um; positive and finite.
 double parseLength(std::string_view text, const char* option) {
-  static const std::regex pattern(R"(^\s*((?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(mm|um|m)\s*$)");
+  static const std::regex pattern(
+      R"(^\s*((?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(mm|um|m)\s*$)");
   std::cmatch match;
   const std::string s(text);
   if (!std::regex_match(s.c_str(), match, pattern))
@@ -70,11 +72,13 @@ MeshOptions parseOptions(Args args, bool sample) {
     };
     if (a == "--units") {
       const std::string_view u = value();
-      if (u != "mm" && u != "m") throw UsageError("--units must be mm or m, not '" + std::string(u) + "'");
+      if (u != "mm" && u != "m")
+        throw UsageError("--units must be mm or m, not '" + std::string(u) + "'");
       o.units = meshing::parseLengthUnit(u);
     } else if (a == "--max-hole-edges" && !sample) {
       const std::string v(value());
-      if (!std::regex_match(v, std::regex("[0-9]{1,4}"))) throw UsageError("--max-hole-edges needs a whole number");
+      if (!std::regex_match(v, std::regex("[0-9]{1,4}")))
+        throw UsageError("--max-hole-edges needs a whole number");
       o.maxHoleEdges = std::stoi(v);
     } else if (a == "--spacing" && sample) {
       o.spacing = parseLength(value(), "--spacing");
@@ -93,16 +97,20 @@ MeshOptions parseOptions(Args args, bool sample) {
   return o;
 }
 
-void printReport(const meshing::ImportResult& imported, const meshing::MeshReport& report, const std::string& file) {
+void printReport(const meshing::ImportResult& imported, const meshing::MeshReport& report,
+                 const std::string& file) {
   std::printf("file:      %s\n", file.c_str());
-  std::printf("units:     %s%s\n", meshing::toString(imported.unit), imported.unitGuessed ? " (guessed)" : "");
+  std::printf("units:     %s%s\n", meshing::toString(imported.unit),
+              imported.unitGuessed ? " (guessed)" : "");
   for (const auto& w : imported.warnings) std::printf("warning:   %s\n", w.c_str());
   std::printf("input:     %d vertices, %d faces\n", report.inputVertices, report.inputFaces);
   for (const auto& r : report.repairs) std::printf("repaired:  %s\n", r.c_str());  // places in mm
   for (const auto& r : report.refusals) std::printf("REFUSED:   %s\n", r.c_str());
   const auto& m = report.measures;
   const meshing::Vec3 size = m.boundsMax - m.boundsMin;  // [mm]: checked in mm
-  std::printf("status:    %s\n", !report.isUsable() ? "refused" : report.wasRepaired() ? "repaired" : "ok");
+  std::printf("status:    %s\n", !report.isUsable()     ? "refused"
+                                 : report.wasRepaired() ? "repaired"
+                                                        : "ok");
   std::printf("area:      %.4g mm^2\n", m.area);
   if (report.isUsable())
     std::printf("volume:    %.4g mm^3 (%.4g mL)\n", m.signedVolume, m.signedVolume * 1e-3);
@@ -110,7 +118,8 @@ void printReport(const meshing::ImportResult& imported, const meshing::MeshRepor
 }
 
 // checkMesh() on the mesh in mm, so that the places named in its messages read in mm.
-meshing::MeshReport checkInMillimetres(const meshing::TriangleMesh& metres, const meshing::MeshCheckOptions& options) {
+meshing::MeshReport checkInMillimetres(const meshing::TriangleMesh& metres,
+                                       const meshing::MeshCheckOptions& options) {
   meshing::TriangleMesh mm = metres;
   for (meshing::Vec3& v : mm.vertices) v *= 1e3;
   meshing::MeshReport report = meshing::checkMesh(mm, options);
@@ -124,7 +133,8 @@ int runCheck(const MeshOptions& o) {
   const meshing::MeshReport report = checkInMillimetres(imported.mesh, checkOptions);
   printReport(imported, report, o.file);
   if (!report.isUsable()) {
-    std::fprintf(stderr, "tamponade mesh: %s: mesh refused: %s\n", o.file.c_str(), report.refusals.front().c_str());
+    std::fprintf(stderr, "tamponade mesh: %s: mesh refused: %s\n", o.file.c_str(),
+                 report.refusals.front().c_str());
     return 2;
   }
   return 0;
@@ -135,10 +145,11 @@ int runSample(const MeshOptions& o) {
   const meshing::MeshReport report = checkInMillimetres(imported.mesh, {});
   printReport(imported, report, o.file);
   if (!report.isUsable()) {
-    std::fprintf(stderr, "tamponade mesh: %s: mesh refused: %s\n", o.file.c_str(), report.refusals.front().c_str());
+    std::fprintf(stderr, "tamponade mesh: %s: mesh refused: %s\n", o.file.c_str(),
+                 report.refusals.front().c_str());
     return 2;
   }
-  const double d = *o.spacing;  // [m]
+  const double d = *o.spacing;                 // [m]
   meshing::TriangleMesh cavity = report.mesh;  // [m] back from mm
   for (meshing::Vec3& v : cavity.vertices) v *= 1e-3;
   const double volume = report.measures.signedVolume * 1e-9;  // [m^3]
@@ -153,11 +164,12 @@ int runSample(const MeshOptions& o) {
   std::printf("spacing:   %.4g mm (interior gap %.4g mm from the wall)\n", d * 1e3, 0.5 * d * 1e3);
   std::printf("wall:      %zu particles, nearest neighbour min %.4g / mean %.4g mm\n", wall.size(),
               wallSpacing.minimum * 1e3, wallSpacing.mean * 1e3);
-  std::printf("interior:  %zu particles, nearest neighbour min %.4g / mean %.4g mm, N d^3 = %.4g mm^3 "
-              "(%.1f %% of the volume; the d/2 wall gap holds the rest)\n",
-              interior.size(), interiorSpacing.minimum * 1e3, interiorSpacing.mean * 1e3,
-              static_cast<double>(interior.size()) * d * d * d * 1e9,
-              100.0 * static_cast<double>(interior.size()) * d * d * d / volume);
+  std::printf(
+      "interior:  %zu particles, nearest neighbour min %.4g / mean %.4g mm, N d^3 = %.4g mm^3 "
+      "(%.1f %% of the volume; the d/2 wall gap holds the rest)\n",
+      interior.size(), interiorSpacing.minimum * 1e3, interiorSpacing.mean * 1e3,
+      static_cast<double>(interior.size()) * d * d * d * 1e9,
+      100.0 * static_cast<double>(interior.size()) * d * d * d / volume);
   if (!o.out.empty()) {
     std::vector<meshing::Vec3> points = wall.points;
     points.insert(points.end(), interior.begin(), interior.end());
@@ -191,7 +203,8 @@ int runMesh(Args args) {
   try {
     if (sub == "check") return runCheck(parseOptions(args.subspan(1), false));
     if (sub == "sample") return runSample(parseOptions(args.subspan(1), true));
-    throw UsageError("unknown mesh command '" + std::string(sub) + "' (use check, sample or generate)");
+    throw UsageError("unknown mesh command '" + std::string(sub) +
+                     "' (use check, sample or generate)");
   } catch (const UsageError& e) {
     std::fprintf(stderr, "tamponade mesh: %s\n\n%s", e.what(), kMeshUsage);
     return 2;

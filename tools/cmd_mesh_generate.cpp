@@ -24,12 +24,15 @@ constexpr const char* kHelp =
     "                               [--staphyloma-width W] [--lens-depth L] [--cap-sag S]\n"
     "                               [--resolution N] [--units mm|m]\n"
     "\n"
-    "Generates a closed, outward-oriented vitreous cavity in the eye frame (origin at the cavity's\n"
-    "centroid, +z anterior, +y superior, +x toward the patient's left) and prints its axial length,\n"
+    "Generates a closed, outward-oriented vitreous cavity in the eye frame (origin at the "
+    "cavity's\n"
+    "centroid, +z anterior, +y superior, +x toward the patient's left) and prints its axial "
+    "length,\n"
     "volume, area and watertightness. Lengths need a unit: 28mm, 0.028m.\n"
     "\n"
     "  --type              emmetropic (Atchison 2006 eye scaled to the axial length), myopic\n"
-    "                      (Atchison 2005 radii vs refraction), staphyloma (myopic + posterior bulge)\n"
+    "                      (Atchison 2005 radii vs refraction), staphyloma (myopic + posterior "
+    "bulge)\n"
     "  --axial-length      corneal apex to retina; defaults 23.58mm / 28mm / 29mm by type\n"
     "                      (ranges 20-26mm / 24-34mm / 24-36mm)\n"
     "  --staphyloma-depth  depth of the bulge (staphyloma only, default 2mm, 0.2-6mm)\n"
@@ -39,7 +42,6 @@ constexpr const char* kHelp =
     "  --resolution        segments around the optical axis (default 96, 8-4096)\n"
     "  --units             units of the written file (default mm)\n"
     "  --out               output file; the extension picks STL (binary), OBJ or PLY\n";
-
 
 double parseLength(std::string_view option, std::string_view text) {
   const std::string s(text);
@@ -89,18 +91,29 @@ int runMeshGenerate(Args args) {
       }
       if (i + 1 >= args.size()) throw UsageError(std::string(option) + " needs a value");
       const std::string_view value = args[++i];
-      if (option == "--type") type = value;
-      else if (option == "--out") out = value;
-      else if (option == "--axial-length") axialLength = parseLength(option, value);
-      else if (option == "--staphyloma-depth") depth = parseLength(option, value);
-      else if (option == "--staphyloma-width") width = parseLength(option, value);
-      else if (option == "--lens-depth") lensDepth = parseLength(option, value);
-      else if (option == "--cap-sag") capSag = parseLength(option, value);
-      else if (option == "--resolution") resolution = parseCount(option, value);
+      if (option == "--type")
+        type = value;
+      else if (option == "--out")
+        out = value;
+      else if (option == "--axial-length")
+        axialLength = parseLength(option, value);
+      else if (option == "--staphyloma-depth")
+        depth = parseLength(option, value);
+      else if (option == "--staphyloma-width")
+        width = parseLength(option, value);
+      else if (option == "--lens-depth")
+        lensDepth = parseLength(option, value);
+      else if (option == "--cap-sag")
+        capSag = parseLength(option, value);
+      else if (option == "--resolution")
+        resolution = parseCount(option, value);
       else if (option == "--units") {
-        if (value == "mm") fileScale = 1e3;
-        else if (value == "m") fileScale = 1.0;
-        else throw UsageError("--units '" + std::string(value) + "' must be mm or m");
+        if (value == "mm")
+          fileScale = 1e3;
+        else if (value == "m")
+          fileScale = 1.0;
+        else
+          throw UsageError("--units '" + std::string(value) + "' must be mm or m");
       } else {
         throw UsageError("unknown option '" + std::string(option) + "'");
       }
@@ -163,8 +176,9 @@ int runMeshGenerate(Args args) {
   }
   const auto& g = cavity->shape.geometry();
   std::printf("type            %s\n", cavity->type.c_str());
-  std::printf("axial length    %.2f mm (corneal apex to posterior pole; cavity on the axis %.2f mm)\n",
-              cavity->axialLength * 1e3, cavity->axialDepth * 1e3);
+  std::printf(
+      "axial length    %.2f mm (corneal apex to posterior pole; cavity on the axis %.2f mm)\n",
+      cavity->axialLength * 1e3, cavity->axialDepth * 1e3);
   std::printf("semi-axes       %.3f x %.3f x %.3f mm (horizontal, vertical, axial)\n",
               g.semiAxisHorizontal * 1e3, g.semiAxisVertical * 1e3, g.semiAxisAxial * 1e3);
   if (g.staphylomaDepth > 0.0)

@@ -87,11 +87,14 @@ int runPlan(Args args) {
     std::printf("  initial mean density: %s x rest density (see the fluid fill note)\n",
                 protocols::formatNumber(scenario.fillCompression, 3).c_str());
     for (const std::string& note : scenario.notes) std::printf("  note: %s\n", note.c_str());
-    if (!scenario.tissues.empty()) std::printf("\ntissues (elastic only when it matters, issue 7):\n");
-    for (const protocols::TissueBody& t : scenario.tissues) std::printf("  %s\n", t.describe().c_str());
+    if (!scenario.tissues.empty())
+      std::printf("\ntissues (elastic only when it matters, issue 7):\n");
+    for (const protocols::TissueBody& t : scenario.tissues)
+      std::printf("  %s\n", t.describe().c_str());
     for (const auto& [stage, limit] : plan.stageTimeStepLimits)
       if (stage == "elasticity")
-        std::printf("  elastic stage time-step limit %s s\n", protocols::formatNumber(limit, 3).c_str());
+        std::printf("  elastic stage time-step limit %s s\n",
+                    protocols::formatNumber(limit, 3).c_str());
     std::printf("\nfluid properties used:\n");
     for (const protocols::FluidPhase& ph : scenario.phases) {
       const double nu = ph.dynamicViscosity / ph.density;  // [m^2/s]
@@ -105,36 +108,41 @@ int runPlan(Args args) {
       std::printf("  interfacial tension %s mN/m (tamponade against aqueous)\n",
                   protocols::formatNumber(*tamponade.interfacialTension * 1e3, 3).c_str());
     if (tamponade.contactAngleThroughAqueous)
-      std::printf("  contact angle on the retina %s deg through the aqueous (%s deg through the "
-                  "tamponade)\n",
-                  protocols::formatNumber(*tamponade.contactAngleThroughAqueous, 3).c_str(),
-                  protocols::formatNumber(180.0 - *tamponade.contactAngleThroughAqueous, 3).c_str());
+      std::printf(
+          "  contact angle on the retina %s deg through the aqueous (%s deg through the "
+          "tamponade)\n",
+          protocols::formatNumber(*tamponade.contactAngleThroughAqueous, 3).c_str(),
+          protocols::formatNumber(180.0 - *tamponade.contactAngleThroughAqueous, 3).c_str());
     std::printf("\n%s\n", plan.pipeline.c_str());
     std::printf("memory: %s (particle fields %s, wall fields %s, neighbour lists %s)\n\n",
                 megabytes(plan.totalBytes()).c_str(), megabytes(plan.particleFieldBytes).c_str(),
                 megabytes(plan.wallFieldBytes).c_str(), megabytes(plan.neighborListBytes).c_str());
-    std::printf("cost model: calibrated by %d steps of this scene (%zu dynamic particles) on %d "
-                "thread%s after one warm-up step, %s s in all; the fastest step gives %s s per "
-                "particle-step%s\n",
-                plan.calibrationSteps, plan.dynamicParticles, plan.threads, plan.threads == 1 ? "" : "s",
-                protocols::formatNumber(plan.calibrationSeconds, 3).c_str(),
-                protocols::formatNumber(plan.secondsPerParticleStep, 3).c_str(),
-                plan.rejectedSteps > 0 ? " (rejected steps included)" : "");
+    std::printf(
+        "cost model: calibrated by %d steps of this scene (%zu dynamic particles) on %d "
+        "thread%s after one warm-up step, %s s in all; the fastest step gives %s s per "
+        "particle-step%s\n",
+        plan.calibrationSteps, plan.dynamicParticles, plan.threads, plan.threads == 1 ? "" : "s",
+        protocols::formatNumber(plan.calibrationSeconds, 3).c_str(),
+        protocols::formatNumber(plan.secondsPerParticleStep, 3).c_str(),
+        plan.rejectedSteps > 0 ? " (rejected steps included)" : "");
     std::printf("time-step limits of the stages at the start:");
     for (const auto& [stage, limit] : plan.stageTimeStepLimits)
       std::printf(" %s %s s;", stage.c_str(), protocols::formatNumber(limit, 3).c_str());
     std::printf("%s\n", plan.stageTimeStepLimits.empty() ? " none" : "");
     std::printf("first time step %s s, limited by %s; simulated time %s s\n",
-                protocols::formatNumber(plan.firstTimeStep, 3).c_str(), plan.timeStepLimitedBy.c_str(),
+                protocols::formatNumber(plan.firstTimeStep, 3).c_str(),
+                plan.timeStepLimitedBy.c_str(),
                 protocols::formatNumber(plan.simulatedDuration, 4).c_str());
-    std::printf("estimated run time (a lower bound: flows shorten the step, finer presets need "
-                "more solver iterations):\n");
-    std::printf("  %-9s %8s %11s %11s %10s %10s\n", "preset", "d [mm]", "particles", "dt [s]", "steps",
-                "time");
+    std::printf(
+        "estimated run time (a lower bound: flows shorten the step, finer presets need "
+        "more solver iterations):\n");
+    std::printf("  %-9s %8s %11s %11s %10s %10s\n", "preset", "d [mm]", "particles", "dt [s]",
+                "steps", "time");
     for (const protocols::PresetEstimate& e : plan.presets)
       std::printf("  %-9s %8s %11.0f %11s %10.0f %10s\n", e.preset.c_str(),
                   protocols::formatNumber(e.particleSpacing * 1e3, 3).c_str(), e.particles,
-                  protocols::formatNumber(e.timeStep, 3).c_str(), e.steps, duration(e.seconds).c_str());
+                  protocols::formatNumber(e.timeStep, 3).c_str(), e.steps,
+                  duration(e.seconds).c_str());
     return 0;
   } catch (const protocols::ProtocolError& e) {
     return printProtocolError(e);

@@ -32,7 +32,8 @@ int runReport(Args args) {
   try {
     protocols::rebuildReport(folder);
   } catch (const protocols::ProtocolError& e) {
-    for (const protocols::Diagnostic& d : e.diagnostics()) std::fprintf(stderr, "%s\n", d.toString().c_str());
+    for (const protocols::Diagnostic& d : e.diagnostics())
+      std::fprintf(stderr, "%s\n", d.toString().c_str());
     return 2;
   }
   std::printf("report rebuilt: %s\n", (folder / "report.html").string().c_str());

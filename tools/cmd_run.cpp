@@ -6,8 +6,8 @@
 #include <atomic>
 #include <chrono>
 #include <csignal>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 
@@ -28,7 +28,8 @@ namespace tools {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: tamponade run PROTOCOL.toml [--out DIR] [--accuracy draft|standard|fine] [--threads N]\n"
+    "usage: tamponade run PROTOCOL.toml [--out DIR] [--accuracy draft|standard|fine] [--threads "
+    "N]\n"
     "       tamponade run --resume DIR [--threads N]\n\n"
     "Runs the protocol: frames.h5 + frames.xmf (ParaView), the coverage time series, and\n"
     "report.html, coverage.csv, summary.json in the output folder (default: the protocol's\n"
@@ -101,19 +102,24 @@ int runRun(Args args) {
   if (threads > 0) omp_set_num_threads(threads);
 #endif
   try {
-    if (!resume.empty() && !std::filesystem::exists(std::filesystem::path(resume) / "checkpoint.h5")) {
-      std::fprintf(stderr, "tamponade run: %s has no checkpoint.h5 to resume from\n", resume.c_str());
+    if (!resume.empty() &&
+        !std::filesystem::exists(std::filesystem::path(resume) / "checkpoint.h5")) {
+      std::fprintf(stderr, "tamponade run: %s has no checkpoint.h5 to resume from\n",
+                   resume.c_str());
       return 2;
     }
-    const protocols::Protocol protocol =
-        resume.empty() ? protocols::parseProtocol(file) : protocols::loadRunProtocol(resume, options);
+    const protocols::Protocol protocol = resume.empty()
+                                             ? protocols::parseProtocol(file)
+                                             : protocols::loadRunProtocol(resume, options);
     protocols::Scenario scenario = protocols::assembleScenario(protocol, options);
     const std::filesystem::path folder(!resume.empty() ? resume
                                        : out.empty()   ? protocol.outputs.folder.value
                                                        : out);
     if (resume.empty() && std::filesystem::exists(folder / "frames.h5")) {
-      std::fprintf(stderr, "tamponade run: %s already holds a run (frames.h5); choose another --out "
-                   "or remove it\n", folder.string().c_str());
+      std::fprintf(stderr,
+                   "tamponade run: %s already holds a run (frames.h5); choose another --out "
+                   "or remove it\n",
+                   folder.string().c_str());
       return 2;
     }
     std::filesystem::create_directories(folder);
@@ -130,10 +136,12 @@ int runRun(Args args) {
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);
     if (options.accuracy)
-      run.accuracyOverride = std::string(protocols::kAccuracyPresetNames[static_cast<std::size_t>(*options.accuracy)]);
+      run.accuracyOverride =
+          std::string(protocols::kAccuracyPresetNames[static_cast<std::size_t>(*options.accuracy)]);
     double lastBar = -1.0;  // [s] wall time of the last bar redraw (at most 10 per second)
     run.progress = [&](const protocols::RunProgress& p) {
-      const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      const double elapsed =
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
       if (terminal) {
         if (elapsed - lastBar < 0.1) return;
         lastBar = elapsed;
@@ -146,9 +154,10 @@ int runRun(Args args) {
     const protocols::RunSummary summary = protocols::runScenario(protocol, scenario, run);
     if (terminal) std::fputc('\n', stderr);
     if (summary.stopped) {
-      std::printf("run stopped at t = %.6g s (step %ld) with a checkpoint; continue with\n"
-                  "  tamponade run --resume %s\n",
-                  summary.simulatedTime, summary.steps, folder.string().c_str());
+      std::printf(
+          "run stopped at t = %.6g s (step %ld) with a checkpoint; continue with\n"
+          "  tamponade run --resume %s\n",
+          summary.simulatedTime, summary.steps, folder.string().c_str());
       std::fflush(stdout);
       const int signalNumber = gSignal.load();
       return signalNumber != 0 ? 128 + signalNumber : 1;
@@ -160,10 +169,11 @@ int runRun(Args args) {
                     *posture.endedSteady ? "steady" : "not steady, stopped at its maximum",
                     posture.duration);
     }
-    std::printf("run finished: %ld steps, %zu frames, %.4g s simulated in %.1f s; mean retinal "
-                "coverage %s\noutput: %s\n",
-                summary.steps, summary.frames, summary.simulatedTime, summary.wallSeconds,
-                protocols::formatPercent(summary.retinaCoverage).c_str(), folder.string().c_str());
+    std::printf(
+        "run finished: %ld steps, %zu frames, %.4g s simulated in %.1f s; mean retinal "
+        "coverage %s\noutput: %s\n",
+        summary.steps, summary.frames, summary.simulatedTime, summary.wallSeconds,
+        protocols::formatPercent(summary.retinaCoverage).c_str(), folder.string().c_str());
     return 0;
   } catch (const protocols::ProtocolError& e) {
     return printProtocolError(e);

@@ -29,7 +29,8 @@ int runValidate(Args args) {
   if (args.size() == 1 && args[0] == "--reference") {
     std::printf("<!-- begin parameter-reference -->\n%s<!-- end parameter-reference -->\n\n",
                 protocols::renderParameterReference().c_str());
-    std::printf("<!-- begin unit-table -->\n%s<!-- end unit-table -->\n\n", protocols::renderUnitTable().c_str());
+    std::printf("<!-- begin unit-table -->\n%s<!-- end unit-table -->\n\n",
+                protocols::renderUnitTable().c_str());
     std::printf("<!-- begin accuracy-presets -->\n%s<!-- end accuracy-presets -->\n",
                 protocols::renderAccuracyPresetTable().c_str());
     return 0;

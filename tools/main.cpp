@@ -15,11 +15,11 @@ int runVersion(Args) {
   std::printf("tamponade %s\n", TAMPONADE_VERSION);
   return 0;
 }
-int runDemo(Args args);  // tools/cmd_demo.cpp
-int runMesh(Args args);  // tools/cmd_mesh.cpp
-int runBench(Args args);  // tools/cmd_bench.cpp
-int runPlan(Args args);  // tools/cmd_plan.cpp
-int runRun(Args args);  // tools/cmd_run.cpp
+int runDemo(Args args);    // tools/cmd_demo.cpp
+int runMesh(Args args);    // tools/cmd_mesh.cpp
+int runBench(Args args);   // tools/cmd_bench.cpp
+int runPlan(Args args);    // tools/cmd_plan.cpp
+int runRun(Args args);     // tools/cmd_run.cpp
 int runReport(Args args);  // tools/cmd_report.cpp
 }  // namespace tools
 
@@ -27,12 +27,18 @@ namespace {
 
 constexpr std::array kCommands = {
     tools::Command{"run", "run a protocol: frames, coverage series and report", tools::runRun},
-    tools::Command{"plan", "show the assembled scene, pipeline, memory and run-time estimate", tools::runPlan},
+    tools::Command{"plan", "show the assembled scene, pipeline, memory and run-time estimate",
+                   tools::runPlan},
     tools::Command{"report", "rebuild a run's report from its files", tools::runReport},
-    tools::Command{"validate", "check a protocol file and print it in SI units", tools::runValidate},
+    tools::Command{"validate", "check a protocol file and print it in SI units",
+                   tools::runValidate},
     tools::Command{"mesh", "check, repair, sample and generate eye meshes", tools::runMesh},
-    tools::Command{"demo", "run the built-in dam-break scene, write HDF5 + XDMF frames", tools::runDemo},
-    tools::Command{"bench", "benchmarks: bench engine (dam break speed), bench solvers (multiphase comparison), bench accuracy (accuracy vs time of a protocol)", tools::runBench},
+    tools::Command{"demo", "run the built-in dam-break scene, write HDF5 + XDMF frames",
+                   tools::runDemo},
+    tools::Command{"bench",
+                   "benchmarks: bench engine (dam break speed), bench solvers (multiphase "
+                   "comparison), bench accuracy (accuracy vs time of a protocol)",
+                   tools::runBench},
     tools::Command{"version", "print the version", tools::runVersion},
 };
 

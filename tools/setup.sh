@@ -11,6 +11,7 @@ packages=(
   libhdf5-dev hdf5-tools                        # frames and checkpoints; h5dump for inspection
   libtomlplusplus-dev                           # protocol files with exact line/column
   catch2                                        # tests
+  clang-format                                  # the format test (tests/check_format.sh)
 )
 
 missing=()

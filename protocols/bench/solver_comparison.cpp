@@ -52,7 +52,9 @@ void writeText(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
   out.close();
-  if (!out) throw IoError(path.string(), "", "cannot write the file", "check the folder's permissions and free space");
+  if (!out)
+    throw IoError(path.string(), "", "cannot write the file",
+                  "check the folder's permissions and free space");
 }
 
 }  // namespace
@@ -74,7 +76,7 @@ SolverComparisonRun runSolverComparison(const TwoPhaseDamBreakSpec& spec, double
   long gapSamples = 0;
   double ratioSum = 0.0;
   long ratioSamples = 0;
-  double compressionSum = 0.0;     // [1 s] time integral of the average compression
+  double compressionSum = 0.0;  // [1 s] time integral of the average compression
   const auto start = std::chrono::steady_clock::now();
   while (world.time < duration) {
     try {
@@ -98,12 +100,13 @@ SolverComparisonRun runSolverComparison(const TwoPhaseDamBreakSpec& spec, double
         ++ratioSamples;
       }
     }
-    run.series.push_back({world.time, world.stepCount, stats.averageCompression, stats.maxCompression,
-                          iterations, cumulative, gap});
+    run.series.push_back({world.time, world.stepCount, stats.averageCompression,
+                          stats.maxCompression, iterations, cumulative, gap});
     compressionSum += stats.averageCompression * world.lastTimeStep;
     run.maxCompression = std::max(run.maxCompression, stats.maxCompression);
     if (sim::allFinite(world))
-      run.peakEnergyRatio = std::max(run.peakEnergyRatio, sim::kineticEnergy(world) / scene.potentialEnergy);
+      run.peakEnergyRatio =
+          std::max(run.peakEnergyRatio, sim::kineticEnergy(world) / scene.potentialEnergy);
     const std::string failure = failureOf(scene, pipeline.solver(), limits);
     if (!failure.empty()) {
       run.stable = false;
@@ -121,7 +124,8 @@ SolverComparisonRun runSolverComparison(const TwoPhaseDamBreakSpec& spec, double
   }
   if (gapSamples > 0) run.meanInterfaceGap = gapSum / static_cast<double>(gapSamples);
   run.finalInterfaceGap = gap;
-  if (ratioSamples > 0) run.meanInterfaceDensityRatio = ratioSum / static_cast<double>(ratioSamples);
+  if (ratioSamples > 0)
+    run.meanInterfaceDensityRatio = ratioSum / static_cast<double>(ratioSamples);
   return run;
 }
 
@@ -141,10 +145,12 @@ std::string solverComparisonCsv(const std::vector<SolverComparisonRun>& runs) {
     for (char& c : failure)
       if (c == ',' || c == '"') c = ';';
     csv << r.solver << ",1:" << ratioText(r.densityRatio) << ',' << r.particles << ','
-        << (r.stable ? "yes" : "no") << ',' << (r.stable ? std::string() : ratioText(r.failedAt)) << ','
-        << failure << ',' << r.simulatedTime << ',' << r.steps << ',' << r.meanAverageCompression << ','
-        << r.maxCompression << ',' << r.meanIterations << ',' << r.meanInterfaceGap << ','
-        << r.finalInterfaceGap << ',' << r.meanInterfaceDensityRatio << ',' << r.peakEnergyRatio << ',' << r.wallSeconds << ',' << r.wallPerSimulatedSecond() << '\n';
+        << (r.stable ? "yes" : "no") << ',' << (r.stable ? std::string() : ratioText(r.failedAt))
+        << ',' << failure << ',' << r.simulatedTime << ',' << r.steps << ','
+        << r.meanAverageCompression << ',' << r.maxCompression << ',' << r.meanIterations << ','
+        << r.meanInterfaceGap << ',' << r.finalInterfaceGap << ',' << r.meanInterfaceDensityRatio
+        << ',' << r.peakEnergyRatio << ',' << r.wallSeconds << ',' << r.wallPerSimulatedSecond()
+        << '\n';
   }
   return csv.str();
 }
@@ -158,11 +164,15 @@ std::string solverComparisonMarkdown(const std::vector<SolverComparisonRun>& run
   char line[512];
   for (const SolverComparisonRun& r : runs) {
     const std::string stability =
-        r.stable ? "yes" : "no (" + ratioText(std::round(r.failedAt * 1e4) / 1e4) + " s: " + r.failure + ")";
-    std::snprintf(line, sizeof line, "| %s | 1:%s | %s | %.2e / %.2e | %.1f | %.2f / %.2f | %.3f | %.2g | %.3g |\n",
+        r.stable
+            ? "yes"
+            : "no (" + ratioText(std::round(r.failedAt * 1e4) / 1e4) + " s: " + r.failure + ")";
+    std::snprintf(line, sizeof line,
+                  "| %s | 1:%s | %s | %.2e / %.2e | %.1f | %.2f / %.2f | %.3f | %.2g | %.3g |\n",
                   r.solver.c_str(), ratioText(r.densityRatio).c_str(), stability.c_str(),
                   r.meanAverageCompression, r.maxCompression, r.meanIterations, r.meanInterfaceGap,
-                  r.finalInterfaceGap, r.meanInterfaceDensityRatio, r.peakEnergyRatio, r.wallPerSimulatedSecond());
+                  r.finalInterfaceGap, r.meanInterfaceDensityRatio, r.peakEnergyRatio,
+                  r.wallPerSimulatedSecond());
     md << line;
   }
   return md.str();
@@ -173,7 +183,8 @@ std::string compressionSeriesCsv(const SolverComparisonRun& run) {
   csv.precision(9);
   csv << "time_s,step,average_compression,max_compression\n";
   for (const auto& s : run.series)
-    csv << s.time << ',' << s.step << ',' << s.averageCompression << ',' << s.maxCompression << '\n';
+    csv << s.time << ',' << s.step << ',' << s.averageCompression << ',' << s.maxCompression
+        << '\n';
   return csv.str();
 }
 
@@ -191,7 +202,9 @@ void writeSolverComparison(const std::vector<SolverComparisonRun>& runs,
                            const std::filesystem::path& folder) {
   std::error_code ec;
   std::filesystem::create_directories(folder, ec);
-  if (ec) throw IoError(folder.string(), "", "cannot create the folder: " + ec.message(), "choose another --out");
+  if (ec)
+    throw IoError(folder.string(), "", "cannot create the folder: " + ec.message(),
+                  "choose another --out");
   writeText(folder / "solvers.csv", solverComparisonCsv(runs));
   writeText(folder / "solvers.md", solverComparisonMarkdown(runs));
   for (const SolverComparisonRun& r : runs) {

@@ -17,25 +17,26 @@ namespace protocols {
 
 // One row of the per-run time series.
 struct SolverComparisonSample {
-  double time = 0.0;                // [s] simulated, at the end of the step
+  double time = 0.0;  // [s] simulated, at the end of the step
   long step = 0;
-  double averageCompression = 0.0;  // [1] the solver's own measure (rho/rho0 - 1 or delta/delta0 - 1)
-  double maxCompression = 0.0;      // [1]
-  long iterations = 0;              // density (or number-density) + divergence iterations this step
+  double averageCompression =
+      0.0;                      // [1] the solver's own measure (rho/rho0 - 1 or delta/delta0 - 1)
+  double maxCompression = 0.0;  // [1]
+  long iterations = 0;          // density (or number-density) + divergence iterations this step
   long cumulativeIterations = 0;
-  double interfaceGap = 0.0;        // [d] mean nearest heavy-light distance (every 10th step, else
-                                    //     the last value)
+  double interfaceGap = 0.0;  // [d] mean nearest heavy-light distance (every 10th step, else
+                              //     the last value)
 };
 
 struct SolverComparisonRun {
   std::string solver;
-  double densityRatio = 0.0;        // [1] heavy / light
+  double densityRatio = 0.0;  // [1] heavy / light
   long particles = 0;
-  double duration = 0.0;            // [s] simulated time asked for
+  double duration = 0.0;  // [s] simulated time asked for
   bool stable = true;
-  double failedAt = -1.0;           // [s] simulated time of the failure (stable == false)
-  std::string failure;              // why, in words ("" when stable)
-  double simulatedTime = 0.0;       // [s] reached
+  double failedAt = -1.0;      // [s] simulated time of the failure (stable == false)
+  std::string failure;         // why, in words ("" when stable)
+  double simulatedTime = 0.0;  // [s] reached
   long steps = 0;
   double meanAverageCompression = 0.0;  // [1] time average over the steps run
   double maxCompression = 0.0;          // [1] largest per-step maximum
@@ -45,8 +46,8 @@ struct SolverComparisonRun {
   // [1] interface / bulk number density (sim::InterfaceGap::numberDensityRatio), mean over the
   // samples with an interface; below 1 where a gap opens, ~1 without
   double meanInterfaceDensityRatio = 0.0;
-  double peakEnergyRatio = 0.0;         // [1] largest kinetic energy / released potential energy
-  double wallSeconds = 0.0;             // [s] time loop only
+  double peakEnergyRatio = 0.0;  // [1] largest kinetic energy / released potential energy
+  double wallSeconds = 0.0;      // [s] time loop only
   std::vector<SolverComparisonSample> series;
   double wallPerSimulatedSecond() const {
     return simulatedTime > 0 ? wallSeconds / simulatedTime : 0.0;
@@ -61,9 +62,10 @@ struct SolverComparisonRun {
 // records the peak ratio (`peakEnergyRatio`) so that shows, but only 10x counts as failed: the
 // paper calls a run stable when it does not explode, and DFSPH with mass-weighted density puts
 // 1-3x the released energy into the interface in its first step at 1:10 and above (the push that
-// opens the gap between the phases) and then continues. That last test is off by default: with mass-weighted density a light particle
-// next to heavy ones reads "compressed" by the heavy neighbours' mass (at 1:10, +135 % at rest;
-// Wang et al. 2023 section 3.3), which is the very artefact the comparison shows, not a blow-up.
+// opens the gap between the phases) and then continues. That last test is off by default: with
+// mass-weighted density a light particle next to heavy ones reads "compressed" by the heavy
+// neighbours' mass (at 1:10, +135 % at rest; Wang et al. 2023 section 3.3), which is the very
+// artefact the comparison shows, not a blow-up.
 struct SolverComparisonLimits {
   double energyFactor = 10.0;                                       // [1]
   double maxCompression = std::numeric_limits<double>::infinity();  // [1]

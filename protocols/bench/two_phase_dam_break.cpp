@@ -23,10 +23,11 @@ TwoPhaseDamBreak buildTwoPhaseDamBreak(const TwoPhaseDamBreakSpec& spec) {
   const double a = spec.columnWidth, d = spec.spacing;
   if (!(a > 0) || !(d > 0) || d > a / 4 || !(spec.depth >= 4 * d) || !(spec.densityRatio >= 1) ||
       !(spec.heavyDensity > 0))
-    throw sim::SimError("two-phase dam break: need a > 0, 0 < d <= a/4, depth >= 4 d, density "
-                        "ratio >= 1 (got a = " + std::to_string(a) + " m, d = " + std::to_string(d) +
-                        " m, depth = " + std::to_string(spec.depth) + " m, ratio = " +
-                        std::to_string(spec.densityRatio) + ")");
+    throw sim::SimError(
+        "two-phase dam break: need a > 0, 0 < d <= a/4, depth >= 4 d, density "
+        "ratio >= 1 (got a = " +
+        std::to_string(a) + " m, d = " + std::to_string(d) + " m, depth = " +
+        std::to_string(spec.depth) + " m, ratio = " + std::to_string(spec.densityRatio) + ")");
   bool known = false;
   for (const auto& s : sim::solverRegistry()) known = known || s.name == spec.solver;
   if (!known) throw sim::SimError("two-phase dam break: unknown solver '" + spec.solver + "'");
@@ -34,7 +35,7 @@ TwoPhaseDamBreak buildTwoPhaseDamBreak(const TwoPhaseDamBreakSpec& spec) {
   TwoPhaseDamBreak scene;
   scene.spec = spec;
   const double gap = (kWallGap - 0.5) * d;  // [m] lattice cells are centred
-  const double height = 2 * a;               // [m]
+  const double height = 2 * a;              // [m]
   scene.tank.innerMin = sim::Vec3::Zero();
   scene.tank.innerMax = sim::Vec3(4 * a + 2 * gap, 3 * a, spec.depth + 2 * gap);
   scene.tank.closedTop = true;  // the light phase is thrown high at 1:75; a lid keeps it in
@@ -47,8 +48,10 @@ TwoPhaseDamBreak buildTwoPhaseDamBreak(const TwoPhaseDamBreakSpec& spec) {
   world.materials.add(fluid("heavy", spec.heavyDensity));
   world.materials.add(fluid("light", spec.heavyDensity / spec.densityRatio));
   sim::addTankWalls(world, scene.tank, d);
-  sim::addFluidBlock(world, sim::Vec3::Constant(gap), sim::Vec3(gap + a, gap + height, gap + spec.depth), d, 0);
-  sim::addFluidBlock(world, sim::Vec3(gap + a, gap, gap), sim::Vec3(gap + 2 * a, gap + height, gap + spec.depth), d, 1);
+  sim::addFluidBlock(world, sim::Vec3::Constant(gap),
+                     sim::Vec3(gap + a, gap + height, gap + spec.depth), d, 0);
+  sim::addFluidBlock(world, sim::Vec3(gap + a, gap, gap),
+                     sim::Vec3(gap + 2 * a, gap + height, gap + spec.depth), d, 1);
   world.initialize();
   for (std::size_t i = 0; i < world.particles.size(); ++i)
     scene.potentialEnergy += world.particles.mass[i] * spec.gravity * world.particles.x[i].y();

@@ -19,13 +19,13 @@
 namespace protocols {
 
 struct TwoPhaseDamBreakSpec {
-  double columnWidth = 0.04;      // [m] a
-  double spacing = 0.005;         // [m] d
-  double depth = 0.02;            // [m] fluid extent in z
-  double heavyDensity = 1000.0;   // [kg/m^3]
-  double densityRatio = 10.0;     // [1] heavy / light (2 means 1:2)
+  double columnWidth = 0.04;     // [m] a
+  double spacing = 0.005;        // [m] d
+  double depth = 0.02;           // [m] fluid extent in z
+  double heavyDensity = 1000.0;  // [kg/m^3]
+  double densityRatio = 10.0;    // [1] heavy / light (2 means 1:2)
   std::string solver = "indsph";
-  double gravity = 9.81;          // [m/s^2] along -y
+  double gravity = 9.81;  // [m/s^2] along -y
 };
 
 struct TwoPhaseDamBreak {

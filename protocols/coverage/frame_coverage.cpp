@@ -35,7 +35,8 @@ FrameCoverage measureFrameCoverage(const RetinaMap& map, const WallOilFractions&
     const anatomy::RegionSet r = map.regions[w];
     if (r == 0) continue;
     for (std::size_t k = 0; k < kReportedRegions.size(); ++k)
-      if ((r & kReportedRegions[k].bit) != 0) accumulate(out.regions[k], map.areas[w], fractions.wetting[w]);
+      if ((r & kReportedRegions[k].bit) != 0)
+        accumulate(out.regions[k], map.areas[w], fractions.wetting[w]);
   }
   for (auto& c : out.regions) finish(c);
   out.breaks.resize(map.breakWalls.size());

@@ -41,9 +41,9 @@ inline constexpr double kBreakCoveredFraction = 0.5;  // [1]
 
 // The retina as the coverage metrics see it; built once per scenario (protocols/scenario).
 struct RetinaMap {
-  std::vector<double> areas;                    // [m^2] per wall particle, #W
-  std::vector<anatomy::RegionSet> regions;      // per wall particle, #W (0 = not retina)
-  std::vector<std::string> breakNames;          // #B
+  std::vector<double> areas;                         // [m^2] per wall particle, #W
+  std::vector<anatomy::RegionSet> regions;           // per wall particle, #W (0 = not retina)
+  std::vector<std::string> breakNames;               // #B
   std::vector<std::vector<std::size_t>> breakWalls;  // wall indices inside each break, #B lists
 };
 
@@ -60,9 +60,9 @@ struct BreakCoverage {
 };
 
 struct FrameCoverage {
-  double time = 0.0;                                        // [s]
+  double time = 0.0;                                          // [s]
   std::array<AreaCoverage, kReportedRegions.size()> regions;  // kReportedRegions order
-  std::vector<BreakCoverage> breaks;                        // RetinaMap::breakNames order
+  std::vector<BreakCoverage> breaks;                          // RetinaMap::breakNames order
   const AreaCoverage& retina() const { return regions[0]; }
 };
 

@@ -19,7 +19,7 @@ struct ScheduleCoverage {
   double duration = 0.0;                                  // [s] t_last - t_first
   std::array<double, kReportedRegions.size()> regions{};  // [1] time-weighted mean fraction
   std::vector<double> breakFraction;                      // [1] time-weighted mean, per break
-  std::vector<double> breakTimeCovered;                   // [1] share of the time covered, per break
+  std::vector<double> breakTimeCovered;  // [1] share of the time covered, per break
 };
 
 // `frames` in increasing time. One frame (duration 0) gives its own values. Throws

@@ -35,8 +35,8 @@ inline double coverageSupportRadius(double spacing, double wallGap) {
 }
 
 struct WallOilFractions {
-  std::vector<double> oilFraction;     // [1] phi per wall particle, #W (0 where dry)
-  std::vector<WallWetting> wetting;    // per wall particle, #W
+  std::vector<double> oilFraction;   // [1] phi per wall particle, #W (0 where dry)
+  std::vector<WallWetting> wetting;  // per wall particle, #W
 };
 
 struct FluidPhaseState {

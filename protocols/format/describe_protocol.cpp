@@ -35,7 +35,8 @@ void addTissue(Lines& out, const std::string& prefix, const std::optional<Tissue
   out.add(prefix + ".material", quoted(tissue->material.value), tissue->material.where);
   out.add(prefix + ".youngs_modulus", tissue->youngsModulus, Dimension::kPressure);
   if (tissue->poissonRatio)
-    out.add(prefix + ".poisson_ratio", formatQuantity(tissue->poissonRatio->value, Dimension::kFraction),
+    out.add(prefix + ".poisson_ratio",
+            formatQuantity(tissue->poissonRatio->value, Dimension::kFraction),
             tissue->poissonRatio->where);
   out.add(prefix + ".density", tissue->density, Dimension::kDensity);
   out.add(prefix + ".thickness", tissue->thickness, Dimension::kLength);
@@ -61,8 +62,9 @@ std::string describeProtocol(const Protocol& p) {
   out.add("eye.staphyloma_width", e.staphylomaWidth, Dimension::kLength);
   if (e.mesh) {
     out.add("eye.mesh", quoted(e.mesh->path.value.string()), e.mesh->path.where);
-    out.add("eye.mesh_units", quoted(e.mesh->units.value) + " (" +
-                                  formatQuantity(e.mesh->metresPerUnit, Dimension::kLength) + " per unit)",
+    out.add("eye.mesh_units",
+            quoted(e.mesh->units.value) + " (" +
+                formatQuantity(e.mesh->metresPerUnit, Dimension::kLength) + " per unit)",
             e.mesh->units.where);
   }
   for (std::size_t k = 0; k < e.breaks.size(); ++k) {
@@ -70,9 +72,11 @@ std::string describeProtocol(const Protocol& p) {
     const std::string prefix = "eye.breaks[" + std::to_string(k + 1) + "]";
     out.add(prefix + ".name", quoted(b.name.value), b.name.where);
     out.add(prefix + ".clock_hour", formatIn(b.clockHour.value, ""), b.clockHour.where);
-    out.add(prefix + (b.reference == DistanceReference::kLimbus ? ".posterior_to_limbus" : ".posterior_to_ora"),
+    out.add(prefix + (b.reference == DistanceReference::kLimbus ? ".posterior_to_limbus"
+                                                                : ".posterior_to_ora"),
             formatQuantity(b.distance.value, Dimension::kLength), b.distance.where);
-    out.add(prefix + ".diameter", formatQuantity(b.diameter.value, Dimension::kLength), b.diameter.where);
+    out.add(prefix + ".diameter", formatQuantity(b.diameter.value, Dimension::kLength),
+            b.diameter.where);
   }
   addTissue(out, "eye.sclera", e.sclera);
   addTissue(out, "eye.orbital_fat", e.orbitalFat);
@@ -84,8 +88,8 @@ std::string describeProtocol(const Protocol& p) {
   if (t.viscosity) {
     const bool dynamic = t.viscosity->value.kind == ViscosityKind::kDynamic;
     out.add("tamponade.viscosity",
-            formatQuantity(t.viscosity->value.value,
-                           dynamic ? Dimension::kDynamicViscosity : Dimension::kKinematicViscosity) +
+            formatQuantity(t.viscosity->value.value, dynamic ? Dimension::kDynamicViscosity
+                                                             : Dimension::kKinematicViscosity) +
                 (dynamic ? " (dynamic)" : " (kinematic)"),
             t.viscosity->where);
   }
@@ -96,14 +100,16 @@ std::string describeProtocol(const Protocol& p) {
                 formatIn(t.contactAngle->value, "deg") + ", through the aqueous)",
             t.contactAngle->where);
   if (!t.isCustom())
-    out.addPlain("# properties not given above come from the material library entry '" + t.agent.value + "'");
+    out.addPlain("# properties not given above come from the material library entry '" +
+                 t.agent.value + "'");
 
   out.add("schedule.gravity", formatQuantity(p.schedule.gravity.value, Dimension::kAcceleration),
           p.schedule.gravity.where);
   bool anySteady = false;
   for (const Posture& posture : p.schedule.postures) anySteady = anySteady || posture.untilSteady;
   if (anySteady) {
-    out.add("schedule.steady_window", formatQuantity(p.schedule.steadyWindow.value, Dimension::kDuration),
+    out.add("schedule.steady_window",
+            formatQuantity(p.schedule.steadyWindow.value, Dimension::kDuration),
             p.schedule.steadyWindow.where);
     out.add("schedule.steady_coverage_change",
             formatQuantity(p.schedule.steadyCoverageChange.value, Dimension::kFraction),
@@ -116,37 +122,44 @@ std::string describeProtocol(const Protocol& p) {
     if (s.name.value == PostureName::kCustom) {
       const auto& g = s.gravityDirection.value;
       out.add(prefix + ".gravity_direction",
-              "[" + formatIn(g[0], "") + ", " + formatIn(g[1], "") + ", " + formatIn(g[2], "") + "] (eye frame)",
+              "[" + formatIn(g[0], "") + ", " + formatIn(g[1], "") + ", " + formatIn(g[2], "") +
+                  "] (eye frame)",
               s.gravityDirection.where);
     } else {
       out.add(prefix + ".name", quoted(std::string(toString(s.name.value))), s.name.where);
     }
     out.add(prefix + ".label", quoted(s.label.value), s.label.where);
     out.add(prefix + ".duration",
-            s.untilSteady ? "until steady, at most " + formatQuantity(s.duration.value, Dimension::kDuration)
-                          : formatQuantity(s.duration.value, Dimension::kDuration),
+            s.untilSteady
+                ? "until steady, at most " + formatQuantity(s.duration.value, Dimension::kDuration)
+                : formatQuantity(s.duration.value, Dimension::kDuration),
             s.duration.where);
     total += s.duration.value;
   }
   out.addPlain("# schedule: " + std::to_string(p.schedule.postures.size()) +
                (p.schedule.postures.size() == 1 ? " posture" : " postures") + ", at most " +
-               formatQuantity(total, Dimension::kDuration) + " (" + formatIn(total, "min") + ") simulated");
+               formatQuantity(total, Dimension::kDuration) + " (" + formatIn(total, "min") +
+               ") simulated");
 
   for (std::size_t k = 0; k < kEffectNames.size(); ++k)
     out.add("effects." + std::string(kEffectNames[k]),
             std::string(toString(p.effects.settings[k].value)) +
-                (p.effects.settings[k].value == EffectSetting::kAuto ? " (inferred from the scene)" : " (forced)"),
+                (p.effects.settings[k].value == EffectSetting::kAuto ? " (inferred from the scene)"
+                                                                     : " (forced)"),
             p.effects.settings[k].where);
 
   const AccuracySpec& a = p.accuracy;
   out.add("accuracy.preset", quoted(std::string(toString(a.preset.value))), a.preset.where);
   out.add("accuracy.particle_spacing", formatQuantity(a.particleSpacing.value, Dimension::kLength),
           a.particleSpacing.where);
-  out.add("accuracy.solver_tolerance", formatQuantity(a.solverTolerance.value, Dimension::kFraction),
-          a.solverTolerance.where);
-  out.add("accuracy.min_time_step", formatQuantity(a.minTimeStep.value, Dimension::kDuration), a.minTimeStep.where);
-  out.add("accuracy.max_time_step", formatQuantity(a.maxTimeStep.value, Dimension::kDuration), a.maxTimeStep.where);
-  out.add("accuracy.surface_stress", quoted(std::string(toString(a.surfaceStress.value))), a.surfaceStress.where);
+  out.add("accuracy.solver_tolerance",
+          formatQuantity(a.solverTolerance.value, Dimension::kFraction), a.solverTolerance.where);
+  out.add("accuracy.min_time_step", formatQuantity(a.minTimeStep.value, Dimension::kDuration),
+          a.minTimeStep.where);
+  out.add("accuracy.max_time_step", formatQuantity(a.maxTimeStep.value, Dimension::kDuration),
+          a.maxTimeStep.where);
+  out.add("accuracy.surface_stress", quoted(std::string(toString(a.surfaceStress.value))),
+          a.surfaceStress.where);
   out.add("accuracy.wall_model", quoted(std::string(toString(a.wallModel.value))),
           a.wallModel.where);
 
@@ -156,7 +169,8 @@ std::string describeProtocol(const Protocol& p) {
           o.frameInterval.where);
   std::string fields;
   for (const auto& f : o.fields) fields += (fields.empty() ? "" : ", ") + quoted(f.value);
-  out.add("outputs.fields", "[" + fields + "]", o.fields.empty() ? SourceLocation{} : o.fields.front().where);
+  out.add("outputs.fields", "[" + fields + "]",
+          o.fields.empty() ? SourceLocation{} : o.fields.front().where);
   out.add("outputs.report", o.report.value ? "true" : "false", o.report.where);
   return out.take();
 }

@@ -249,8 +249,8 @@ std::string rangeText(const ParameterSpec& spec) {
   const std::string_view unit = spec.displayUnit;
   const std::string suffix = unit.empty() || unit == "%" ? "" : " " + std::string(unit);
   if (spec.min > -kUnbounded && spec.max < kUnbounded)
-    return (spec.minInclusive ? "[" : "(") + number(spec.min, unit) + ", " + number(spec.max, unit) +
-           (spec.maxInclusive ? "]" : ")") + suffix;
+    return (spec.minInclusive ? "[" : "(") + number(spec.min, unit) + ", " +
+           number(spec.max, unit) + (spec.maxInclusive ? "]" : ")") + suffix;
   if (spec.min > -kUnbounded)
     return (spec.minInclusive ? ">= " : "> ") + number(spec.min, unit) + suffix;
   return (spec.maxInclusive ? "<= " : "< ") + number(spec.max, unit) + suffix;
@@ -301,10 +301,9 @@ std::string renderParameterReference() {
 }
 
 std::string renderUnitTable() {
-  constexpr std::array kDimensions = {D::kLength,           D::kDuration,       D::kDensity,
-                                      D::kDynamicViscosity, D::kKinematicViscosity,
-                                      D::kSurfaceTension,   D::kPressure,       D::kAngle,
-                                      D::kFraction,         D::kAcceleration};
+  constexpr std::array kDimensions = {
+      D::kLength,         D::kDuration, D::kDensity, D::kDynamicViscosity, D::kKinematicViscosity,
+      D::kSurfaceTension, D::kPressure, D::kAngle,   D::kFraction,         D::kAcceleration};
   std::string md = "| dimension | SI unit inside | units a protocol may use |\n|---|---|---|\n";
   for (Dimension d : kDimensions) {
     std::string units;
@@ -322,8 +321,9 @@ std::string renderUnitTable() {
 }
 
 std::string renderAccuracyPresetTable() {
-  std::string md = "| preset | particle_spacing | solver_tolerance | min_time_step | max_time_step |\n"
-                   "|---|---|---|---|---|\n";
+  std::string md =
+      "| preset | particle_spacing | solver_tolerance | min_time_step | max_time_step |\n"
+      "|---|---|---|---|---|\n";
   for (const AccuracyPresetValues& p : kAccuracyPresets)
     md += "| `" + std::string(p.name) + "` | " + formatIn(p.particleSpacing, "mm") + " | " +
           formatIn(p.solverTolerance, "%") + " | " + formatIn(p.minTimeStep, "s") + " | " +

@@ -24,12 +24,12 @@ enum class ValueKind {
   kViscosity,         // dynamic or kinematic viscosity; the unit says which
   kDurationOrSteady,  // a duration or "until steady"
   kString,
-  kPath,              // a file path, relative to the protocol file
-  kChoice,            // one of `choices`
+  kPath,    // a file path, relative to the protocol file
+  kChoice,  // one of `choices`
   kBoolean,
-  kEffectSwitch,      // true, false or "auto"
-  kDirection,         // [x, y, z] non-zero, normalised on reading
-  kStringList,        // ["a", "b"]
+  kEffectSwitch,  // true, false or "auto"
+  kDirection,     // [x, y, z] non-zero, normalised on reading
+  kStringList,    // ["a", "b"]
 };
 
 enum class Requirement { kRequired, kOptional, kConditional };
@@ -40,7 +40,7 @@ struct ParameterSpec {
   std::string_view key{};  // dotted path; elements of a [[table array]] add their keys to its path
   ValueKind kind = ValueKind::kString;
   Dimension dimension = Dimension::kLength;  // kQuantity, kDurationOrSteady
-  std::string_view displayUnit{};              // unit of ranges in the docs and messages
+  std::string_view displayUnit{};            // unit of ranges in the docs and messages
   double min = -kUnbounded;                  // [SI]
   double max = kUnbounded;                   // [SI]
   bool minInclusive = true;

@@ -13,10 +13,10 @@ namespace {
 
 using Table = TomlValueReader::Table;
 
-constexpr double kStandardGravity = 9.80665;     // [m/s^2] CGPM 1901
-constexpr double kDefaultSteadyLimit = 600.0;    // [s] upper bound of an "until steady" posture
-constexpr double kDefaultFrameInterval = 1.0;    // [s]
-constexpr double kDefaultSteadyWindow = 0.5;     // [s] steady_state.h explains the choice
+constexpr double kStandardGravity = 9.80665;   // [m/s^2] CGPM 1901
+constexpr double kDefaultSteadyLimit = 600.0;  // [s] upper bound of an "until steady" posture
+constexpr double kDefaultFrameInterval = 1.0;  // [s]
+constexpr double kDefaultSteadyWindow = 0.5;   // [s] steady_state.h explains the choice
 constexpr double kDefaultSteadyCoverageChange = 0.005;  // [1] half a percentage point
 constexpr std::array<std::string_view, 3> kDefaultFields = {"position", "velocity", "material"};
 
@@ -40,11 +40,13 @@ class ProtocolParser {
     return {fallback, defaultAt_};
   }
   // Reports `key` of `t` as present although `why` forbids it.
-  void forbid(const Table& t, std::string_view key, const std::string& why, const std::string& fix) {
+  void forbid(const Table& t, std::string_view key, const std::string& why,
+              const std::string& fix) {
     if (const toml::node* node = t.table->get(key))
       reader_.error(reader_.at(node->source()), TomlValueReader::shownKey(t, key) + " " + why, fix);
   }
-  void requireConditional(const Table& t, std::string_view key, bool present, const std::string& why) {
+  void requireConditional(const Table& t, std::string_view key, bool present,
+                          const std::string& why) {
     if (present || t.table->get(key) != nullptr) return;  // present, or present but invalid
     const ParameterSpec& s = parameterSpec(t.specPath + "." + std::string(key));
     reader_.error(t.where, "missing key '" + TomlValueReader::shownKey(t, key) + "': " + why,
@@ -71,8 +73,9 @@ Protocol ProtocolParser::parse(std::string_view text) {
   try {
     document = toml::parse(text, file_.string());
   } catch (const toml::parse_error& e) {
-    reader_.error(reader_.at(e.source()), "malformed TOML: " + std::string(e.description()),
-                  "fix the syntax (TOML 1.0, https://toml.io); strings need quotes, e.g. fill = \"90 %\"");
+    reader_.error(
+        reader_.at(e.source()), "malformed TOML: " + std::string(e.description()),
+        "fix the syntax (TOML 1.0, https://toml.io); strings need quotes, e.g. fill = \"90 %\"");
     throw ProtocolError(reader_.diagnostics());
   }
   Protocol p;
@@ -92,9 +95,10 @@ Protocol ProtocolParser::parse(std::string_view text) {
 
   std::vector<Diagnostic> diagnostics = std::move(reader_.diagnostics());
   if (!diagnostics.empty()) {
-    std::stable_sort(diagnostics.begin(), diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-      return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
-    });
+    std::stable_sort(
+        diagnostics.begin(), diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
+          return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
+        });
     throw ProtocolError(std::move(diagnostics));
   }
   return p;
@@ -106,7 +110,8 @@ void ProtocolParser::readEye(const Table& root, Protocol& p) {
   EyeSpec& e = p.eye;
   const auto kind = reader_.choice(*eye, "kind");
   if (kind) e.kind = {static_cast<EyeKind>(kind->value), kind->where};
-  if (auto side = reader_.choice(*eye, "side")) e.side = {static_cast<EyeSide>(side->value), side->where};
+  if (auto side = reader_.choice(*eye, "side"))
+    e.side = {static_cast<EyeSide>(side->value), side->where};
   e.axialLength = reader_.quantity(*eye, "axial_length");
   e.staphylomaDepth = reader_.quantity(*eye, "staphyloma_depth");
   e.staphylomaWidth = reader_.quantity(*eye, "staphyloma_width");
@@ -147,9 +152,11 @@ void ProtocolParser::readEye(const Table& root, Protocol& p) {
         m.metresPerUnit = findUnit(unit)->toSi;
         std::error_code ec;
         if (!std::filesystem::is_regular_file(m.path.value, ec))
-          reader_.error(meshPath->where, "eye.mesh file not found: " + m.path.value.string(),
-                        "the path is relative to the protocol file's folder (" +
-                            (file_.parent_path().empty() ? std::string(".") : file_.parent_path().string()) + ")");
+          reader_.error(
+              meshPath->where, "eye.mesh file not found: " + m.path.value.string(),
+              "the path is relative to the protocol file's folder (" +
+                  (file_.parent_path().empty() ? std::string(".") : file_.parent_path().string()) +
+                  ")");
         e.mesh = std::move(m);
       }
     } else {
@@ -231,7 +238,8 @@ void ProtocolParser::readTamponade(const Table& root, Protocol& p) {
   const toml::node* agentNode = t->table->get("agent");
   if (agentNode != nullptr && agentNode->value<std::string_view>() == std::string_view("aqueous")) {
     reader_.error(reader_.at(agentNode->source()),
-                  "tamponade.agent 'aqueous' is not a tamponade: the volume the agent does not fill is aqueous",
+                  "tamponade.agent 'aqueous' is not a tamponade: the volume the agent does not "
+                  "fill is aqueous",
                   "choose one of " + joinNames(kTamponadeAgentNames, true));
   } else if (auto a = reader_.choice(*t, "agent")) {
     s.agent = {std::string(kTamponadeAgentNames[a->value]), a->where};
@@ -242,8 +250,9 @@ void ProtocolParser::readTamponade(const Table& root, Protocol& p) {
   s.interfacialTension = reader_.quantity(*t, "interfacial_tension");
   s.contactAngle = reader_.quantity(*t, "contact_angle");
   if (s.isCustom()) {
-    const std::string why = "agent = \"custom\" has no library values, so it needs all of density, "
-                            "viscosity, interfacial_tension and contact_angle";
+    const std::string why =
+        "agent = \"custom\" has no library values, so it needs all of density, "
+        "viscosity, interfacial_tension and contact_angle";
     requireConditional(*t, "density", s.density.has_value(), why);
     requireConditional(*t, "viscosity", s.viscosity.has_value(), why);
     requireConditional(*t, "interfacial_tension", s.interfacialTension.has_value(), why);
@@ -258,7 +267,8 @@ void ProtocolParser::readSchedule(const Table& root, Protocol& p) {
   if (!t) return;
   p.schedule.gravity = quantityOr(*t, "gravity", kStandardGravity);
   p.schedule.steadyWindow = quantityOr(*t, "steady_window", kDefaultSteadyWindow);
-  p.schedule.steadyCoverageChange = quantityOr(*t, "steady_coverage_change", kDefaultSteadyCoverageChange);
+  p.schedule.steadyCoverageChange =
+      quantityOr(*t, "steady_coverage_change", kDefaultSteadyCoverageChange);
   const std::vector<Table> postures = reader_.tableArray(*t, "postures");
   const toml::node* node = t->table->get("postures");
   if (postures.empty() && node != nullptr && node->is_array() && node->as_array()->empty())
@@ -292,7 +302,8 @@ void ProtocolParser::readSchedule(const Table& root, Protocol& p) {
     const auto limit = reader_.quantity(pt, "max_duration");
     if (duration) {
       posture.untilSteady = duration->value < 0.0;
-      posture.duration = duration->value < 0.0 ? Located<double>{kDefaultSteadyLimit, defaultAt_} : *duration;
+      posture.duration =
+          duration->value < 0.0 ? Located<double>{kDefaultSteadyLimit, defaultAt_} : *duration;
       if (posture.untilSteady && limit) posture.duration = *limit;
       if (!posture.untilSteady)
         forbid(pt, "max_duration", "applies only to duration = \"until steady\"",
@@ -330,10 +341,12 @@ void ProtocolParser::readAccuracy(const Table& root, Protocol& p) {
   if (auto v = reader_.quantity(*t, "min_time_step")) a.minTimeStep = *v;
   if (auto v = reader_.quantity(*t, "max_time_step")) a.maxTimeStep = *v;
   if (a.minTimeStep.value > a.maxTimeStep.value) {
-    const Located<double>& explicitOne = a.maxTimeStep.where.isInFile() ? a.maxTimeStep : a.minTimeStep;
+    const Located<double>& explicitOne =
+        a.maxTimeStep.where.isInFile() ? a.maxTimeStep : a.minTimeStep;
     reader_.error(explicitOne.where.isInFile() ? explicitOne.where : t->where,
                   "accuracy.min_time_step (" + formatIn(a.minTimeStep.value, "s") +
-                      ") is larger than accuracy.max_time_step (" + formatIn(a.maxTimeStep.value, "s") + ")",
+                      ") is larger than accuracy.max_time_step (" +
+                      formatIn(a.maxTimeStep.value, "s") + ")",
                   "make min_time_step <= max_time_step");
   }
 }
@@ -348,7 +361,8 @@ void ProtocolParser::readOutputs(const Table& root, Protocol& p) {
   if (!t) return;
   if (auto v = reader_.string(*t, "folder")) {
     if (v->value.empty())
-      reader_.error(v->where, "outputs.folder is empty", "give a folder, e.g. folder = \"runs/my_case\"");
+      reader_.error(v->where, "outputs.folder is empty",
+                    "give a folder, e.g. folder = \"runs/my_case\"");
     else
       o.folder = *v;
   }
@@ -361,11 +375,13 @@ void ProtocolParser::readOutputs(const Table& root, Protocol& p) {
         return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9') || c == '_';
       });
       if (!isIdentifier)
-        reader_.error(o.fields[i].where, "outputs.fields: '" + f + "' is not a field name",
-                      "field names are lower_case identifiers such as \"position\" or \"pressure\"");
+        reader_.error(
+            o.fields[i].where, "outputs.fields: '" + f + "' is not a field name",
+            "field names are lower_case identifiers such as \"position\" or \"pressure\"");
       for (std::size_t j = 0; j < i; ++j)
         if (o.fields[j].value == f)
-          reader_.error(o.fields[i].where, "outputs.fields lists '" + f + "' twice", "list each field once");
+          reader_.error(o.fields[i].where, "outputs.fields lists '" + f + "' twice",
+                        "list each field once");
     }
   }
   if (auto v = reader_.boolean(*t, "report")) o.report = *v;
@@ -380,13 +396,15 @@ Protocol parseProtocolText(std::string_view text, const std::filesystem::path& f
 Protocol parseProtocol(const std::filesystem::path& file) {
   std::error_code ec;
   if (std::filesystem::is_directory(file, ec)) {
-    throw ProtocolError({Diagnostic{SourceLocation{file.string(), 0, 0}, "is a folder, not a protocol file",
-                                    "give the path of a .toml protocol file"}});
+    throw ProtocolError(
+        {Diagnostic{SourceLocation{file.string(), 0, 0}, "is a folder, not a protocol file",
+                    "give the path of a .toml protocol file"}});
   }
   std::ifstream in(file, std::ios::binary);
   if (!in) {
-    throw ProtocolError({Diagnostic{SourceLocation{file.string(), 0, 0}, "cannot open the protocol file",
-                                    "check the path (see data/protocols/ for examples)"}});
+    throw ProtocolError(
+        {Diagnostic{SourceLocation{file.string(), 0, 0}, "cannot open the protocol file",
+                    "check the path (see data/protocols/ for examples)"}});
   }
   std::ostringstream text;
   text << in.rdbuf();

@@ -54,7 +54,7 @@ inline constexpr std::array<std::string_view, 3> kWallModelNames = {"auto", "lay
                                                                     "single_layer"};
 // Tamponade agents of the material library (anatomy's data/materials), plus "custom".
 inline constexpr std::array<std::string_view, 6> kTamponadeAgentNames = {
-    "silicone_oil_1000", "silicone_oil_5000", "densiron_68",
+    "silicone_oil_1000", "silicone_oil_5000",  "densiron_68",
     "oxane_hd",          "perfluoro_n_octane", "custom"};
 inline constexpr std::string_view kCustomAgent = "custom";
 // Tissue materials of the material library.
@@ -66,29 +66,30 @@ inline constexpr std::array<std::string_view, 6> kEffectNames = {
 
 struct RetinalBreak {
   Located<std::string> name;
-  Located<double> clockHour;       // [h] as the surgeon sees the fundus, 1 <= h < 13 (12.5 = half past 12)
+  Located<double>
+      clockHour;  // [h] as the surgeon sees the fundus, 1 <= h < 13 (12.5 = half past 12)
   DistanceReference reference = DistanceReference::kLimbus;
-  Located<double> distance;        // [m] along the wall, posterior to `reference`
-  Located<double> diameter;        // [m]
-  SourceLocation where;            // the [[eye.breaks]] header
+  Located<double> distance;  // [m] along the wall, posterior to `reference`
+  Located<double> diameter;  // [m]
+  SourceLocation where;      // the [[eye.breaks]] header
 };
 
 struct TissueSpec {
-  Located<std::string> material;            // a tissue of the material library
+  Located<std::string> material;                 // a tissue of the material library
   std::optional<Located<double>> youngsModulus;  // [Pa] overrides the material
   std::optional<Located<double>> poissonRatio;   // [1] overrides the material
   std::optional<Located<double>> density;        // [kg/m^3] overrides the material
-  std::optional<Located<double>> thickness;      // [m] sclera only: overrides the anatomical profile
-  Located<TissueMode> mode;                 // auto = elastic only if it would deform (issue 7)
+  std::optional<Located<double>> thickness;  // [m] sclera only: overrides the anatomical profile
+  Located<TissueMode> mode;                  // auto = elastic only if it would deform (issue 7)
   Located<Anchoring> anchoring;
-  SourceLocation where;                     // the [eye.sclera] / [eye.orbital_fat] header
+  SourceLocation where;  // the [eye.sclera] / [eye.orbital_fat] header
 };
 
 struct MeshSource {
   Located<std::filesystem::path> path;  // resolved against the protocol file's folder
   std::string pathAsWritten;
-  Located<std::string> units;           // "mm", ... as written
-  double metresPerUnit = 1.0;           // [m] length of one mesh unit
+  Located<std::string> units;  // "mm", ... as written
+  double metresPerUnit = 1.0;  // [m] length of one mesh unit
 };
 
 struct EyeSpec {
@@ -112,7 +113,7 @@ struct TamponadeSpec {
   Located<std::string> agent;  // a name of kTamponadeAgentNames
   Located<double> fill;        // [1] fraction of the cavity volume, in (0, 1]; the rest is aqueous
   // For "custom" all four are present; for a library agent each present one overrides it.
-  std::optional<Located<double>> density;             // [kg/m^3]
+  std::optional<Located<double>> density;  // [kg/m^3]
   std::optional<Located<Viscosity>> viscosity;
   std::optional<Located<double>> interfacialTension;  // [N/m] against aqueous
   std::optional<Located<double>> contactAngle;        // [rad] on retina, THROUGH THE AQUEOUS phase
@@ -120,12 +121,12 @@ struct TamponadeSpec {
 };
 
 struct Posture {
-  Located<PostureName> name;                  // kCustom when given as a gravity direction
-  Located<std::string> label;                 // the user's label, else the name or "custom"
+  Located<PostureName> name;                        // kCustom when given as a gravity direction
+  Located<std::string> label;                       // the user's label, else the name or "custom"
   Located<std::array<double, 3>> gravityDirection;  // [1] unit vector, eye frame; kCustom only
   bool untilSteady = false;
-  Located<double> duration;                   // [s]; with untilSteady the upper bound
-  SourceLocation where;                       // the [[schedule.postures]] header
+  Located<double> duration;  // [s]; with untilSteady the upper bound
+  SourceLocation where;      // the [[schedule.postures]] header
 };
 
 struct ScheduleSpec {
@@ -173,10 +174,10 @@ inline constexpr std::array<AccuracyPresetValues, 3> kAccuracyPresets = {{
 }};
 
 struct OutputsSpec {
-  Located<std::string> folder;                 // relative to the working directory of the run
-  Located<double> frameInterval;               // [s] simulated time between frames
-  std::vector<Located<std::string>> fields;    // particle field names, checked against the
-                                               // field registry at scenario assembly
+  Located<std::string> folder;               // relative to the working directory of the run
+  Located<double> frameInterval;             // [s] simulated time between frames
+  std::vector<Located<std::string>> fields;  // particle field names, checked against the
+                                             // field registry at scenario assembly
   Located<bool> report;
 };
 

@@ -11,7 +11,8 @@ namespace {
 std::string shortNumber(double v) { return formatIn(v, ""); }
 
 std::string withArticle(std::string_view noun) {
-  const bool vowel = !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
+  const bool vowel =
+      !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
   return (vowel ? "an " : "a ") + std::string(noun);
 }
 
@@ -25,7 +26,8 @@ std::string exampleOf(const ParameterSpec& s, std::string_view key) {
 
 std::string describeNode(const toml::node& node) {
   switch (node.type()) {
-    case toml::node_type::string: return "string \"" + std::string(*node.value<std::string_view>()) + "\"";
+    case toml::node_type::string:
+      return "string \"" + std::string(*node.value<std::string_view>()) + "\"";
     case toml::node_type::integer: return "integer " + std::to_string(*node.value<std::int64_t>());
     case toml::node_type::floating_point: return "number " + shortNumber(*node.value<double>());
     case toml::node_type::boolean: return *node.value<bool>() ? "boolean true" : "boolean false";
@@ -80,7 +82,8 @@ const toml::node* TomlValueReader::find(const Table& t, std::string_view key) {
   if (node == nullptr) {
     const ParameterSpec& s = spec(t, key);
     if (s.requirement == Requirement::kRequired) {
-      const std::string where = t.shownPath.empty() ? "at the top level" : "in [" + t.shownPath + "]";
+      const std::string where =
+          t.shownPath.empty() ? "at the top level" : "in [" + t.shownPath + "]";
       std::string fix = s.kind == ValueKind::kTable ? "add the table [" + std::string(s.key) + "]"
                         : s.kind == ValueKind::kTableArray
                             ? "add at least one [[" + std::string(s.key) + "]] table"
@@ -161,7 +164,8 @@ std::optional<Located<double>> TomlValueReader::quantity(const Table& t, std::st
                 withArticle(dimensionName(s.dimension)) + " needs one",
             "write it as a string with a unit, e.g. " + std::string(key) + " = \"" +
                 shortNumber(v) + " " + std::string(s.displayUnit) + "\" (" +
-                std::string(dimensionName(s.dimension)) + " units: " + unitSymbols(s.dimension) + ")");
+                std::string(dimensionName(s.dimension)) + " units: " + unitSymbols(s.dimension) +
+                ")");
       return std::nullopt;
     }
     result.value = v;
@@ -189,8 +193,11 @@ std::optional<Located<Viscosity>> TomlValueReader::viscosity(const Table& t, std
   constexpr std::array kAllowed = {Dimension::kDynamicViscosity, Dimension::kKinematicViscosity};
   if (!node->is_string()) {
     if (node->is_number())
-      error(where, shownKey(t, key) + " = " + describeNode(*node) + " has no unit, and a viscosity needs one",
-            "say which viscosity it is with the unit: \"1000 cSt\" (kinematic) or \"970 mPa s\" (dynamic)");
+      error(where,
+            shownKey(t, key) + " = " + describeNode(*node) +
+                " has no unit, and a viscosity needs one",
+            "say which viscosity it is with the unit: \"1000 cSt\" (kinematic) or \"970 mPa s\" "
+            "(dynamic)");
     else
       wrongType(t, key, *node, "a viscosity written as a string with a unit");
     return std::nullopt;
@@ -203,8 +210,9 @@ std::optional<Located<Viscosity>> TomlValueReader::viscosity(const Table& t, std
     return std::nullopt;
   }
   if (!checkRange(t, key, s, Located<double>{q.value, where})) return std::nullopt;
-  const ViscosityKind kind = q.dimension == Dimension::kDynamicViscosity ? ViscosityKind::kDynamic
-                                                                         : ViscosityKind::kKinematic;
+  const ViscosityKind kind = q.dimension == Dimension::kDynamicViscosity
+                                 ? ViscosityKind::kDynamic
+                                 : ViscosityKind::kKinematic;
   return Located<Viscosity>{Viscosity{q.value, kind}, where};
 }
 
@@ -258,7 +266,8 @@ std::optional<Located<std::size_t>> TomlValueReader::choice(const Table& t, std:
   fix += fix.empty() ? "choose one of " + joinNames(s.choices, true)
                      : " (choose one of " + joinNames(s.choices, true) + ")";
   error(at(node->source()),
-        "unknown " + std::string(key) + " '" + std::string(value) + "' for " + shownKey(t, key), fix);
+        "unknown " + std::string(key) + " '" + std::string(value) + "' for " + shownKey(t, key),
+        fix);
   return std::nullopt;
 }
 
@@ -278,7 +287,8 @@ std::optional<Located<EffectSetting>> TomlValueReader::effectSwitch(const Table&
   if (node == nullptr) return std::nullopt;
   const SourceLocation where = at(node->source());
   if (node->is_boolean())
-    return Located<EffectSetting>{*node->value<bool>() ? EffectSetting::kOn : EffectSetting::kOff, where};
+    return Located<EffectSetting>{*node->value<bool>() ? EffectSetting::kOn : EffectSetting::kOff,
+                                  where};
   if (node->is_string() && *node->value<std::string_view>() == "auto")
     return Located<EffectSetting>{EffectSetting::kAuto, where};
   wrongType(t, key, *node, "true (force on), false (force off) or \"auto\"");
@@ -312,7 +322,7 @@ std::optional<Located<std::array<double, 3>>> TomlValueReader::direction(const T
 }
 
 std::optional<std::vector<Located<std::string>>> TomlValueReader::stringList(const Table& t,
-                                                                              std::string_view key) {
+                                                                             std::string_view key) {
   const toml::node* node = find(t, key);
   if (node == nullptr) return std::nullopt;
   const toml::array* array = node->as_array();
@@ -334,12 +344,16 @@ std::optional<Located<double>> TomlValueReader::durationOrSteady(const Table& t,
   if (node->is_string()) {
     const std::string_view text = *node->value<std::string_view>();
     if (text == kSteady) return Located<double>{-1.0, at(node->source())};
-    const bool startsLikeNumber = !text.empty() && std::string_view("0123456789.+-").find(text.front()) != std::string_view::npos;
+    const bool startsLikeNumber =
+        !text.empty() &&
+        std::string_view("0123456789.+-").find(text.front()) != std::string_view::npos;
     if (!startsLikeNumber) {
       error(at(node->source()),
-            shownKey(t, key) + " = \"" + std::string(text) + "\" is neither a duration nor \"until steady\"",
-            editDistance(text, kSteady) <= 3 ? "did you mean \"until steady\"?"
-                                             : "write a duration like \"10 min\", or \"until steady\"");
+            shownKey(t, key) + " = \"" + std::string(text) +
+                "\" is neither a duration nor \"until steady\"",
+            editDistance(text, kSteady) <= 3
+                ? "did you mean \"until steady\"?"
+                : "write a duration like \"10 min\", or \"until steady\"");
       return std::nullopt;
     }
   }

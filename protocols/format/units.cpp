@@ -105,7 +105,8 @@ std::string dimensionsText(std::span<const Dimension> allowed) {
 }
 
 std::string withArticle(const std::string& noun) {
-  const bool vowel = !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
+  const bool vowel =
+      !noun.empty() && std::string_view("aeiou").find(noun.front()) != std::string_view::npos;
   return (vowel ? "an " : "a ") + noun;
 }
 
@@ -174,21 +175,22 @@ Quantity parseQuantity(std::string_view text, std::span<const Dimension> allowed
   if (ec != std::errc() || !std::isfinite(number))
     throw UnitError(quoted + " does not start with a finite number",
                     "write a number then a unit, " + example);
-  const std::string unit = normaliseUnit(trim(std::string_view(end, digits.data() + digits.size())));
+  const std::string unit =
+      normaliseUnit(trim(std::string_view(end, digits.data() + digits.size())));
 
   if (unit.empty()) {
     // A bare number is unambiguous only for a fraction, and only in [0, 1]: "90" might mean 90 %.
     for (Dimension d : allowed) {
       if (d != D::kFraction) continue;
       if (number < 0.0 || number > 1.0)
-        throw UnitError(quoted + " is not a fraction in [0, 1]",
-                        "write a fraction like 0.9, or a percentage like \"" +
-                            std::string(body) + " %\"");
+        throw UnitError(
+            quoted + " is not a fraction in [0, 1]",
+            "write a fraction like 0.9, or a percentage like \"" + std::string(body) + " %\"");
       return {number, D::kFraction};
     }
-    throw UnitError(quoted + " has no unit, and " + withArticle(dimensionsText(allowed)) +
-                        " needs one",
-                    "add a unit, " + example + " (" + unitsHint(allowed) + ")");
+    throw UnitError(
+        quoted + " has no unit, and " + withArticle(dimensionsText(allowed)) + " needs one",
+        "add a unit, " + example + " (" + unitsHint(allowed) + ")");
   }
 
   const Unit* u = findUnit(unit);
@@ -200,9 +202,9 @@ Quantity parseQuantity(std::string_view text, std::span<const Dimension> allowed
       for (const Unit& k : kUnits) all.push_back(k.symbol);
       suggestion = didYouMean(unit, all);
     }
-    throw UnitError("unknown unit '" + unit + "' in " + quoted,
-                    (suggestion.empty() ? std::string() : suggestion + " ") + "(" +
-                        unitsHint(allowed) + ")");
+    throw UnitError(
+        "unknown unit '" + unit + "' in " + quoted,
+        (suggestion.empty() ? std::string() : suggestion + " ") + "(" + unitsHint(allowed) + ")");
   }
   for (Dimension d : allowed)
     if (u->dimension == d) return {number * u->toSi, d};

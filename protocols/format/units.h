@@ -29,7 +29,7 @@ enum class Dimension {
 struct Unit {
   std::string_view symbol;  // as written in a protocol, case-sensitive ("mPa s" is not "MPa s")
   Dimension dimension;
-  double toSi;              // SI value of one of this unit
+  double toSi;  // SI value of one of this unit
 };
 
 // Every unit a protocol may use, grouped by dimension; the docs' unit table is generated from it.
@@ -55,7 +55,7 @@ class UnitError : public std::invalid_argument {
 };
 
 struct Quantity {
-  double value;         // [SI unit of dimension]
+  double value;  // [SI unit of dimension]
   Dimension dimension;
 };
 

@@ -69,8 +69,7 @@ void writeContents(hid_t file, const CheckpointState& state, const Place& root) 
                                         H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                              place, "cannot create dataset");
     if (size > 0)
-      check(H5Dwrite(dataset.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                     bytes.data()),
+      check(H5Dwrite(dataset.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()),
             place, "cannot write dataset", "check free disk space");
   }
 
@@ -100,10 +99,9 @@ void writeCheckpoint(const std::filesystem::path& path, const CheckpointState& s
     {
       Handle access = checkpointAccess(root);
       // TRUNC replaces a stale .tmp that a killed writer may have left.
-      Handle file = checked(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT,
-                                      access.get()),
-                            root, "cannot create checkpoint",
-                            "check that the run folder exists and is writable");
+      Handle file =
+          checked(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, access.get()), root,
+                  "cannot create checkpoint", "check that the run folder exists and is writable");
       writeContents(file.get(), state, root);
       check(file.close(), root, "cannot close checkpoint", "check free disk space");
     }
@@ -132,8 +130,8 @@ struct StoredField {
 
 StoredField describeStored(hid_t group, const std::string& name, const Place& groupPlace) {
   const Place place = groupPlace.at(name);
-  Handle dataset = checked(H5Dopen2(group, name.c_str(), H5P_DEFAULT), place,
-                           "cannot open dataset");
+  Handle dataset =
+      checked(H5Dopen2(group, name.c_str(), H5P_DEFAULT), place, "cannot open dataset");
   Handle type = checked(H5Dget_type(dataset.get()), place, "cannot read dataset type");
   const auto [rows, components] = hdf5::datasetShape(dataset.get(), place);
   const bool isReal = H5Tget_class(type.get()) == H5T_FLOAT;
@@ -161,9 +159,10 @@ CheckpointState readCheckpoint(const std::filesystem::path& path,
                   "resume a run folder that holds a checkpoint.h5");
   const std::int64_t version = hdf5::readInt64Attribute(file.get(), "format_version", root);
   if (version != layout::kCheckpointFormatVersion)
-    throw IoError(root.file, "", "checkpoint format version " + std::to_string(version) +
-                                     " is not this toolkit's (" +
-                                     std::to_string(layout::kCheckpointFormatVersion) + ")",
+    throw IoError(root.file, "",
+                  "checkpoint format version " + std::to_string(version) +
+                      " is not this toolkit's (" +
+                      std::to_string(layout::kCheckpointFormatVersion) + ")",
                   "resume with the toolkit version that wrote it");
 
   CheckpointState state;
@@ -187,13 +186,12 @@ CheckpointState readCheckpoint(const std::filesystem::path& path,
   Handle blobs = hdf5::openGroup(file.get(), "blobs", root);
   for (const std::string& name : hdf5::linkNames(blobs.get(), root.at("blobs"))) {
     const Place place = root.at("blobs/" + name);
-    Handle dataset = checked(H5Dopen2(blobs.get(), name.c_str(), H5P_DEFAULT), place,
-                             "cannot open blob");
+    Handle dataset =
+        checked(H5Dopen2(blobs.get(), name.c_str(), H5P_DEFAULT), place, "cannot open blob");
     auto& bytes = state.blobs[name];
     bytes.resize(hdf5::datasetShape(dataset.get(), place).first);
     if (!bytes.empty())
-      check(H5Dread(dataset.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                    bytes.data()),
+      check(H5Dread(dataset.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()),
             place, "cannot read blob");
   }
 
@@ -206,10 +204,10 @@ CheckpointState readCheckpoint(const std::filesystem::path& path,
   for (const auto& name : stored)
     if (!restoreInto.count(name)) extraGroups.push_back(name);
   if (!extraGroups.empty())
-    throw IoError(root.file, "/groups",
-                  "holds particle group(s) " + joinNames(extraGroups) +
-                      " that this run does not have",
-                  "resume with the protocol that wrote the checkpoint");
+    throw IoError(
+        root.file, "/groups",
+        "holds particle group(s) " + joinNames(extraGroups) + " that this run does not have",
+        "resume with the protocol that wrote the checkpoint");
   std::vector<Handle> groupHandles;
   for (const auto& [name, registry] : restoreInto) {
     const Place place = groupsPlace.at(name);

@@ -33,8 +33,8 @@ namespace protocols {
 struct CheckpointState {
   double time = 0;  // [s] simulated time
   std::int64_t step = 0;
-  double dt = 0;    // [s] the time step the next step will take
-  std::map<std::string, double> realCounters;          // e.g. accumulated coverage integrals
+  double dt = 0;                                        // [s] the time step the next step will take
+  std::map<std::string, double> realCounters;           // e.g. accumulated coverage integrals
   std::map<std::string, std::int64_t> integerCounters;  // e.g. frames written, posture index
   std::map<std::string, std::vector<std::uint8_t>> blobs;  // opaque bytes
   // Particle groups by name. writeCheckpoint reads them; readCheckpoint restores into them.

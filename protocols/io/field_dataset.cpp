@@ -67,9 +67,9 @@ void writeChunksInParallel(hid_t dataset, const sim::FieldBase& field, hsize_t c
                         std::to_string(zlibStatus[k]) + ")",
                     "check free memory");
     const hsize_t offset[2] = {k * chunkRows, 0};
-    check(H5Dwrite_chunk(dataset, H5P_DEFAULT, 0, offset, compressed[k].size(),
-                         compressed[k].data()),
-          place, "cannot write chunk " + std::to_string(k), "check free disk space");
+    check(
+        H5Dwrite_chunk(dataset, H5P_DEFAULT, 0, offset, compressed[k].size(), compressed[k].data()),
+        place, "cannot write chunk " + std::to_string(k), "check free disk space");
   }
 }
 
@@ -94,8 +94,8 @@ void writeFieldDataset(hid_t parent, const sim::FieldBase& field,
   hsize_t chunkRows = 0;
   const hsize_t components = static_cast<hsize_t>(field.components());
   const bool isReal = field.kind() == sim::ScalarKind::kReal;
-  const hid_t fileType = isReal ? (options.realsAsFloat32 ? H5T_IEEE_F32LE : H5T_IEEE_F64LE)
-                                : H5T_STD_I32LE;
+  const hid_t fileType =
+      isReal ? (options.realsAsFloat32 ? H5T_IEEE_F32LE : H5T_IEEE_F64LE) : H5T_STD_I32LE;
 
   const hsize_t dims[2] = {rows, components};
   Handle space = checked(H5Screate_simple(2, dims, nullptr), place, "cannot create dataspace");
@@ -103,7 +103,7 @@ void writeFieldDataset(hid_t parent, const sim::FieldBase& field,
   if (options.gzipLevel > 0) {
     const std::size_t scalarBytes = isReal && !options.realsAsFloat32 ? 8 : 4;
     chunkRows = std::clamp<hsize_t>(kChunkBytes / (components * scalarBytes), 1,
-                                                  std::max<hsize_t>(rows, 1));
+                                    std::max<hsize_t>(rows, 1));
     const hsize_t chunk[2] = {chunkRows, components};
     check(H5Pset_chunk(creation.get(), 2, chunk), place, "cannot set chunking");
     // Shuffle groups the bytes of equal significance, which is what lets deflate compress
@@ -112,12 +112,12 @@ void writeFieldDataset(hid_t parent, const sim::FieldBase& field,
     check(H5Pset_deflate(creation.get(), static_cast<unsigned>(options.gzipLevel)), place,
           "cannot enable gzip compression", "check that HDF5 was built with zlib");
   }
-  Handle dataset = checked(H5Dcreate2(parent, name.c_str(), fileType, space.get(), H5P_DEFAULT,
-                                      creation.get(), H5P_DEFAULT),
-                           place, "cannot create dataset",
-                           "field names must be unique within a group");
-  const bool exactTypes = std::endian::native == std::endian::little &&
-                          !(isReal && options.realsAsFloat32);
+  Handle dataset =
+      checked(H5Dcreate2(parent, name.c_str(), fileType, space.get(), H5P_DEFAULT, creation.get(),
+                         H5P_DEFAULT),
+              place, "cannot create dataset", "field names must be unique within a group");
+  const bool exactTypes =
+      std::endian::native == std::endian::little && !(isReal && options.realsAsFloat32);
   if (options.gzipLevel > 0 && exactTypes && rows > chunkRows)
     writeChunksInParallel(dataset.get(), field, chunkRows, options.gzipLevel, place);
   else if (rows > 0)
@@ -143,9 +143,9 @@ OpenedField openField(hid_t parent, const std::string& name, const Place& place)
                   "check the field name (it must be a registered field with the written or "
                   "checkpointed flag)");
   const Place here = place.at(name);
-  OpenedField opened{checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), here,
-                             "cannot open dataset"),
-                     sim::ScalarKind::kReal, 0, 0};
+  OpenedField opened{
+      checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), here, "cannot open dataset"),
+      sim::ScalarKind::kReal, 0, 0};
   Handle type = checked(H5Dget_type(opened.dataset.get()), here, "cannot read dataset type");
   switch (H5Tget_class(type.get())) {
     case H5T_FLOAT: opened.kind = sim::ScalarKind::kReal; break;
@@ -192,12 +192,10 @@ void restoreFieldDataset(hid_t parent, sim::FieldBase& field, const Place& paren
   const std::string& name = field.info().name;
   const Place place = parentPlace.at(name);
   OpenedField opened = openField(parent, name, parentPlace);
-  if (opened.kind != field.kind() ||
-      opened.components != static_cast<hsize_t>(field.components()))
+  if (opened.kind != field.kind() || opened.components != static_cast<hsize_t>(field.components()))
     throw IoError(place.file, place.object,
                   "stored as " + elementName(opened.kind, static_cast<int>(opened.components)) +
-                      " but this run's field is " +
-                      elementName(field.kind(), field.components()),
+                      " but this run's field is " + elementName(field.kind(), field.components()),
                   "resume with the toolkit version and protocol that wrote the checkpoint");
   if (opened.rows != field.size())
     throw IoError(place.file, place.object,

@@ -8,9 +8,9 @@
 #include <cstddef>
 #include <string>
 
+#include <utility>  // before field_registry.h, which uses std::as_const without it
 #include "protocols/io/field_data.h"
 #include "protocols/io/hdf5_support.h"
-#include <utility>  // before field_registry.h, which uses std::as_const without it
 
 #include "sim/core/field_registry.h"
 

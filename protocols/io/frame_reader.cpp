@@ -91,8 +91,8 @@ FrameReader::FrameReader(const std::filesystem::path& h5Path) : impl_(std::make_
                   "give the frames.h5 of a run folder");
   const std::int64_t version = hdf5::readInt64Attribute(s.file.get(), "format_version", s.root);
   if (version > layout::kFramesFormatVersion)
-    throw IoError(s.root.file, "", "format version " + std::to_string(version) +
-                                       " is newer than this toolkit's",
+    throw IoError(s.root.file, "",
+                  "format version " + std::to_string(version) + " is newer than this toolkit's",
                   "read it with a newer tamponade");
 
   Handle frames = hdf5::openGroup(s.file.get(), "frames", s.root);
@@ -103,8 +103,8 @@ FrameReader::FrameReader(const std::filesystem::path& h5Path) : impl_(std::make_
       const unsigned long long index = std::strtoull(name.c_str(), &end, 10);
       if (name.empty() || *end != '\0')
         throw IoError(place.file, place.object, "not a frame number", "");
-      Handle frame = checked(H5Gopen2(frames.get(), name.c_str(), H5P_DEFAULT), place,
-                             "cannot open frame");
+      Handle frame =
+          checked(H5Gopen2(frames.get(), name.c_str(), H5P_DEFAULT), place, "cannot open frame");
       if (!hdf5::hasAttribute(frame.get(), "complete", place))
         throw IoError(place.file, place.object, "frame is incomplete", "");
       FrameInfo info;
@@ -127,9 +127,7 @@ FrameReader::FrameReader(FrameReader&&) noexcept = default;
 FrameReader& FrameReader::operator=(FrameReader&&) noexcept = default;
 
 const std::vector<FrameInfo>& FrameReader::frames() const { return impl_->frames; }
-const std::vector<std::string>& FrameReader::unreadableFrames() const {
-  return impl_->unreadable;
-}
+const std::vector<std::string>& FrameReader::unreadableFrames() const { return impl_->unreadable; }
 
 std::vector<std::string> FrameReader::fieldNames(std::size_t frameIndex,
                                                  const std::string& group) const {
@@ -181,8 +179,8 @@ SeriesData FrameReader::readSeries(const std::string& name) const {
   if (!hdf5::hasLink(series.get(), name, s.root.at("series")))
     throw IoError(place.file, place.object, "no such series",
                   "the run wrote no table of that name (see seriesNames())");
-  Handle dataset = checked(H5Dopen2(series.get(), name.c_str(), H5P_DEFAULT), place,
-                           "cannot open series");
+  Handle dataset =
+      checked(H5Dopen2(series.get(), name.c_str(), H5P_DEFAULT), place, "cannot open series");
   SeriesData data;
   data.name = name;
   data.columns = hdf5::readStringArrayAttribute(dataset.get(), "columns", place);

@@ -74,8 +74,8 @@ int storedScalarBytes(hid_t dataset, const Place& place) {
 XdmfDataset describeDataset(hid_t parent, const std::string& name, const std::string& h5Path,
                             const Place& parentPlace) {
   const Place place = parentPlace.at(name);
-  Handle dataset = checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), place,
-                           "cannot open dataset");
+  Handle dataset =
+      checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), place, "cannot open dataset");
   Handle type = checked(H5Dget_type(dataset.get()), place, "cannot read dataset type");
   XdmfDataset d;
   d.name = name;
@@ -83,8 +83,8 @@ XdmfDataset describeDataset(hid_t parent, const std::string& name, const std::st
   const auto [rows, components] = hdf5::datasetShape(dataset.get(), place);
   d.rows = rows;
   d.components = static_cast<int>(components);
-  d.kind = H5Tget_class(type.get()) == H5T_INTEGER ? sim::ScalarKind::kInt32
-                                                    : sim::ScalarKind::kReal;
+  d.kind =
+      H5Tget_class(type.get()) == H5T_INTEGER ? sim::ScalarKind::kInt32 : sim::ScalarKind::kReal;
   d.bytesPerScalar = storedScalarBytes(dataset.get(), place);
   return d;
 }
@@ -186,8 +186,8 @@ struct FrameWriter::Impl {
       XdmfGrid grid;
       grid.name = name;
       bool hasPosition = false;
-      for (const auto* source : {findStatic(name) ? &findStatic(name)->datasets : nullptr,
-                                 dynamic}) {
+      for (const auto* source :
+           {findStatic(name) ? &findStatic(name)->datasets : nullptr, dynamic}) {
         if (!source) continue;
         for (const auto& d : *source) {
           if (d.name == layout::kPositionField) {
@@ -210,9 +210,7 @@ struct FrameWriter::Impl {
     return frame;
   }
 
-  void rewriteXdmf() {
-    replaceFileAtomically(xdmfPath, formatXdmfDocument(frameTexts));
-  }
+  void rewriteXdmf() { replaceFileAtomically(xdmfPath, formatXdmfDocument(frameTexts)); }
 
   void reformatAllFrames() {
     frameTexts.clear();
@@ -236,7 +234,8 @@ struct FrameWriter::Impl {
     const auto opts = datasetOptions();
     for (const auto& field : fields) {
       const sim::FieldInfo& info = field->info();
-      if (selected ? std::find(only->begin(), only->end(), info.name) == only->end() : !info.written)
+      if (selected ? std::find(only->begin(), only->end(), info.name) == only->end()
+                   : !info.written)
         continue;
       if (skip && std::any_of(skip->datasets.begin(), skip->datasets.end(),
                               [&](const XdmfDataset& d) { return d.name == info.name; }))
@@ -272,8 +271,9 @@ FrameWriter::FrameWriter(const std::filesystem::path& h5Path, const RunMetadata&
   s.options = options;
   s.root = Place{h5Path.string(), "/"};
   if (options.gzipLevel < 0 || options.gzipLevel > 9)
-    throw IoError(s.root.file, "", "gzip level " + std::to_string(options.gzipLevel) +
-                                       " is out of range", "use 0 (off) to 9");
+    throw IoError(s.root.file, "",
+                  "gzip level " + std::to_string(options.gzipLevel) + " is out of range",
+                  "use 0 (off) to 9");
   if (!options.overwrite && std::filesystem::exists(h5Path))
     throw IoError(s.root.file, "", "the file exists already",
                   "choose another output folder, delete the old run, or resume it");
@@ -297,10 +297,10 @@ FrameWriter::FrameWriter(const std::filesystem::path& h5Path, const RunMetadata&
   hdf5::writeAttribute(meta.get(), "toolkit_version", std::string(TAMPONADE_VERSION), metaPlace);
   unsigned major = 0, minor = 0, release = 0;
   H5get_libversion(&major, &minor, &release);
-  hdf5::writeAttribute(meta.get(), "hdf5_version",
-                       std::to_string(major) + "." + std::to_string(minor) + "." +
-                           std::to_string(release),
-                       metaPlace);
+  hdf5::writeAttribute(
+      meta.get(), "hdf5_version",
+      std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(release),
+      metaPlace);
   hdf5::writeAttribute(meta.get(), "created_utc", utcNow(), metaPlace);
   hdf5::writeStringDataset(meta.get(), "protocol", metadata.protocolText, metaPlace);
   Handle run = hdf5::openOrCreateGroup(meta.get(), "run", metaPlace);
@@ -314,8 +314,8 @@ FrameWriter::FrameWriter(const std::filesystem::path& h5Path, const RunMetadata&
   s.rewriteXdmf();
 }
 
-FrameWriter FrameWriter::resume(const std::filesystem::path& h5Path, std::int64_t step,
-                                double time, FrameWriterOptions options) {
+FrameWriter FrameWriter::resume(const std::filesystem::path& h5Path, std::int64_t step, double time,
+                                FrameWriterOptions options) {
   hdf5::silenceErrorPrinting();
   auto impl = std::make_unique<Impl>();
   Impl& s = *impl;
@@ -347,8 +347,8 @@ FrameWriter FrameWriter::resume(const std::filesystem::path& h5Path, std::int64_
     if (name != frameGroupName(kept)) break;
     Impl::FrameRecord record;
     try {
-      Handle frame = checked(H5Gopen2(frames.get(), name.c_str(), H5P_DEFAULT), place,
-                             "cannot open frame");
+      Handle frame =
+          checked(H5Gopen2(frames.get(), name.c_str(), H5P_DEFAULT), place, "cannot open frame");
       if (!hdf5::hasAttribute(frame.get(), "complete", place)) break;
       record.info.index = kept;
       record.info.time = hdf5::readDoubleAttribute(frame.get(), "time", place);
@@ -403,14 +403,13 @@ FrameWriter FrameWriter::resume(const std::filesystem::path& h5Path, std::int64_
   for (const std::string& name : hdf5::linkNames(series.get(), seriesPlace)) {
     const Place place = seriesPlace.at(name);
     Impl::Series table;
-    Handle dataset = checked(H5Dopen2(series.get(), name.c_str(), H5P_DEFAULT), place,
-                             "cannot open series");
+    Handle dataset =
+        checked(H5Dopen2(series.get(), name.c_str(), H5P_DEFAULT), place, "cannot open series");
     table.columns = hdf5::readStringArrayAttribute(dataset.get(), "columns", place);
     const auto [rows, width] = hdf5::datasetShape(dataset.get(), place);
     std::vector<double> values(rows * width);
     if (!values.empty())
-      check(H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT,
-                    values.data()),
+      check(H5Dread(dataset.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()),
             place, "cannot read series");
     hsize_t keep = 0;
     while (keep < rows && values[keep * width] <= time) ++keep;
@@ -472,15 +471,15 @@ std::size_t FrameWriter::writeFrame(double time, std::int64_t step,
   Impl::FrameRecord record;
   record.info = FrameInfo{index, time, step, {}};
   try {
-    Handle frame = checked(H5Gcreate2(frames.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT,
-                                      H5P_DEFAULT),
-                           s.root.at("frames/" + name), "cannot create frame group");
+    Handle frame =
+        checked(H5Gcreate2(frames.get(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
+                s.root.at("frames/" + name), "cannot create frame group");
     const Place framePlace{s.root.file, framePath};
     for (const auto& g : groups) {
       Handle group = hdf5::openOrCreateGroup(frame.get(), g.name, framePlace);
       const std::string groupPath = framePath + "/" + g.name;
-      record.groups.push_back(
-          {g.name, s.writeFields(group.get(), groupPath, *g.fields, s.findStatic(g.name), &g.only)});
+      record.groups.push_back({g.name, s.writeFields(group.get(), groupPath, *g.fields,
+                                                     s.findStatic(g.name), &g.only)});
       record.info.groups.push_back(g.name);
     }
     hdf5::writeAttribute(frame.get(), "time", time, framePlace);
@@ -562,13 +561,13 @@ void FrameWriter::appendSeries(const std::string& name, double time,
   Handle fileSpace = checked(H5Dget_space(dataset.get()), place, "cannot select row");
   const hsize_t start[2] = {series.rows, 0};
   const hsize_t count[2] = {1, width};
-  check(H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start, nullptr, count, nullptr),
-        place, "cannot select row");
+  check(H5Sselect_hyperslab(fileSpace.get(), H5S_SELECT_SET, start, nullptr, count, nullptr), place,
+        "cannot select row");
   Handle memorySpace = checked(H5Screate_simple(2, count, nullptr), place, "cannot select row");
   std::vector<double> row{time};
   row.insert(row.end(), values.begin(), values.end());
-  check(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, memorySpace.get(), fileSpace.get(),
-                 H5P_DEFAULT, row.data()),
+  check(H5Dwrite(dataset.get(), H5T_NATIVE_DOUBLE, memorySpace.get(), fileSpace.get(), H5P_DEFAULT,
+                 row.data()),
         place, "cannot write row", "check free disk space");
   series.rows += 1;
   dataset.close();

@@ -179,8 +179,7 @@ void writeAttribute(hid_t object, const std::string& name, double value, const P
   writeScalarAttribute(object, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, value, place);
 }
 
-void writeAttribute(hid_t object, const std::string& name, std::int64_t value,
-                    const Place& place) {
+void writeAttribute(hid_t object, const std::string& name, std::int64_t value, const Place& place) {
   writeScalarAttribute(object, name, H5T_STD_I64LE, H5T_NATIVE_INT64, value, place);
 }
 
@@ -235,10 +234,9 @@ std::vector<std::string> readStringArrayAttribute(hid_t object, const std::strin
   const hssize_t count = H5Sget_simple_extent_npoints(space.get());
   if (count < 0) fail(place, "cannot read the size of attribute '" + name + "'", "");
   if (count == 0) return {};
-  return readStrings(type.get(), static_cast<std::size_t>(count), place,
-                     [&](hid_t memType, void* buffer) {
-                       return H5Aread(attribute.get(), memType, buffer);
-                     });
+  return readStrings(
+      type.get(), static_cast<std::size_t>(count), place,
+      [&](hid_t memType, void* buffer) { return H5Aread(attribute.get(), memType, buffer); });
 }
 
 namespace {
@@ -276,8 +274,7 @@ Handle openGroup(hid_t parent, const std::string& name, const Place& place) {
     throw IoError(place.file, place.at(name).object, "group is missing",
                   "the file was not written by this toolkit, or the run stopped before it was "
                   "written");
-  return checked(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), place.at(name),
-                 "cannot open group");
+  return checked(H5Gopen2(parent, name.c_str(), H5P_DEFAULT), place.at(name), "cannot open group");
 }
 
 Handle openOrCreateGroup(hid_t parent, const std::string& name, const Place& place) {
@@ -296,8 +293,7 @@ std::pair<hsize_t, hsize_t> datasetShape(hid_t dataset, const Place& place) {
                   "dataset has rank " + std::to_string(rank) + ", expected 1 or 2",
                   "the file was not written by this toolkit");
   hsize_t dims[2] = {0, 1};
-  check(H5Sget_simple_extent_dims(space.get(), dims, nullptr), place,
-        "cannot read dataset shape");
+  check(H5Sget_simple_extent_dims(space.get(), dims, nullptr), place, "cannot read dataset shape");
   return {dims[0], rank == 2 ? dims[1] : 1};
 }
 
@@ -320,8 +316,8 @@ std::string readStringDataset(hid_t parent, const std::string& name, const Place
   if (!hasLink(parent, name, place))
     throw IoError(here.file, here.object, "dataset is missing",
                   "the file was not written by this toolkit");
-  Handle dataset = checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), here,
-                           "cannot open dataset");
+  Handle dataset =
+      checked(H5Dopen2(parent, name.c_str(), H5P_DEFAULT), here, "cannot open dataset");
   Handle type = checked(H5Dget_type(dataset.get()), here, "cannot read dataset type");
   auto values = readStrings(type.get(), 1, here, [&](hid_t memType, void* buffer) {
     return H5Dread(dataset.get(), memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, buffer);

@@ -23,8 +23,8 @@ namespace protocols {
 
 // One HDF5 dataset of shape rows x components.
 struct XdmfDataset {
-  std::string name;     // field name, shown in ParaView
-  std::string path;     // absolute path inside the HDF5 file, e.g. "/frames/000003/fluid/velocity"
+  std::string name;  // field name, shown in ParaView
+  std::string path;  // absolute path inside the HDF5 file, e.g. "/frames/000003/fluid/velocity"
   std::size_t rows = 0;
   int components = 1;
   sim::ScalarKind kind = sim::ScalarKind::kReal;

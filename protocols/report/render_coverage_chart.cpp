@@ -8,7 +8,7 @@
 namespace protocols {
 
 std::string renderCoverageChart(const ReportInput& input) {
-  constexpr double kWidth = 720.0, kHeight = 300.0;  // [px]
+  constexpr double kWidth = 720.0, kHeight = 300.0;                           // [px]
   constexpr double kLeft = 60.0, kRight = 20.0, kTop = 30.0, kBottom = 45.0;  // [px]
   const double plotW = kWidth - kLeft - kRight, plotH = kHeight - kTop - kBottom;
   double t0 = 0.0, t1 = 1.0;  // [s]
@@ -27,20 +27,19 @@ std::string renderCoverageChart(const ReportInput& input) {
   for (std::size_t k = 0; k < input.postures.size(); ++k) {
     const auto& p = input.postures[k];
     s << "<rect x=\"" << num(x(p.start)) << "\" y=\"" << num(kTop) << "\" width=\""
-      << num(std::max(0.0, x(p.end) - x(p.start))) << "\" height=\"" << num(plotH)
-      << "\" fill=\"" << (k % 2 == 0 ? "#f2f2f2" : "#e6eef7") << "\"/>\n";
+      << num(std::max(0.0, x(p.end) - x(p.start))) << "\" height=\"" << num(plotH) << "\" fill=\""
+      << (k % 2 == 0 ? "#f2f2f2" : "#e6eef7") << "\"/>\n";
     s << "<line x1=\"" << num(x(p.start)) << "\" y1=\"" << num(kTop) << "\" x2=\""
       << num(x(p.start)) << "\" y2=\"" << num(kTop + plotH)
       << "\" stroke=\"#777777\" stroke-width=\"1\"/>\n";
-    s << "<text x=\"" << num(x(p.start) + 3) << "\" y=\"" << num(kTop - 8)
-      << "\" font-size=\"11\">" << escapeXml(p.label) << "</text>\n";
+    s << "<text x=\"" << num(x(p.start) + 3) << "\" y=\"" << num(kTop - 8) << "\" font-size=\"11\">"
+      << escapeXml(p.label) << "</text>\n";
   }
   // Axes and grid.
   for (int pct = 0; pct <= 100; pct += 25) {
     const double f = pct / 100.0;
-    s << "<line x1=\"" << num(kLeft) << "\" y1=\"" << num(y(f)) << "\" x2=\""
-      << num(kLeft + plotW) << "\" y2=\"" << num(y(f))
-      << "\" stroke=\"#cccccc\" stroke-width=\"0.5\"/>\n";
+    s << "<line x1=\"" << num(kLeft) << "\" y1=\"" << num(y(f)) << "\" x2=\"" << num(kLeft + plotW)
+      << "\" y2=\"" << num(y(f)) << "\" stroke=\"#cccccc\" stroke-width=\"0.5\"/>\n";
     s << "<text x=\"" << num(kLeft - 6) << "\" y=\"" << num(y(f) + 4)
       << "\" font-size=\"11\" text-anchor=\"end\">" << pct << " %</text>\n";
   }
@@ -61,12 +60,14 @@ std::string renderCoverageChart(const ReportInput& input) {
     for (const auto& f : input.frames) s << num(x(f.time)) << "," << num(y(value(f))) << " ";
     s << "\"><title>" << escapeXml(name) << "</title></polyline>\n";
   };
-  series([](const FrameCoverage& f) { return f.retina().fraction; }, "#e0a526", "",
-         "whole retina");
+  series([](const FrameCoverage& f) { return f.retina().fraction; }, "#e0a526", "", "whole retina");
   static const char* kBreakColours[] = {"#c00000", "#7030a0", "#00804a", "#404040"};
   for (std::size_t b = 0; b < input.breaks.size(); ++b)
-    series([b](const FrameCoverage& f) { return b < f.breaks.size() ? f.breaks[b].area.fraction : 0.0; },
-           kBreakColours[b % 4], " stroke-dasharray=\"6 3\"", "break " + input.breaks[b].name);
+    series(
+        [b](const FrameCoverage& f) {
+          return b < f.breaks.size() ? f.breaks[b].area.fraction : 0.0;
+        },
+        kBreakColours[b % 4], " stroke-dasharray=\"6 3\"", "break " + input.breaks[b].name);
   // Legend.
   double ly = kTop + 12;
   s << "<text x=\"" << num(kLeft + 8) << "\" y=\"" << num(ly)

@@ -10,8 +10,8 @@
 namespace protocols {
 namespace {
 
-constexpr double kSize = 520.0;    // [px] drawing square
-constexpr double kMargin = 40.0;   // [px] around it, for labels
+constexpr double kSize = 520.0;   // [px] drawing square
+constexpr double kMargin = 40.0;  // [px] around it, for labels
 constexpr double kDegree = 180.0 / std::numbers::pi;
 
 std::string colourOf(WallWetting w) {
@@ -57,11 +57,13 @@ std::string renderFundusMap(const ReportInput& input) {
     << "\" fill=\"#ffffff\"/>\n";
   // Angle rings every 30 degrees from the posterior pole.
   for (double a = 30.0; a <= maxAngle + 1e-9; a += 30.0)
-    s << "<circle cx=\"" << num(centre) << "\" cy=\"" << num(centre) << "\" r=\""
-      << num(a * scale) << "\" fill=\"none\" stroke=\"#dddddd\" stroke-width=\"1\"/>\n";
+    s << "<circle cx=\"" << num(centre) << "\" cy=\"" << num(centre) << "\" r=\"" << num(a * scale)
+      << "\" fill=\"none\" stroke=\"#dddddd\" stroke-width=\"1\"/>\n";
   // Wall particles.
-  const double dot = std::max(1.5, std::min(4.0, 0.5 * kSize / std::sqrt(std::max<double>(
-                                                     1.0, static_cast<double>(input.wallPositions.size())))));
+  const double dot =
+      std::max(1.5, std::min(4.0, 0.5 * kSize /
+                                      std::sqrt(std::max<double>(
+                                          1.0, static_cast<double>(input.wallPositions.size())))));
   s << "<g id=\"wall\">\n";
   for (std::size_t w = 0; w < input.wallPositions.size(); ++w) {
     if (w >= input.wallRegions.size() || input.wallRegions[w] == 0) continue;
@@ -136,16 +138,16 @@ std::string renderFundusMap(const ReportInput& input) {
       << "\" font-size=\"12\">" << label << "</text>\n";
     ly += 20;
   }
-  s << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 12)
-    << "\" y2=\"" << num(ly) << "\" stroke=\"#c00000\" stroke-width=\"2.5\"/><text x=\""
-    << num(lx + 16) << "\" y=\"" << num(ly + 4) << "\" font-size=\"12\">break</text>\n";
+  s << "<line x1=\"" << num(lx) << "\" y1=\"" << num(ly) << "\" x2=\"" << num(lx + 12) << "\" y2=\""
+    << num(ly) << "\" stroke=\"#c00000\" stroke-width=\"2.5\"/><text x=\"" << num(lx + 16)
+    << "\" y=\"" << num(ly + 4) << "\" font-size=\"12\">break</text>\n";
   ly += 20;
   s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 4)
     << "\" font-size=\"11\">rings: 30 deg</text>\n";
   s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 20)
     << "\" font-size=\"11\">from the pole</text>\n";
-  s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 40) << "\" font-size=\"11\">t = "
-    << formatNumber(input.mapTime, 4) << " s</text>\n";
+  s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 40)
+    << "\" font-size=\"11\">t = " << formatNumber(input.mapTime, 4) << " s</text>\n";
   s << "</svg>\n";
   return s.str();
 }

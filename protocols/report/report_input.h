@@ -28,11 +28,11 @@ struct ReportStage {
 // What the implicit pressure solve achieved over the run (absent for explicit solvers and for
 // runs that did not record it).
 struct ReportPressureSolve {
-  double tolerance = 0.0;          // [1] accuracy.solver_tolerance asked for
-  double meanDensityError = 0.0;   // [1] the steps' final mean density errors, dt-weighted
+  double tolerance = 0.0;            // [1] accuracy.solver_tolerance asked for
+  double meanDensityError = 0.0;     // [1] the steps' final mean density errors, dt-weighted
   double maxStepDensityError = 0.0;  // [1]
-  double meanIterations = 0.0;     // density-solve iterations per step
-  double capFraction = 0.0;        // [1] steps that stopped at the iteration cap
+  double meanIterations = 0.0;       // density-solve iterations per step
+  double capFraction = 0.0;          // [1] steps that stopped at the iteration cap
   int iterationCap = 0;
   long steps = 0;
 };
@@ -52,23 +52,23 @@ struct ReportOutline {
 
 struct ReportBreak {
   std::string name;
-  std::string where;               // clinical position in words, e.g. "12 o'clock, 8 mm from the limbus"
+  std::string where;  // clinical position in words, e.g. "12 o'clock, 8 mm from the limbus"
   std::vector<sim::Vec3> outline;  // [m] eye frame, closed ring on the wall
 };
 
 struct ReportInput {
   std::string title;
-  std::string eyeSide = "OD";          // "OD" or "OS": which side of the map is nasal
-  std::vector<std::string> scenario;   // the scenario in words, one paragraph each
-  std::vector<ReportPosture> postures; // the schedule as run
-  std::vector<FrameCoverage> frames;   // in increasing time
-  ScheduleCoverage summary;            // summarizeSchedule(frames)
-  std::vector<ReportBreak> breaks;     // same order as the frames' breaks
+  std::string eyeSide = "OD";           // "OD" or "OS": which side of the map is nasal
+  std::vector<std::string> scenario;    // the scenario in words, one paragraph each
+  std::vector<ReportPosture> postures;  // the schedule as run
+  std::vector<FrameCoverage> frames;    // in increasing time
+  ScheduleCoverage summary;             // summarizeSchedule(frames)
+  std::vector<ReportBreak> breaks;      // same order as the frames' breaks
   // The fundus map shows the wall state of one frame (normally the last).
-  double mapTime = 0.0;                      // [s]
-  std::vector<sim::Vec3> wallPositions;      // [m] eye frame, #W
-  std::vector<double> wallOilFraction;       // [1] #W
-  std::vector<WallWetting> wallWetting;      // #W
+  double mapTime = 0.0;                         // [s]
+  std::vector<sim::Vec3> wallPositions;         // [m] eye frame, #W
+  std::vector<double> wallOilFraction;          // [1] #W
+  std::vector<WallWetting> wallWetting;         // #W
   std::vector<anatomy::RegionSet> wallRegions;  // #W; particles outside the retina are not drawn
   std::vector<ReportOutline> outlines;
   std::vector<ReportStage> stages;

@@ -36,8 +36,7 @@ void writeFile(const std::filesystem::path& path, const std::string& text) {
   out << text;
   out.close();
   if (!out)
-    throw IoError(path.string(), "", "writing the report file failed",
-                  "check the free disk space");
+    throw IoError(path.string(), "", "writing the report file failed", "check the free disk space");
 }
 
 }  // namespace
@@ -45,17 +44,17 @@ void writeFile(const std::filesystem::path& path, const std::string& text) {
 std::string renderReportHtml(const ReportInput& in) {
   std::ostringstream s;
   s << "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n"
-    << "<meta charset=\"utf-8\"/>\n<title>" << escapeXml(in.title) << "</title>\n<style>"
-    << kStyle << "</style>\n</head>\n<body>\n";
+    << "<meta charset=\"utf-8\"/>\n<title>" << escapeXml(in.title) << "</title>\n<style>" << kStyle
+    << "</style>\n</head>\n<body>\n";
   s << "<h1>" << escapeXml(in.title) << "</h1>\n";
 
   s << "<h2>Scenario</h2>\n";
   for (const auto& p : in.scenario) s << "<p>" << escapeXml(p) << "</p>\n";
   if (!in.frames.empty()) {
     s << "<p>Over the whole schedule (" << formatNumber(in.summary.duration, 4)
-      << " s simulated) oil covered on average <strong>"
-      << formatPercent(in.summary.regions[0]) << "</strong> of the retina; at the end "
-      << formatPercent(in.frames.back().retina().fraction) << ".";
+      << " s simulated) oil covered on average <strong>" << formatPercent(in.summary.regions[0])
+      << "</strong> of the retina; at the end " << formatPercent(in.frames.back().retina().fraction)
+      << ".";
     for (std::size_t b = 0; b < in.breaks.size() && b < in.summary.breakTimeCovered.size(); ++b)
       s << " Break " << escapeXml(in.breaks[b].name) << " was covered "
         << formatPercent(in.summary.breakTimeCovered[b]) << " of the time.";
@@ -75,7 +74,8 @@ std::string renderReportHtml(const ReportInput& in) {
     s << "<tr><td>" << kReportedRegions[r].name << "</td><td class=\"n\">"
       << formatNumber(last.area * 1e6, 4) << "</td><td class=\"n\">"
       << formatPercent(in.summary.regions[r]) << "</td><td class=\"n\">"
-      << formatPercent(minimumOver(in.frames, [r](const FrameCoverage& f) { return f.regions[r].fraction; }))
+      << formatPercent(
+             minimumOver(in.frames, [r](const FrameCoverage& f) { return f.regions[r].fraction; }))
       << "</td><td class=\"n\">" << formatPercent(last.fraction) << "</td><td class=\"n\">"
       << formatPercent(last.area > 0 ? last.dryArea / last.area : 0.0) << "</td></tr>\n";
   }
@@ -106,7 +106,8 @@ std::string renderReportHtml(const ReportInput& in) {
         << escapeXml(in.breaks[b].where) << "</td><td class=\"n\">"
         << formatPercent(b < in.summary.breakFraction.size() ? in.summary.breakFraction[b] : 0.0)
         << "</td><td class=\"n\">"
-        << formatPercent(b < in.summary.breakTimeCovered.size() ? in.summary.breakTimeCovered[b] : 0.0)
+        << formatPercent(b < in.summary.breakTimeCovered.size() ? in.summary.breakTimeCovered[b]
+                                                                : 0.0)
         << "</td><td class=\"" << (coveredAtEnd ? "yes\">yes" : "no\">no") << "</td></tr>\n";
     }
     s << "</table>\n";
@@ -170,11 +171,11 @@ std::string renderSummaryJson(const ReportInput& in) {
   s << "  \"regions\": [\n";
   for (std::size_t r = 0; r < kReportedRegions.size(); ++r) {
     const AreaCoverage last = in.frames.empty() ? AreaCoverage{} : in.frames.back().regions[r];
-    s << "    {\"name\": \"" << kReportedRegions[r].name << "\", \"area_m2\": "
-      << formatNumber(last.area, 6) << ", \"mean_fraction\": "
-      << formatNumber(in.summary.regions[r], 6) << ", \"final_fraction\": "
-      << formatNumber(last.fraction, 6) << "}" << (r + 1 < kReportedRegions.size() ? "," : "")
-      << "\n";
+    s << "    {\"name\": \"" << kReportedRegions[r].name
+      << "\", \"area_m2\": " << formatNumber(last.area, 6)
+      << ", \"mean_fraction\": " << formatNumber(in.summary.regions[r], 6)
+      << ", \"final_fraction\": " << formatNumber(last.fraction, 6) << "}"
+      << (r + 1 < kReportedRegions.size() ? "," : "") << "\n";
   }
   s << "  ],\n  \"breaks\": [\n";
   for (std::size_t b = 0; b < in.breaks.size(); ++b) {
@@ -184,7 +185,8 @@ std::string renderSummaryJson(const ReportInput& in) {
       << escapeJson(in.breaks[b].where) << "\", \"mean_fraction\": "
       << formatNumber(b < in.summary.breakFraction.size() ? in.summary.breakFraction[b] : 0.0, 6)
       << ", \"time_covered\": "
-      << formatNumber(b < in.summary.breakTimeCovered.size() ? in.summary.breakTimeCovered[b] : 0.0, 6)
+      << formatNumber(b < in.summary.breakTimeCovered.size() ? in.summary.breakTimeCovered[b] : 0.0,
+                      6)
       << ", \"covered_at_end\": " << (coveredAtEnd ? "true" : "false") << "}"
       << (b + 1 < in.breaks.size() ? "," : "") << "\n";
   }
@@ -193,10 +195,10 @@ std::string renderSummaryJson(const ReportInput& in) {
     s << (k ? ", " : "") << "\"" << escapeJson(in.tissue[k]) << "\"";
   s << "],\n  \"stages\": [\n";
   for (std::size_t k = 0; k < in.stages.size(); ++k)
-    s << "    {\"name\": \"" << escapeJson(in.stages[k].name) << "\", \"active\": "
-      << (in.stages[k].active ? "true" : "false") << ", \"seconds\": "
-      << formatNumber(in.stages[k].seconds, 6) << "}" << (k + 1 < in.stages.size() ? "," : "")
-      << "\n";
+    s << "    {\"name\": \"" << escapeJson(in.stages[k].name)
+      << "\", \"active\": " << (in.stages[k].active ? "true" : "false")
+      << ", \"seconds\": " << formatNumber(in.stages[k].seconds, 6) << "}"
+      << (k + 1 < in.stages.size() ? "," : "") << "\n";
   s << "  ]";
   if (in.pressureSolve) {
     const ReportPressureSolve& ps = *in.pressureSolve;

@@ -49,7 +49,8 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
   for (int k = 0; k < options.calibrationSteps; ++k) {
     const auto start = std::chrono::steady_clock::now();
     pipeline.step(world);
-    const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     plan.calibrationSeconds += seconds;
     fastest = std::min(fastest, seconds);
   }
@@ -68,10 +69,14 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
     const double ratio = d / v.particleSpacing;  // [1]
     e.particles = static_cast<double>(plan.dynamicParticles) * ratio * ratio * ratio;
     double dt = first.dt;
-    if (first.limitedBy == "max") dt = v.maxTimeStep;
-    else if (first.limitedBy == "min") dt = v.minTimeStep;
-    else if (first.limitedBy == "viscosity") dt = first.dt / (ratio * ratio);
-    else dt = first.dt / ratio;  // cfl, solver's acoustic limit
+    if (first.limitedBy == "max")
+      dt = v.maxTimeStep;
+    else if (first.limitedBy == "min")
+      dt = v.minTimeStep;
+    else if (first.limitedBy == "viscosity")
+      dt = first.dt / (ratio * ratio);
+    else
+      dt = first.dt / ratio;  // cfl, solver's acoustic limit
     e.timeStep = std::clamp(dt, v.minTimeStep, v.maxTimeStep);
     e.steps = std::ceil(plan.simulatedDuration / e.timeStep);
     e.seconds = e.steps * e.particles * plan.secondsPerParticleStep;

@@ -36,11 +36,11 @@ struct PresetEstimate {
   double particles = 0.0;        // dynamic particles (estimate unless it is the scenario's own)
   double timeStep = 0.0;         // [s]
   double steps = 0.0;
-  double seconds = 0.0;          // [s] wall-clock estimate
+  double seconds = 0.0;  // [s] wall-clock estimate
 };
 
 struct ScenarioPlan {
-  std::string pipeline;               // sim::Pipeline::describe()
+  std::string pipeline;  // sim::Pipeline::describe()
   std::vector<sim::StageDecision> decisions;
   std::size_t dynamicParticles = 0;
   std::size_t wallParticles = 0;
@@ -51,9 +51,9 @@ struct ScenarioPlan {
   // Calibration.
   int calibrationSteps = 0;
   int threads = 1;
-  double calibrationSeconds = 0.0;        // [s] wall-clock of all timed steps
-  double secondsPerParticleStep = 0.0;    // [s]
-  double firstTimeStep = 0.0;             // [s]
+  double calibrationSeconds = 0.0;      // [s] wall-clock of all timed steps
+  double secondsPerParticleStep = 0.0;  // [s]
+  double firstTimeStep = 0.0;           // [s]
   std::string timeStepLimitedBy;
   // Every stage's own time-step limit at the start [s] (stages without one are left out), so
   // users see what each effect costs in steps (e.g. the capillary or elastic-wave limit).

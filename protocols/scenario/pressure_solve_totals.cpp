@@ -12,7 +12,8 @@ void PressureSolveTotals::add(const sim::SolverStats& stats, double dt) {
   if (iterationCap > 0 && stats.densityIterations >= iterationCap) ++stepsAtIterationCap;
   time += dt;
   densityErrorTime += dt * stats.averageCompression;
-  maxStepDensityError = std::max(maxStepDensityError, static_cast<double>(stats.averageCompression));
+  maxStepDensityError =
+      std::max(maxStepDensityError, static_cast<double>(stats.averageCompression));
 }
 
 double PressureSolveTotals::meanIterations() const {
@@ -23,15 +24,23 @@ double PressureSolveTotals::meanDivergenceIterations() const {
   return steps > 0 ? static_cast<double>(divergenceIterations) / static_cast<double>(steps) : 0.0;
 }
 
-double PressureSolveTotals::meanDensityError() const { return time > 0.0 ? densityErrorTime / time : 0.0; }
+double PressureSolveTotals::meanDensityError() const {
+  return time > 0.0 ? densityErrorTime / time : 0.0;
+}
 
 double PressureSolveTotals::capFraction() const {
   return steps > 0 ? static_cast<double>(stepsAtIterationCap) / static_cast<double>(steps) : 0.0;
 }
 
 std::vector<std::string> PressureSolveTotals::columns() {
-  return {"steps",          "density_iterations", "divergence_iterations", "steps_at_iteration_cap",
-          "iteration_cap",  "time",               "density_error_time",    "max_step_density_error"};
+  return {"steps",
+          "density_iterations",
+          "divergence_iterations",
+          "steps_at_iteration_cap",
+          "iteration_cap",
+          "time",
+          "density_error_time",
+          "max_step_density_error"};
 }
 
 std::vector<double> PressureSolveTotals::row() const {

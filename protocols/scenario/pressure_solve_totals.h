@@ -27,8 +27,8 @@ struct PressureSolveTotals {
   bool implicitSolve() const { return iterationCap > 0; }
   double meanIterations() const;
   double meanDivergenceIterations() const;
-  double meanDensityError() const;     // [1] dt-weighted
-  double capFraction() const;          // [1] of the steps
+  double meanDensityError() const;  // [1] dt-weighted
+  double capFraction() const;       // [1] of the steps
 
   // The series row (column names and values in the same order) and its inverse.
   static std::vector<std::string> columns();

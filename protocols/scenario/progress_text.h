@@ -24,7 +24,8 @@ std::string formatWallDuration(double seconds);
 
 // Terminal form: "\r[#######.......]  23.4 %  t = 0.117 s  upright  step 1520  ETA 1 min 05 s"
 // padded to a fixed width so a shorter line overwrites a longer one; no newline.
-std::string renderProgressBar(const RunProgress& progress, double elapsedSeconds, int barWidth = 30);
+std::string renderProgressBar(const RunProgress& progress, double elapsedSeconds,
+                              int barWidth = 30);
 
 // Plain form, one line with its newline:
 // "progress  23.4 %  t = 0.117 s / 0.5 s  upright  step 1520  elapsed 20 s  ETA 1 min 05 s\n"
@@ -40,10 +41,10 @@ class PlainProgressThrottle {
   bool due(double fraction, double elapsedSeconds);
 
  private:
-  double fractionStep_;         // [1]
-  double maxSilence_;           // [s] wall
-  double nextFraction_ = 0.0;   // [1]
-  double lastPrinted_ = -1e300; // [s] wall
+  double fractionStep_;          // [1]
+  double maxSilence_;            // [s] wall
+  double nextFraction_ = 0.0;    // [1]
+  double lastPrinted_ = -1e300;  // [s] wall
 };
 
 }  // namespace protocols

@@ -35,9 +35,12 @@ ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& s, cons
     if (!d.active) in.stages.push_back({d.name, false, d.reason, 0.0, 0});
   const PressureSolveTotals& solve = r.pressureSolve;
   if (solve.steps > 0 && solve.implicitSolve()) {
-    in.pressureSolve = ReportPressureSolve{s.accuracy.solverTolerance, solve.meanDensityError(),
-                                           solve.maxStepDensityError, solve.meanIterations(),
-                                           solve.capFraction(),        solve.iterationCap,
+    in.pressureSolve = ReportPressureSolve{s.accuracy.solverTolerance,
+                                           solve.meanDensityError(),
+                                           solve.maxStepDensityError,
+                                           solve.meanIterations(),
+                                           solve.capFraction(),
+                                           solve.iterationCap,
                                            solve.steps};
     in.accuracy.push_back({"pressure solve (achieved)", pressureSolveValue(*in.pressureSolve),
                            pressureSolveNote(*in.pressureSolve)});
@@ -87,7 +90,8 @@ Protocol loadRunProtocol(const std::filesystem::path& folder, ScenarioOptions& o
   const auto override = info.strings.find("accuracy_override");
   if (override != info.strings.end() && !override->second.empty())
     for (std::size_t p = 0; p < kAccuracyPresetNames.size(); ++p)
-      if (kAccuracyPresetNames[p] == override->second) options.accuracy = static_cast<AccuracyPreset>(p);
+      if (kAccuracyPresetNames[p] == override->second)
+        options.accuracy = static_cast<AccuracyPreset>(p);
   return parseProtocol(protocolPath.string());
 }
 
@@ -101,16 +105,20 @@ void rebuildReport(const std::filesystem::path& folder) {
   applyRecordedPostureEnds(reader, s);  // "until steady" postures that ended early
   const FieldData walls = reader.readStaticField("wall", sim::field::kPosition);
   if (walls.rows != s.world->walls.size())
-    throw IoError(h5.string(), "/static/wall/position",
-                  "the run has " + std::to_string(walls.rows) + " wall particles, the re-assembled "
-                  "scenario " + std::to_string(s.world->walls.size()),
-                  "rebuild the report with the toolkit version that ran it (" + info.toolkitVersion + ")");
+    throw IoError(
+        h5.string(), "/static/wall/position",
+        "the run has " + std::to_string(walls.rows) +
+            " wall particles, the re-assembled "
+            "scenario " +
+            std::to_string(s.world->walls.size()),
+        "rebuild the report with the toolkit version that ran it (" + info.toolkitVersion + ")");
 
   RunResults r;
   std::vector<sim::Vec3> x;
   std::vector<std::int32_t> ids;
   const bool tissue = std::find(s.outputFields.begin(), s.outputFields.end(), sim::field::kId) !=
-                          s.outputFields.end() && s.retinaSamples.moves();
+                          s.outputFields.end() &&
+                      s.retinaSamples.moves();
   for (const FrameInfo& f : reader.frames()) {
     const FieldData position = reader.readField(f.index, "fluid", sim::field::kPosition);
     const FieldData material = reader.readField(f.index, "fluid", sim::field::kMaterial);
@@ -134,10 +142,12 @@ void rebuildReport(const std::filesystem::path& folder) {
   if (lastFrame.step > 0) r.meanTimeStep = lastFrame.time / static_cast<double>(lastFrame.step);
   const SeriesData stages = reader.readSeries("stage_seconds");
   for (std::size_t c = 1; c < stages.columns.size(); ++c)
-    r.timers.push_back({stages.columns[c], stages.values[(stages.rows - 1) * stages.columns.size() + c], 0});
+    r.timers.push_back(
+        {stages.columns[c], stages.values[(stages.rows - 1) * stages.columns.size() + c], 0});
   const SeriesData calls = reader.readSeries("stage_calls");
   for (std::size_t c = 1; c < calls.columns.size() && c - 1 < r.timers.size(); ++c)
-    r.timers[c - 1].calls = static_cast<long>(calls.values[(calls.rows - 1) * calls.columns.size() + c]);
+    r.timers[c - 1].calls =
+        static_cast<long>(calls.values[(calls.rows - 1) * calls.columns.size() + c]);
   const std::vector<std::string> series = reader.seriesNames();
   if (std::find(series.begin(), series.end(), "pressure_solve") != series.end()) {
     const SeriesData solve = reader.readSeries("pressure_solve");

@@ -25,9 +25,9 @@ struct RunResults {
   WallOilFractions lastFractions;               // wall state of the last frame
   std::vector<sim::StageTimers::Entry> timers;  // per-stage wall-clock
   std::vector<sim::StageDecision> decisions;
-  TissueMeasures lastTissue;                    // tissue state of the last frame
-  double meanTimeStep = 0.0;                    // [s] simulated time / steps (0 = unknown)
-  PressureSolveTotals pressureSolve;            // steps = 0: not recorded (an older run)
+  TissueMeasures lastTissue;          // tissue state of the last frame
+  double meanTimeStep = 0.0;          // [s] simulated time / steps (0 = unknown)
+  PressureSolveTotals pressureSolve;  // steps = 0: not recorded (an older run)
 };
 
 ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& scenario,

@@ -28,9 +28,7 @@ class CellGrid {
   }
 
  private:
-  Eigen::Array3i cellOf(const sim::Vec3& x) const {
-    return (x / h_).array().floor().cast<int>();
-  }
+  Eigen::Array3i cellOf(const sim::Vec3& x) const { return (x / h_).array().floor().cast<int>(); }
   static std::int64_t key(const Eigen::Array3i& c) {
     const auto u = [](int v) { return static_cast<std::int64_t>(v + (1 << 20)) & ((1 << 21) - 1); };
     return (u(c[0]) << 42) | (u(c[1]) << 21) | u(c[2]);
@@ -41,8 +39,8 @@ class CellGrid {
 };
 
 struct Sums {
-  double fraction = 0.0;                      // [1] C_i
-  sim::Vec3 gradient = sim::Vec3::Zero();     // [1/m] grad C_i
+  double fraction = 0.0;                   // [1] C_i
+  sim::Vec3 gradient = sim::Vec3::Zero();  // [1/m] grad C_i
 };
 
 Sums sumsAt(const sim::World& world, std::size_t i, const CellGrid& dynamic, const CellGrid& walls,
@@ -81,7 +79,8 @@ std::vector<double> volumeFractions(const sim::World& world) {
   const auto n = static_cast<std::int64_t>(c.size());
 #pragma omp parallel for schedule(static)
   for (std::int64_t i = 0; i < n; ++i)
-    c[static_cast<std::size_t>(i)] = sumsAt(world, static_cast<std::size_t>(i), dynamic, walls, restVolumes).fraction;
+    c[static_cast<std::size_t>(i)] =
+        sumsAt(world, static_cast<std::size_t>(i), dynamic, walls, restVolumes).fraction;
   return c;
 }
 
@@ -89,12 +88,12 @@ FillRelaxationResult relaxFill(sim::World& world, const FillRelaxation& options)
   const std::size_t n = world.particles.size();
   std::vector<char> moves(n, 0);
   for (std::size_t i = 0; i < n; ++i)
-    moves[i] = std::find(options.movable.begin(), options.movable.end(), world.particles.material[i]) !=
-               options.movable.end();
+    moves[i] = std::find(options.movable.begin(), options.movable.end(),
+                         world.particles.material[i]) != options.movable.end();
   const std::vector<double> restVolumes = restVolumesOf(world);
   const CellGrid walls(world.walls.x, world.supportRadius());
-  const double d = world.particleSpacing();  // [m]
-  const double limit = options.maxShift * d;  // [m]
+  const double d = world.particleSpacing();             // [m]
+  const double limit = options.maxShift * d;            // [m]
   const double totalLimit = options.maxTotalShift * d;  // [m]
   const std::vector<sim::Vec3> start = world.particles.x;
   FillRelaxationResult result;
@@ -131,9 +130,11 @@ FillRelaxationResult relaxFill(sim::World& world, const FillRelaxation& options)
     }
     for (std::size_t i = 0; i < n; ++i) {
       if (!moves[i]) continue;
-      const sim::Vec3 moved = world.particles.x[i] + shift[i] - start[i];  // [m] from the lattice site
+      const sim::Vec3 moved =
+          world.particles.x[i] + shift[i] - start[i];  // [m] from the lattice site
       const double length = moved.norm();
-      world.particles.x[i] = start[i] + (length > totalLimit ? (totalLimit / length) * moved : moved);
+      world.particles.x[i] =
+          start[i] + (length > totalLimit ? (totalLimit / length) * moved : moved);
     }
   }
   for (std::size_t i = 0; i < n; ++i)

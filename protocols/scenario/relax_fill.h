@@ -16,9 +16,9 @@
 namespace protocols {
 
 struct FillRelaxation {
-  int passes = 100;             // [1] shifting passes
-  double shiftFactor = 0.1;     // [1] D / d^2: dx = -shiftFactor d^2 grad C
-  double maxShift = 0.1;        // [1] per pass, in spacings (keeps the pass from tunnelling)
+  int passes = 100;          // [1] shifting passes
+  double shiftFactor = 0.1;  // [1] D / d^2: dx = -shiftFactor d^2 grad C
+  double maxShift = 0.1;     // [1] per pass, in spacings (keeps the pass from tunnelling)
   // [1] total, in spacings, from the particle's lattice site. The holes the pass fills are less
   // than a lattice cell away (the staircase along a curved wall: up to sqrt(3)/2 d), but a
   // boundary of one layer (a 1 mm elastic sclera sampled at d = 1.2 mm, with nothing behind
@@ -26,7 +26,7 @@ struct FillRelaxation {
   // the passes, 0.79 after 30, 0.75 after 100 on paper_sclera_10kpa.toml. A lattice cut 0.65 d
   // from the wall ends >= 0.15 d inside it with this cap.
   double maxTotalShift = 0.5;
-  std::vector<int> movable;     // material indices that move (the fluids); the rest stay fixed
+  std::vector<int> movable;  // material indices that move (the fluids); the rest stay fixed
 };
 
 struct FillRelaxationResult {

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
-#include <optional>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 #include "protocols/io/checkpoint.h"
@@ -73,10 +73,10 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   const double interval = protocol.outputs.frameInterval.value;  // [s]
   double nextFrame = world.time + interval;                      // [s]
   std::size_t firstPosture = 0;
-  double postureStart = 0.0;                // [s] simulated time the current posture began
-  double nextSample = 0.0;                  // [s] next steady-state sample (until steady)
-  std::vector<SteadySample> samples;        // of the current posture, trimmed to one window
-  PressureSolveTotals solve;                // since the run's start (carried over a resume)
+  double postureStart = 0.0;          // [s] simulated time the current posture began
+  double nextSample = 0.0;            // [s] next steady-state sample (until steady)
+  std::vector<SteadySample> samples;  // of the current posture, trimmed to one window
+  PressureSolveTotals solve;          // since the run's start (carried over a resume)
 
   std::optional<FrameWriter> writer;
   if (options.resume) {
@@ -95,7 +95,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     const auto count = state.integerCounters.at("steady_samples");
     for (std::int64_t k = 0; k < count; ++k) {
       const std::string key = "steady:" + std::to_string(k) + ":";
-      SteadySample restored{state.realCounters.at(key + "time"), state.realCounters.at(key + "energy"), {}};
+      SteadySample restored{
+          state.realCounters.at(key + "time"), state.realCounters.at(key + "energy"), {}};
       const auto values = state.integerCounters.at(key + "coverages");
       for (std::int64_t c = 0; c < values; ++c)
         restored.coverage.push_back(state.realCounters.at(key + "coverage:" + std::to_string(c)));
@@ -118,7 +119,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
         for (std::size_t i = 0; i < position.rows; ++i)
           x[i] = sim::Vec3(position.real(i, 0), position.real(i, 1), position.real(i, 2));
         std::vector<std::int32_t> ids;
-        if (s.retinaSamples.moves()) ids = reader.readField(f.index, "fluid", sim::field::kId).integers;
+        if (s.retinaSamples.moves())
+          ids = reader.readField(f.index, "fluid", sim::field::kId).integers;
         lastFractions = measureWallFractions(s, x, material.integers, ids);
         if (tissue && !ids.empty()) lastTissue = measureTissues(s, x, ids);
         frames.push_back(measureFrameCoverage(s.retina, lastFractions, f.time));
@@ -148,7 +150,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     if (world.particles.fields.has(kTissueDisplacementField))
       updateTissueDisplacement(s, fluidPositions, fluidIds,
                                world.particles.fields.get<sim::Vec3>(kTissueDisplacementField));
-    writer->writeFrame(world.time, world.stepCount, {{"fluid", &world.particles.fields, s.outputFields}});
+    writer->writeFrame(world.time, world.stepCount,
+                       {{"fluid", &world.particles.fields, s.outputFields}});
     lastFractions = measureWallFractions(s, fluidPositions, fluidMaterials, fluidIds);
     if (tissue) {
       lastTissue = measureTissues(s, fluidPositions, fluidIds);
@@ -204,11 +207,13 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
       const std::string key = "steady:" + std::to_string(k) + ":";
       state.realCounters[key + "time"] = samples[k].time;
       state.realCounters[key + "energy"] = samples[k].kineticEnergyPerMass;
-      state.integerCounters[key + "coverages"] = static_cast<std::int64_t>(samples[k].coverage.size());
+      state.integerCounters[key + "coverages"] =
+          static_cast<std::int64_t>(samples[k].coverage.size());
       for (std::size_t c = 0; c < samples[k].coverage.size(); ++c)
         state.realCounters[key + "coverage:" + std::to_string(c)] = samples[k].coverage[c];
     }
-    for (const auto& e : pipeline.timers().entries()) state.realCounters["stage:" + e.name] = e.seconds;
+    for (const auto& e : pipeline.timers().entries())
+      state.realCounters["stage:" + e.name] = e.seconds;
     solve.save(state.realCounters);
     state.groups["fluid"] = &world.particles.fields;
     state.groups["wall"] = &world.walls.fields;
@@ -220,7 +225,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   double totalMass = 0.0;  // [kg] constant
   {
     sim::DeterministicReducer r;
-    totalMass = r.sum(world.particles.size(), [&](std::size_t i) { return world.particles.mass[i]; });
+    totalMass =
+        r.sum(world.particles.size(), [&](std::size_t i) { return world.particles.mass[i]; });
   }
   auto sample = [&]() {
     fluidPositions.assign(world.particles.x.begin(), world.particles.x.end());
@@ -273,7 +279,8 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
         steady = isSteady(samples, postureStart, criteria);
         // Keep one window: the newest sample at or before the window's start and all after it.
         std::size_t keep = 0;
-        while (keep + 1 < samples.size() && samples[keep + 1].time <= world.time - criteria.window) ++keep;
+        while (keep + 1 < samples.size() && samples[keep + 1].time <= world.time - criteria.window)
+          ++keep;
         samples.erase(samples.begin(), samples.begin() + static_cast<std::ptrdiff_t>(keep));
       }
       if (steady || world.time >= postureEnd) endPosture(steady);
@@ -292,14 +299,16 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   summary.simulatedTime = world.time;
   if (summary.stopped) {
     writer->close();
-    summary.wallSeconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
+    summary.wallSeconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
     return summary;
   }
   record();  // the end state (skipped when the last step already wrote it)
   writer->close();
 
   // Report.
-  RunResults results{frames,     lastFractions,
+  RunResults results{frames,
+                     lastFractions,
                      pipeline.timers().entries(),
                      pipeline.decisions(),
                      lastTissue,

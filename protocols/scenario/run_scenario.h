@@ -19,11 +19,11 @@
 #include <functional>
 #include <limits>
 #include <optional>
-#include <vector>
 #include <string>
+#include <vector>
 
-#include "protocols/format/protocol.h"
 #include "protocols/coverage/schedule_coverage.h"
+#include "protocols/format/protocol.h"
 #include "protocols/io/frame_reader.h"
 #include "protocols/scenario/pressure_solve_totals.h"
 #include "protocols/scenario/scenario.h"
@@ -39,27 +39,27 @@ struct RunProgress {
 };
 
 struct RunOptions {
-  std::filesystem::path outputFolder;        // must exist; frames.h5 must not
+  std::filesystem::path outputFolder;                // must exist; frames.h5 must not
   std::function<void(const RunProgress&)> progress;  // called after every step (may be empty)
   bool resume = false;  // continue from <out>/checkpoint.h5 (the scenario must be re-assembled
                         // from the same protocol and accuracy)
   const std::atomic<bool>* stopRequested = nullptr;  // set by a signal handler: checkpoint, stop
-  long stopAfterSteps = -1;       // > 0: behave as if stopped at this step (tests)
-  long checkpointInterval = 1024; // [steps] a multiple of the Z-sort interval (16)
-  std::string accuracyOverride;  // the preset name given on the command line, recorded for
-                                 // `tamponade report DIR` ("" = the protocol's own)
+  long stopAfterSteps = -1;              // > 0: behave as if stopped at this step (tests)
+  long checkpointInterval = 1024;        // [steps] a multiple of the Z-sort interval (16)
+  std::string accuracyOverride;          // the preset name given on the command line, recorded for
+                                         // `tamponade report DIR` ("" = the protocol's own)
   std::optional<SteadyCriteria> steady;  // "until steady": default steadyCriteriaOf(protocol)
 };
 
 struct RunSummary {
-  bool stopped = false;        // a stop was requested: checkpoint written, no report
+  bool stopped = false;  // a stop was requested: checkpoint written, no report
   std::size_t frames = 0;
   long steps = 0;
-  double simulatedTime = 0.0;  // [s]
-  double wallSeconds = 0.0;    // [s]
-  double retinaCoverage = 0.0; // [1] time-weighted mean
+  double simulatedTime = 0.0;   // [s]
+  double wallSeconds = 0.0;     // [s]
+  double retinaCoverage = 0.0;  // [1] time-weighted mean
   PressureSolveTotals pressureSolve;
-  ScheduleCoverage coverage;   // every reported region's and break's time-weighted mean
+  ScheduleCoverage coverage;  // every reported region's and break's time-weighted mean
 };
 
 // Runs `scenario` (built from `protocol`). Throws IoError for output problems, SimError when the

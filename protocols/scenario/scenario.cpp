@@ -1,9 +1,9 @@
 #include "protocols/scenario/scenario.h"
 
 #include <algorithm>
-#include <numbers>
 #include <cmath>
 #include <cstdio>
+#include <numbers>
 
 #include "anatomy/anatomy_error.h"
 #include "anatomy/material_library.h"
@@ -45,7 +45,8 @@ std::string coarseSpacingNote(double spacing) {
          "--spacings` measures it on this scene)";
 }
 
-[[noreturn]] void fail(const SourceLocation& where, const std::string& what, const std::string& fix) {
+[[noreturn]] void fail(const SourceLocation& where, const std::string& what,
+                       const std::string& fix) {
   throw ProtocolError({Diagnostic{where, what, fix}});
 }
 
@@ -62,8 +63,8 @@ void buildCavity(const Protocol& p, Scenario& s) {
           "imported cavity mesh: it carries no clinical landmarks, so the whole wall counts as "
           "retina (no quadrants, macula or periphery) and breaks cannot be placed");
       if (!e.breaks.empty())
-        fail(e.breaks.front().where, "retinal break '" + e.breaks.front().name.value +
-                                         "' on an imported mesh cavity",
+        fail(e.breaks.front().where,
+             "retinal break '" + e.breaks.front().name.value + "' on an imported mesh cavity",
              "breaks are placed by clinical coordinates, which need a parametric eye (kind = "
              "\"emmetropic\", \"myopic\" or \"staphyloma\"); remove the breaks or use one");
     } else {
@@ -86,9 +87,9 @@ void buildCavity(const Protocol& p, Scenario& s) {
       };
       anatomy::VitreousCavity cavity = make();
       s.cavity = std::move(cavity.mesh);
-      s.eye.emplace(e.side.value == EyeSide::kOd ? anatomy::Laterality::kRight
-                                                 : anatomy::Laterality::kLeft,
-                    cavity.shape);
+      s.eye.emplace(
+          e.side.value == EyeSide::kOd ? anatomy::Laterality::kRight : anatomy::Laterality::kLeft,
+          cavity.shape);
     }
   } catch (const anatomy::AnatomyError& error) {
     fail(e.axialLength ? e.axialLength->where : e.kind.where, error.what(),
@@ -153,7 +154,8 @@ meshing::SurfaceSamples buildWalls(const Protocol& p, Scenario& s, double spacin
         if (r < best) best = r, nearest = w;
       }
       inside.push_back(nearest);
-      s.notes.push_back("break '" + spec.name + "' is smaller than the particle spacing: the "
+      s.notes.push_back("break '" + spec.name +
+                        "' is smaller than the particle spacing: the "
                         "nearest wall particle stands for it");
     }
     s.retina.breakNames.push_back(spec.name);
@@ -231,7 +233,8 @@ FluidPhase tamponadePhase(const TamponadeSpec& t) {
     f.dynamicViscosity = v.kind == ViscosityKind::kDynamic ? v.value : v.value * f.density;
   }
   if (t.interfacialTension) f.interfacialTension = t.interfacialTension->value;
-  if (t.contactAngle) f.contactAngleThroughAqueous = t.contactAngle->value * 180.0 / std::numbers::pi;
+  if (t.contactAngle)
+    f.contactAngleThroughAqueous = t.contactAngle->value * 180.0 / std::numbers::pi;
   return f;
 }
 
@@ -242,19 +245,22 @@ void chooseGravityReference(const ScenarioOptions& options, Scenario& s) {
   if (!options.removeHydrostaticBackground) return;
   for (const TissueBody& t : s.tissues)
     if (t.decision.elastic) {
-      s.notes.push_back("gravity acts in full (an elastic " + t.name + " must feel the full "
+      s.notes.push_back("gravity acts in full (an elastic " + t.name +
+                        " must feel the full "
                         "hydrostatic pressure), so slow buoyant motion of the oil may stall "
                         "(docs/interface.md, validation 6)");
       return;
     }
   const FluidPhase& reference = s.phases[0].count > 0 ? s.phases[0] : s.phases[1];
-  // The frames' pressures are then p' = p - rho_ref g.x (the reference fluid's hydrostatic part out).
+  // The frames' pressures are then p' = p - rho_ref g.x (the reference fluid's hydrostatic part
+  // out).
   s.world->gravityReferenceDensity = reference.density;
   char line[256];
-  std::snprintf(line, sizeof line,
-                "gravity acts relative to %s (%.0f kg/m^3): the hydrostatic background is out of "
-                "the pressure (exact in the closed, filled cavity); frames' pressures are p - rho g.x",
-                reference.material.c_str(), reference.density);
+  std::snprintf(
+      line, sizeof line,
+      "gravity acts relative to %s (%.0f kg/m^3): the hydrostatic background is out of "
+      "the pressure (exact in the closed, filled cavity); frames' pressures are p - rho g.x",
+      reference.material.c_str(), reference.density);
   s.notes.push_back(line);
 }
 
@@ -279,14 +285,17 @@ void resolveOutputFields(const Protocol& p, Scenario& s) {
   for (const Located<std::string>& f : p.outputs.fields) {
     if (std::find(names.begin(), names.end(), f.value) != names.end()) continue;
     const std::string hint = didYouMean(f.value, candidates);
-    problems.push_back({f.where, "outputs.fields: '" + f.value + "' is not a particle field of this scene",
-                        (hint.empty() ? std::string() : hint + " ") + "fields here: " +
-                            joinNames(candidates, true)});
+    problems.push_back({f.where,
+                        "outputs.fields: '" + f.value + "' is not a particle field of this scene",
+                        (hint.empty() ? std::string() : hint + " ") +
+                            "fields here: " + joinNames(candidates, true)});
   }
   if (!problems.empty()) throw ProtocolError(std::move(problems));
-  for (const char* always : {sim::field::kPosition, sim::field::kMaterial}) s.outputFields.push_back(always);
+  for (const char* always : {sim::field::kPosition, sim::field::kMaterial})
+    s.outputFields.push_back(always);
   if (s.retinaSamples.moves() || s.world->particles.fields.has(kTissueDisplacementField))
-    for (const char* tissue : {sim::field::kId, kTissueDisplacementField}) s.outputFields.push_back(tissue);
+    for (const char* tissue : {sim::field::kId, kTissueDisplacementField})
+      s.outputFields.push_back(tissue);
   for (const Located<std::string>& f : p.outputs.fields)
     if (std::find(s.outputFields.begin(), s.outputFields.end(), f.value) == s.outputFields.end())
       s.outputFields.push_back(f.value);
@@ -403,7 +412,8 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   Eigen::AlignedBox3d bounds;
   for (const auto& v : s.cavity.vertices) bounds.extend(v);
   const double pad = 4.0 * wp.supportRadiusFactor * d + tissueDomainPadding(p, d);  // [m]
-  wp.domain = sim::Box(bounds.min() - sim::Vec3::Constant(pad), bounds.max() + sim::Vec3::Constant(pad));
+  wp.domain =
+      sim::Box(bounds.min() - sim::Vec3::Constant(pad), bounds.max() + sim::Vec3::Constant(pad));
   s.world = std::make_unique<sim::World>(wp);
   s.world->gravity = wp.gravity;
   try {
@@ -420,7 +430,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
 
   const meshing::SurfaceSamples retinaSamples = buildWalls(p, s, options.wallSpacingFactor * d);
   recordRetinaSamples(s, retinaSamples.points, retinaSamples.normals);  // tissue_particles.h
-  addTissues(p, s);        // elastic sclera / orbital fat replace the wall they cover (issue 7)
+  addTissues(p, s);  // elastic sclera / orbital fat replace the wall they cover (issue 7)
   s.layeredWalls = chooseLayeredWalls(p, options, s);
   if (s.layeredWalls) replaceWithLayeredWalls(s, d);
   const bool layered = s.layeredWalls;
@@ -435,7 +445,8 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
       std::sort(tags.begin(), tags.end());
       tags.erase(std::unique(tags.begin(), tags.end()), tags.end());
       for (const int tag : tags)
-        s.world->materials.setContactAngle(aqueous.materialIndex, tag, *oil.contactAngleThroughAqueous);
+        s.world->materials.setContactAngle(aqueous.materialIndex, tag,
+                                           *oil.contactAngleThroughAqueous);
       if (const std::string note = contactAngleRangeNote(180.0 - *oil.contactAngleThroughAqueous);
           !note.empty())
         s.notes.push_back(note);
@@ -450,7 +461,8 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   // Fluids: fill plane under the first posture's gravity; a lighter tamponade floats.
   const sim::Vec3 down = s.schedule.front().gravity.normalized();
   const sim::Vec3 oilSide = oil.density < aqueous.density ? sim::Vec3(-down) : down;
-  const meshing::FillPlane plane = meshing::findFillPlane(s.cavity, p.tamponade.fill.value, oilSide);
+  const meshing::FillPlane plane =
+      meshing::findFillPlane(s.cavity, p.tamponade.fill.value, oilSide);
   meshing::VolumeSamplingOptions vo;
   vo.spacing = d;
   const bool relaxed = options.massRule == MassRule::kRelaxedFill;
@@ -466,7 +478,8 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     std::stable_sort(order.begin(), order.end(), [&](std::size_t lhs, std::size_t rhs) {
       return oilSide.dot(lattice[lhs]) > oilSide.dot(lattice[rhs]);
     });
-    const auto nOil = static_cast<std::size_t>(std::llround(p.tamponade.fill.value * static_cast<double>(lattice.size())));
+    const auto nOil = static_cast<std::size_t>(
+        std::llround(p.tamponade.fill.value * static_cast<double>(lattice.size())));
     for (std::size_t k = 0; k < order.size(); ++k)
       (k < nOil ? oilPoints : aqueousPoints).push_back(lattice[order[k]]);
   } else {
@@ -478,8 +491,10 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   aqueous.count = aqueousPoints.size();
   if (oil.count == 0)
     fail(p.tamponade.fill.where,
-         "the fill " + std::to_string(p.tamponade.fill.value) + " leaves the tamponade without "
-         "particles at spacing " + std::to_string(d * 1e3) + " mm",
+         "the fill " + std::to_string(p.tamponade.fill.value) +
+             " leaves the tamponade without "
+             "particles at spacing " +
+             std::to_string(d * 1e3) + " mm",
          "raise the fill or use a finer accuracy preset");
   for (FluidPhase* phase : {&aqueous, &oil}) {
     if (phase->count == 0) {
@@ -499,8 +514,10 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     s.fillCompression = factor;
   }
   if (options.massRule == MassRule::kRestDensity) {
-    const double represented = static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume;
-    s.notes.push_back("the fluid particles stand for " + std::to_string(static_cast<int>(100 * represented + 0.5)) +
+    const double represented =
+        static_cast<double>(oil.count + aqueous.count) * d * d * d / s.cavityVolume;
+    s.notes.push_back("the fluid particles stand for " +
+                      std::to_string(static_cast<int>(100 * represented + 0.5)) +
                       " % of the cavity volume at rest density (the rest is the wall layer)");
   }
   for (const auto& x : aqueousPoints)
@@ -514,28 +531,37 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   // Pipeline options: solver by name, effects forced by the protocol.
   s.pipelineOptions.solver = std::string(toString(p.solver.value));
   bool known = false;
-  for (const auto& entry : sim::solverRegistry()) known = known || entry.name == s.pipelineOptions.solver;
+  for (const auto& entry : sim::solverRegistry())
+    known = known || entry.name == s.pipelineOptions.solver;
   // A protocol that names no solver gets the format's default, INDSPH (the paper's method). It
   // needs the fill at rest density (MassRule::kRelaxedFill); with the older, compressed fill
   // rules only WCSPH starts the scene, so they fall back to it with a note.
   if (!p.solver.where.isInFile() && options.massRule != MassRule::kRelaxedFill) {
-    s.notes.push_back("no solver chosen: using 'wcsph' (the format's default '" + s.pipelineOptions.solver +
+    s.notes.push_back("no solver chosen: using 'wcsph' (the format's default '" +
+                      s.pipelineOptions.solver +
                       "' needs the fill at rest density, which this mass rule does not give)");
     s.pipelineOptions.solver = "wcsph";
     known = true;
   }
   if (!known) {
     std::string names;
-    for (const auto& entry : sim::solverRegistry()) names += (names.empty() ? "" : ", ") + entry.name;
+    for (const auto& entry : sim::solverRegistry())
+      names += (names.empty() ? "" : ", ") + entry.name;
     fail(p.solver.where, "solver '" + s.pipelineOptions.solver + "' is not in this build",
          "use one of: " + names);
   }
   // The cavity is filled with oil and aqueous: no free surface (background_pressure's rule).
   s.pipelineOptions.closedDomain = sim::Force::kOn;
   switch (p.accuracy.surfaceStress.value) {
-    case SurfaceStressName::kAuto: s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kAuto; break;
-    case SurfaceStressName::kCorrected: s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kCorrected; break;
-    case SurfaceStressName::kSymmetric: s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kSymmetric; break;
+    case SurfaceStressName::kAuto:
+      s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kAuto;
+      break;
+    case SurfaceStressName::kCorrected:
+      s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kCorrected;
+      break;
+    case SurfaceStressName::kSymmetric:
+      s.pipelineOptions.surfaceStress = sim::SurfaceStressForm::kSymmetric;
+      break;
   }
   // accuracy.solver_tolerance is the mean relative density error every implicit pressure solve
   // stops at (each within its own iteration cap); the explicit solvers have no solve to stop.
@@ -555,12 +581,14 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
     for (const auto& entry : sim::effectRegistry()) registered = registered || entry.name == name;
     if (!registered) {
       if (setting.value == EffectSetting::kOn)
-        fail(setting.where, "effect '" + name + "' is forced on but this build does not have it yet",
+        fail(setting.where,
+             "effect '" + name + "' is forced on but this build does not have it yet",
              "remove the line or set it to \"auto\"");
       s.notes.push_back("effect '" + name + "' forced off: this build does not have it anyway");
       continue;
     }
-    s.pipelineOptions.forced[name] = setting.value == EffectSetting::kOn ? sim::Force::kOn : sim::Force::kOff;
+    s.pipelineOptions.forced[name] =
+        setting.value == EffectSetting::kOn ? sim::Force::kOn : sim::Force::kOff;
   }
 
   try {

@@ -94,10 +94,10 @@ struct ScenarioOptions {
 };
 
 struct FluidPhase {
-  std::string material;       // material library name ("aqueous", "silicone_oil_1000", ...)
-  int materialIndex = -1;     // in world.materials
+  std::string material;    // material library name ("aqueous", "silicone_oil_1000", ...)
+  int materialIndex = -1;  // in world.materials
   bool isTamponade = false;
-  double density = 0.0;       // [kg/m^3]
+  double density = 0.0;           // [kg/m^3]
   double dynamicViscosity = 0.0;  // [Pa s]
   // Tamponade only: interfacial tension against aqueous [N/m] and contact angle on the retina
   // measured through the aqueous phase [deg] (DESIGN.md), from the library or the protocol.
@@ -114,7 +114,8 @@ struct ScheduledPosture {
   double duration = 0.0;                  // [s] (the upper bound when untilSteady; what was run
                                           //      once a run ended it steady)
   bool untilSteady = false;
-  std::optional<bool> endedSteady = {};   // set by a run (or from its files): steady before the bound
+  std::optional<bool> endedSteady =
+      {};  // set by a run (or from its files): steady before the bound
 };
 
 struct AccuracySettings {
@@ -127,32 +128,32 @@ struct AccuracySettings {
 
 struct Scenario {
   std::string title;
-  std::optional<anatomy::Eye> eye;    // parametric cavities only (an imported mesh has no landmarks)
-  meshing::TriangleMesh cavity;       // [m] closed, outward, eye frame
-  double cavityVolume = 0.0;          // [m^3]
-  double cavityArea = 0.0;            // [m^2]
+  std::optional<anatomy::Eye> eye;  // parametric cavities only (an imported mesh has no landmarks)
+  meshing::TriangleMesh cavity;     // [m] closed, outward, eye frame
+  double cavityVolume = 0.0;        // [m^3]
+  double cavityArea = 0.0;          // [m^2]
   std::vector<anatomy::RetinalBreak> breaks;
-  RetinaMap retina;                   // per retina sample (the walls as first sampled)
-  RetinaSamples retinaSamples;        // where the coverage is measured (may move with a tissue)
-  std::vector<TissueBody> tissues;    // the protocol's sclera / orbital fat, decided
-  std::vector<FluidPhase> phases;     // [0] aqueous, [1] tamponade (a phase may have 0 particles)
+  RetinaMap retina;                 // per retina sample (the walls as first sampled)
+  RetinaSamples retinaSamples;      // where the coverage is measured (may move with a tissue)
+  std::vector<TissueBody> tissues;  // the protocol's sclera / orbital fat, decided
+  std::vector<FluidPhase> phases;   // [0] aqueous, [1] tamponade (a phase may have 0 particles)
   std::vector<ScheduledPosture> schedule;
   AccuracySettings accuracy;
   std::unique_ptr<sim::World> world;  // initialized
   sim::PipelineOptions pipelineOptions;
-  std::vector<std::string> notes;     // what was simplified or left out, in words
+  std::vector<std::string> notes;  // what was simplified or left out, in words
   // Fluid fields each frame holds: the protocol's outputs.fields, checked against the registry
   // once the pipeline's fields are registered, plus position and material, which the coverage
   // (report, `tamponade report DIR`, resume) is recomputed from.
   std::vector<std::string> outputFields;
-  double fillCompression = 1.0;       // [1] initial mean density / rest density (MassRule)
+  double fillCompression = 1.0;  // [1] initial mean density / rest density (MassRule)
   // kRelaxedFill: the kernel-summed volume fraction C (relax_fill.h) of the fluid particles at
   // t = 0, mean and max (1 = rest density); and the fluid volume the particles hold, N d^3, over
   // the cavity minus the wall's d/2 shell, V - A d/2. Layered walls (no shifting pass): the same
   // fractions at t = 0, and N d^3 over the whole cavity V.
-  double startMeanFraction = 0.0;     // [1]
-  double startMaxFraction = 0.0;      // [1]
-  double heldVolumeRatio = 0.0;       // [1]
+  double startMeanFraction = 0.0;  // [1]
+  double startMaxFraction = 0.0;   // [1]
+  double heldVolumeRatio = 0.0;    // [1]
   // The cavity wall is three lattice layers (accuracy.wall_model, layered_cavity_walls.h); false:
   // one Akinci layer on the mesh. The retina samples are the mesh's Poisson-disk points either way.
   bool layeredWalls = false;

@@ -16,7 +16,8 @@ std::string solverToleranceMeaning(const std::string& solver) {
     return "mean relative density error at which the " + solver +
            " pressure solve stops (or at its 100-iteration cap; what it reached: 'pressure solve "
            "(achieved)')";
-  return "not used: " + solver + " is explicit; its speed of sound bounds the density error near 1 %";
+  return "not used: " + solver +
+         " is explicit; its speed of sound bounds the density error near 1 %";
 }
 
 constexpr int kOutlinePoints = 96;  // points per closed outline on the map
@@ -59,7 +60,8 @@ std::string pressureSolveValue(const ReportPressureSolve& solve) {
 }
 
 std::string pressureSolveNote(const ReportPressureSolve& solve) {
-  std::string note = "over " + std::to_string(solve.steps) + " steps, weighted by their time steps; ";
+  std::string note =
+      "over " + std::to_string(solve.steps) + " steps, weighted by their time steps; ";
   if (solve.capFraction > 0.0)
     note += percentOf(solve.capFraction) + " of the steps stopped at the " +
             std::to_string(solve.iterationCap) + "-iteration cap above the tolerance of " +
@@ -67,7 +69,8 @@ std::string pressureSolveNote(const ReportPressureSolve& solve) {
   else
     note += "every step reached the tolerance of " + percentOf(solve.tolerance);
   return note + "; worst step " + percentOf(solve.maxStepDensityError) +
-         " (the oil is about 3 % lighter than the aqueous: errors well below that keep its buoyancy)";
+         " (the oil is about 3 % lighter than the aqueous: errors well below that keep its "
+         "buoyancy)";
 }
 
 ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
@@ -88,21 +91,22 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
     in.scenario.push_back(eye.str());
     std::ostringstream fill;
     const FluidPhase& oil = s.phases[1];
-    fill << "Tamponade: " << oil.material << " (" << formatNumber(oil.density, 4)
-         << " kg/m\u00b3, " << formatNumber(oil.dynamicViscosity, 3) << " Pa s), "
+    fill << "Tamponade: " << oil.material << " (" << formatNumber(oil.density, 4) << " kg/m\u00b3, "
+         << formatNumber(oil.dynamicViscosity, 3) << " Pa s), "
          << formatPercent(p.tamponade.fill.value) << " fill; the rest is aqueous ("
          << formatNumber(s.phases[0].density, 4) << " kg/m\u00b3). The "
          << (oil.density < s.phases[0].density ? "oil floats (lighter than aqueous)."
                                                : "tamponade sinks (heavier than aqueous).");
     fill << " Kinematic viscosity " << formatNumber(oil.dynamicViscosity / oil.density * 1e6, 4)
-         << " cSt (aqueous " << formatNumber(s.phases[0].dynamicViscosity / s.phases[0].density * 1e6, 3)
-         << " cSt).";
+         << " cSt (aqueous "
+         << formatNumber(s.phases[0].dynamicViscosity / s.phases[0].density * 1e6, 3) << " cSt).";
     if (oil.interfacialTension)
-      fill << " Interfacial tension against aqueous " << formatNumber(*oil.interfacialTension * 1e3, 3)
-           << " mN/m.";
+      fill << " Interfacial tension against aqueous "
+           << formatNumber(*oil.interfacialTension * 1e3, 3) << " mN/m.";
     if (oil.contactAngleThroughAqueous)
       fill << " Contact angle on the retina " << formatNumber(*oil.contactAngleThroughAqueous, 3)
-           << "\u00b0 through the aqueous (" << formatNumber(180.0 - *oil.contactAngleThroughAqueous, 3)
+           << "\u00b0 through the aqueous ("
+           << formatNumber(180.0 - *oil.contactAngleThroughAqueous, 3)
            << "\u00b0 through the tamponade).";
     in.scenario.push_back(fill.str());
     std::ostringstream schedule;
@@ -142,8 +146,8 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
     const anatomy::ClinicalPosition& pos = br.spec().position;
     where << formatNumber(pos.clockHour, 3) << " o'clock, " << millimetres(pos.distance)
           << " posterior to the "
-          << (pos.from == anatomy::DistanceReference::kLimbus ? "limbus" : "ora serrata")
-          << ", " << millimetres(br.spec().diameter) << " across";
+          << (pos.from == anatomy::DistanceReference::kLimbus ? "limbus" : "ora serrata") << ", "
+          << millimetres(br.spec().diameter) << " across";
     rb.where = where.str();
     const sim::Vec3 c = br.centre().position, n = br.centre().normal;
     const sim::Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
@@ -169,8 +173,10 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
     }
     in.outlines.push_back(std::move(ora));
     in.outlines.push_back(std::move(equator));
-    in.outlines.push_back({"posterior pole", ringAroundPole(eye, eye.landmarks().posteriorPoleRadius), true});
-    in.outlines.push_back({"macula", ringAroundPole(eye, 0.5 * eye.landmarks().maculaDiameter), true});
+    in.outlines.push_back(
+        {"posterior pole", ringAroundPole(eye, eye.landmarks().posteriorPoleRadius), true});
+    in.outlines.push_back(
+        {"macula", ringAroundPole(eye, 0.5 * eye.landmarks().maculaDiameter), true});
   }
 
   const AccuracySettings& a = s.accuracy;

@@ -25,10 +25,10 @@
 namespace protocols {
 
 struct SteadyCriteria {
-  double window = 0.5;                  // [s] simulated time the two conditions must hold
-  double kineticEnergyPerMass = 5e-6;   // [J/kg] = [m^2/s^2]; (3.2 mm/s)^2 / 2
-  double coverageChange = 0.005;        // [1] max - min of any region's coverage in the window
-  double sampleInterval = 0.05;         // [s] how often the runner samples (window / 10)
+  double window = 0.5;                 // [s] simulated time the two conditions must hold
+  double kineticEnergyPerMass = 5e-6;  // [J/kg] = [m^2/s^2]; (3.2 mm/s)^2 / 2
+  double coverageChange = 0.005;       // [1] max - min of any region's coverage in the window
+  double sampleInterval = 0.05;        // [s] how often the runner samples (window / 10)
 };
 
 // The protocol's schedule.steady_window and schedule.steady_coverage_change, sampled ten times
@@ -37,8 +37,8 @@ SteadyCriteria steadyCriteriaOf(const Protocol& protocol);
 
 // One sample the runner takes while a posture is held.
 struct SteadySample {
-  double time = 0.0;                 // [s] simulated
-  double kineticEnergyPerMass = 0.0; // [J/kg] sum(m v^2 / 2) / sum(m) of the fluid
+  double time = 0.0;                  // [s] simulated
+  double kineticEnergyPerMass = 0.0;  // [J/kg] sum(m v^2 / 2) / sum(m) of the fluid
   // [1] area-weighted oil coverage of each reported region and each break (whole retina,
   // quadrants, macula, ..., then the breaks' covered fractions). Each one separately must
   // settle: at 90 % fill the whole retina's coverage hardly depends on the posture (the aqueous

@@ -27,7 +27,8 @@
 namespace protocols {
 namespace {
 
-[[noreturn]] void fail(const SourceLocation& where, const std::string& what, const std::string& fix) {
+[[noreturn]] void fail(const SourceLocation& where, const std::string& what,
+                       const std::string& fix) {
   throw ProtocolError({Diagnostic{where, what, fix}});
 }
 
@@ -81,7 +82,8 @@ void addParticles(Scenario& s, TissueBody& t, const std::vector<sim::Vec3>& poin
   // Written to the frames (the per-particle displacement map), recomputed before each frame.
   particles.fields.addOrGet<sim::Vec3>({kTissueDisplacementField, "m", false, true});
   t.materialIndex = s.world->materials.add(elasticMaterial(t));
-  t.thicknessModeFrequency = std::numbers::pi * sim::ElasticityPeer2018::waveSpeed(elasticMaterial(t)) /
+  t.thicknessModeFrequency = std::numbers::pi *
+                             sim::ElasticityPeer2018::waveSpeed(elasticMaterial(t)) /
                              (2.0 * t.layerThickness);
   t.firstId = static_cast<std::int32_t>(particles.size());
   t.count = points.size();
@@ -126,8 +128,8 @@ std::size_t tagWettedRetina(Scenario& s, const TissueBody& t, const meshing::She
 std::string TissueBody::describe() const {
   std::ostringstream s;
   s << name << " (E " << formatNumber(youngsModulus * 1e-3, 4) << " kPa, t " << mm(thickness)
-    << ", load " << formatNumber(loadPressure, 3) << " Pa): "
-    << (decision.elastic ? "elastic" : "rigid") << ", " << decision.reason;
+    << ", load " << formatNumber(loadPressure, 3)
+    << " Pa): " << (decision.elastic ? "elastic" : "rigid") << ", " << decision.reason;
   if (decision.elastic && count > 0) {
     s << "; " << count << " particles, " << anchored << " anchored";
     if (simulatedModulus != youngsModulus)
@@ -146,7 +148,8 @@ double tissueDomainPadding(const Protocol& p, double d) {
   if (p.eye.sclera || p.eye.orbitalFat)
     pad += std::max(1.5e-3, kMinTissueLayerSpacings * d) + (kBackstopGapSpacings + 1.0) * d;
   // The fat, and the bony orbit up to (kOrbitGapSpacings + 1) d beyond its outermost particles.
-  if (p.eye.orbitalFat) pad += anatomy::OrbitalFatParameters{}.thickness + (kOrbitGapSpacings + 1.0) * d;
+  if (p.eye.orbitalFat)
+    pad += anatomy::OrbitalFatParameters{}.thickness + (kOrbitGapSpacings + 1.0) * d;
   return pad;
 }
 
@@ -324,7 +327,7 @@ std::size_t wallClampBand(const meshing::TriangleMesh& cavityMesh, const ShellGa
 void addTissues(const Protocol& p, Scenario& s) {
   const EyeSpec& e = p.eye;
   if (!e.sclera && !e.orbitalFat) return;
-  const double d = s.accuracy.particleSpacing;  // [m]
+  const double d = s.accuracy.particleSpacing;                                       // [m]
   const double radius = std::cbrt(3.0 * s.cavityVolume / (4.0 * std::numbers::pi));  // [m]
   const double load = sceneLoadPressure(p, s, radius);                               // [Pa]
 
@@ -335,8 +338,11 @@ void addTissues(const Protocol& p, Scenario& s) {
       const TissueSpec& t = **spec;
       const std::string name = spec == &e.sclera ? "sclera" : "orbital fat";
       if (t.mode.value == TissueMode::kElastic)
-        fail(t.mode.where, "mode = \"elastic\" for the " + name + ", but an imported mesh cavity has "
-                           "no anatomy to sample the " + name + " from",
+        fail(t.mode.where,
+             "mode = \"elastic\" for the " + name +
+                 ", but an imported mesh cavity has "
+                 "no anatomy to sample the " +
+                 name + " from",
              "use a parametric eye (kind = \"emmetropic\", \"myopic\" or \"staphyloma\") or set "
              "mode = \"rigid\"");
       s.notes.push_back(name + ": not sampled on an imported mesh cavity (no anatomy); rigid wall");
@@ -366,8 +372,9 @@ void addTissues(const Protocol& p, Scenario& s) {
       // only its compression; a free one lets it stretch as a membrane around the cavity.
       const bool anchoredFarFace = spec.anchoring.value != Anchoring::kNone;
       t.estimatedDisplacement =
-          anchoredFarFace ? sim::estimateAnchoredLayerCompression(load, t.thickness, t.youngsModulus)
-                          : sim::estimateTissueDeformation(load, radius, t.thickness, t.youngsModulus);
+          anchoredFarFace
+              ? sim::estimateAnchoredLayerCompression(load, t.thickness, t.youngsModulus)
+              : sim::estimateTissueDeformation(load, radius, t.thickness, t.youngsModulus);
       t.decision = sim::decideElastic(t.estimatedDisplacement, d, choiceOf(spec.mode.value));
       t.decision.reason = (anchoredFarFace ? "anchored layer compressed, u = p t / E; "
                                            : "free membrane, u = p R^2 / (2 E t); ") +
@@ -435,8 +442,9 @@ void addTissues(const Protocol& p, Scenario& s) {
                           " layer with E scaled to keep E t (bending stiffness and mass per area "
                           "over-estimated)");
       if (t.anchored == 0)
-        s.notes.push_back("sclera: no particle anchored (anchoring = \"none\"): only the fluid and "
-                          "the fat hold it");
+        s.notes.push_back(
+            "sclera: no particle anchored (anchoring = \"none\"): only the fluid and "
+            "the fat hold it");
       scleraLayer.resize(s.retinaSamples.restPositions.size());
       for (std::size_t w = 0; w < scleraLayer.size(); ++w)
         scleraLayer[w] = layerAt(s.retinaSamples.restPositions[w]);
@@ -454,8 +462,10 @@ void addTissues(const Protocol& p, Scenario& s) {
     const bool scleraElastic = scleraIndex && s.tissues[*scleraIndex].decision.elastic;
     if (!scleraElastic && e.orbitalFat->mode.value == TissueMode::kAuto && t.decision.elastic) {
       t.decision.elastic = false;
-      t.decision.reason = "behind a rigid sclera the fat cannot change the cavity, treated as "
-                          "rigid (alone: " + t.decision.reason + ")";
+      t.decision.reason =
+          "behind a rigid sclera the fat cannot change the cavity, treated as "
+          "rigid (alone: " +
+          t.decision.reason + ")";
     }
     if (t.decision.elastic) {
       t.layerThickness = t.thickness;
@@ -476,8 +486,8 @@ void addTissues(const Protocol& p, Scenario& s) {
         const double r = (x - q).norm();  // [m] from the cavity wall
         const double anatomical = shell->thicknessAt(q);
         // From the sclera's outer surface on, without a gap: both are points of the one lattice, so
-        // the fat's front continues the sclera's outer layer at rest spacing (a gap there is a p = 0
-        // free surface inside the pressurised globe, which drew fluid through the sclera).
+        // the fat's front continues the sclera's outer layer at rest spacing (a gap there is a p =
+        // 0 free surface inside the pressurised globe, which drew fluid through the sclera).
         if (scleraSampled && r <= std::max(anatomical, minLayer)) continue;
         points.push_back(x);
         anchored.push_back(e.orbitalFat->anchoring.value == Anchoring::kBackFace &&
@@ -519,7 +529,8 @@ void addTissues(const Protocol& p, Scenario& s) {
     // Where elastic fat lies behind the sclera, it holds the globe: no backstop there.
     std::vector<sim::Vec3> fat;
     for (const TissueBody& t : s.tissues)
-      if (t.name == "orbital fat" && t.decision.elastic) fat.insert(fat.end(), t.restPositions.begin(), t.restPositions.end());
+      if (t.name == "orbital fat" && t.decision.elastic)
+        fat.insert(fat.end(), t.restPositions.begin(), t.restPositions.end());
     const PointGrid fatGrid(fat, 2.0 * d);
     const auto nearFat = [&](const sim::Vec3& x) { return fatGrid.anyWithin(x, 2.0 * d); };
     std::vector<sim::Index> keep;
@@ -562,7 +573,8 @@ void addTissues(const Protocol& p, Scenario& s) {
         clamp.push_back(x);
         if (!onCapRim(x, scleraGrid, coveredGrid, d)) continue;
         const long c = coveredGrid.nearest(x, 4.0 * d);
-        const double layer = c >= 0 ? coveredLayer[static_cast<std::size_t>(c)] : kMinTissueLayerSpacings * d;
+        const double layer =
+            c >= 0 ? coveredLayer[static_cast<std::size_t>(c)] : kMinTissueLayerSpacings * d;
         const double depth = layer + kBackstopGapSpacings * d;  // [m]
         const auto put = [&](const sim::Vec3& at, const sim::Vec3& normal) {
           added.push_back(at);
@@ -571,7 +583,8 @@ void addTissues(const Protocol& p, Scenario& s) {
           clamp.push_back(at);
           ++collarCount;
         };
-        for (double step = 0.5 * d; step <= depth + 1e-6 * d; step += 0.5 * d) put(x + step * walls.normal[w], walls.normal[w]);
+        for (double step = 0.5 * d; step <= depth + 1e-6 * d; step += 0.5 * d)
+          put(x + step * walls.normal[w], walls.normal[w]);
         // The cap meets the globe at a crease (the lens surface and the sclera's normals differ
         // by tens of degrees), so the collar's end and the backstop's first column diverge: a fan
         // of wall particles at the backstop's depth, spacing <= d/2, closes that wedge.
@@ -590,7 +603,8 @@ void addTissues(const Protocol& p, Scenario& s) {
       sim::DynamicParticles& particles = s.world->particles;
       for (std::size_t k = 0; k < sclera.count; ++k) {
         const std::size_t i = static_cast<std::size_t>(sclera.firstId) + k;  // not yet re-sorted
-        if (sim::isFixed(particles, i) || !clampGrid.anyWithin(sclera.restPositions[k], kLimbusClampSpacings * d))
+        if (sim::isFixed(particles, i) ||
+            !clampGrid.anyWithin(sclera.restPositions[k], kLimbusClampSpacings * d))
           continue;
         sim::setFixed(particles, i);
         ++sclera.anchored;
@@ -626,7 +640,8 @@ void addTissues(const Protocol& p, Scenario& s) {
       const PointGrid scleraGrid(sclera.restPositions, 2.0 * d);
       const PointGrid fatReach(fat, reach);
       const PointGrid coveredGrid(covered, 4.0 * d);
-      const sim::Vec3 lo = box.min() - sim::Vec3::Constant(reach), hi = box.max() + sim::Vec3::Constant(reach);
+      const sim::Vec3 lo = box.min() - sim::Vec3::Constant(reach),
+                      hi = box.max() + sim::Vec3::Constant(reach);
       for (double x = lo.x(); x <= hi.x(); x += h)
         for (double y = lo.y(); y <= hi.y(); y += h)
           for (double z = lo.z(); z <= hi.z(); z += h) {
@@ -636,7 +651,8 @@ void addTissues(const Protocol& p, Scenario& s) {
             const sim::Vec3 away = q - fat[static_cast<std::size_t>(f)];
             if (away.norm() < kOrbitGapSpacings * d || scleraGrid.anyWithin(q, 2.0 * d)) continue;
             long c = -1;
-            for (double around = 4.0 * d; c < 0 && around < 64.0 * d; around *= 2.0) c = coveredGrid.nearest(q, around);
+            for (double around = 4.0 * d; c < 0 && around < 64.0 * d; around *= 2.0)
+              c = coveredGrid.nearest(q, around);
             added.push_back(q);
             addedNormal.push_back(away.normalized());
             addedTag.push_back(c >= 0 ? coveredTag[static_cast<std::size_t>(c)] : 0);
@@ -649,8 +665,10 @@ void addTissues(const Protocol& p, Scenario& s) {
     if (backstopCount > 0)
       s.notes.push_back("sclera held at its outer surface: a rigid wall (the orbit) stands " +
                         formatNumber(kBackstopGapSpacings, 2) +
-                        " particle spacing behind it where no orbital fat is, so its anchored layer is backed within "
-                        "the kernel's support (no empty gap, i.e. no p = 0 free surface, behind the pressurised globe)");
+                        " particle spacing behind it where no orbital fat is, so its anchored "
+                        "layer is backed within "
+                        "the kernel's support (no empty gap, i.e. no p = 0 free surface, behind "
+                        "the pressurised globe)");
     if (bandCount > 0)
       s.notes.push_back(
           "the limbus clamp band's face walled like the cavity: " + std::to_string(bandCount) +
@@ -663,10 +681,13 @@ void addTissues(const Protocol& p, Scenario& s) {
                         " wall particles where the backstop's, collar's and fan's samples left "
                         "openings wider than the cavity wall's");
     if (collarCount > 0)
-      s.notes.push_back("sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL cap): " +
-                        std::to_string(sclera.limbusClamped) + " sclera particles within " +
-                        formatNumber(kLimbusClampSpacings, 2) + " spacings of the cap's wall or of a rigid collar (" +
-                        std::to_string(collarCount) + " wall particles from the cap's edge out to the backstop) anchored");
+      s.notes.push_back(
+          "sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL "
+          "cap): " +
+          std::to_string(sclera.limbusClamped) + " sclera particles within " +
+          formatNumber(kLimbusClampSpacings, 2) +
+          " spacings of the cap's wall or of a rigid collar (" + std::to_string(collarCount) +
+          " wall particles from the cap's edge out to the backstop) anchored");
     if (orbitCount > 0)
       s.notes.push_back(
           "the bony orbit: " + std::to_string(orbitCount) + " rigid wall particles " +
@@ -678,8 +699,8 @@ void addTissues(const Protocol& p, Scenario& s) {
 namespace {
 
 // TissueMeasures::fluidInTissue / fluidThroughTissue / deepestFluid (criteria in the header).
-void countFluidInTissue(const Scenario& s, const std::vector<sim::Vec3>& x, const std::vector<std::int32_t>& ids,
-                        TissueMeasures& m) {
+void countFluidInTissue(const Scenario& s, const std::vector<sim::Vec3>& x,
+                        const std::vector<std::int32_t>& ids, TissueMeasures& m) {
   const RetinaSamples& r = s.retinaSamples;
   const TissueBody* sclera = nullptr;
   for (const TissueBody& t : s.tissues)
@@ -714,7 +735,8 @@ void countFluidInTissue(const Scenario& s, const std::vector<sim::Vec3>& x, cons
     m.deepestFluid = std::max(m.deepestFluid, depthHere);
     const std::vector<std::size_t> near = scleraGrid.within(x[i], 1.5 * d);
     bool in = near.empty() ? depthHere > d
-                           : std::any_of(near.begin(), near.end(), [&](std::size_t j) { return depthOf(j) < depthHere - d; });
+                           : std::any_of(near.begin(), near.end(),
+                                         [&](std::size_t j) { return depthOf(j) < depthHere - d; });
     const long w = samples.nearest(cavity.closestPoint(x[i]), 2.0 * d);
     const double layer = w >= 0 ? r.scleraLayer[static_cast<std::size_t>(w)] : 0.0;  // [m]
     const bool through = depthHere > std::max(layer, d);
@@ -795,8 +817,8 @@ std::vector<std::string> tissueReportLines(const Scenario& s, const TissueMeasur
   std::vector<std::string> lines;
   const double d = s.accuracy.particleSpacing;
   if (s.tissues.empty()) return {"no tissue in the protocol: rigid cavity wall"};
-  const bool anyElastic =
-      std::any_of(s.tissues.begin(), s.tissues.end(), [](const TissueBody& t) { return t.decision.elastic; });
+  const bool anyElastic = std::any_of(s.tissues.begin(), s.tissues.end(),
+                                      [](const TissueBody& t) { return t.decision.elastic; });
   if (!anyElastic) {
     // Each tissue with why it is rigid: below the threshold, forced, or behind a rigid sclera.
     std::ostringstream line;
@@ -830,25 +852,30 @@ std::vector<std::string> tissueReportLines(const Scenario& s, const TissueMeasur
                     mm(t.estimatedDisplacement) + ")");
     const double wdt = t.thicknessModeFrequency * meanTimeStep;  // [1]
     if (wdt > 1.0)
-      lines.push_back(t.name + ": its displacement is an upper bound, up to " + formatNumber(1.0 + wdt * wdt, 2) +
-                      "x the physical one: at this run's mean step " + formatNumber(meanTimeStep * 1e3, 3) +
-                      " ms the layer's thickness mode (" + formatNumber(t.thicknessModeFrequency, 3) +
-                      " rad/s) is not resolved and the elastic stage, solved before the pressure solve, "
-                      "answers the fluid's load softened by 1 + (omega_1 dt)^2 (docs/elasticity.md, "
-                      "\"Anchored pad under water\"); the coverage does not depend on it");
+      lines.push_back(
+          t.name + ": its displacement is an upper bound, up to " +
+          formatNumber(1.0 + wdt * wdt, 2) + "x the physical one: at this run's mean step " +
+          formatNumber(meanTimeStep * 1e3, 3) + " ms the layer's thickness mode (" +
+          formatNumber(t.thicknessModeFrequency, 3) +
+          " rad/s) is not resolved and the elastic stage, solved before the pressure solve, "
+          "answers the fluid's load softened by 1 + (omega_1 dt)^2 (docs/elasticity.md, "
+          "\"Anchored pad under water\"); the coverage does not depend on it");
   }
   if (!s.retinaSamples.scleraLayer.empty()) {
     // Fluid that entered or passed the tissue (TissueMeasures): a leaking run says so.
-    std::string line = "fluid in the tissue: " + std::to_string(last.fluidInTissue) +
-                       " particles more than d behind a sclera particle near them, " +
-                       std::to_string(last.fluidThroughTissue) + " beyond the sampled layer (deepest fluid " +
-                       formatNumber(last.deepestFluid / d, 3) + " d outside the cavity surface)" + at;
-    if (last.fluidInTissue > 0) line = "warning: " + line + "; the tissue leaks, its numbers are suspect";
+    std::string line =
+        "fluid in the tissue: " + std::to_string(last.fluidInTissue) +
+        " particles more than d behind a sclera particle near them, " +
+        std::to_string(last.fluidThroughTissue) + " beyond the sampled layer (deepest fluid " +
+        formatNumber(last.deepestFluid / d, 3) + " d outside the cavity surface)" + at;
+    if (last.fluidInTissue > 0)
+      line = "warning: " + line + "; the tissue leaks, its numbers are suspect";
     lines.push_back(line);
   }
   lines.push_back("retina maximum displacement " + mm(last.retinaMaxDisplacement) + at);
   lines.push_back("cavity volume change " + formatNumber(last.cavityVolumeChange * 1e9, 3) +
-                  " uL = " + formatNumber(100.0 * last.cavityVolumeChange / s.cavityVolume, 3) + " %" + at);
+                  " uL = " + formatNumber(100.0 * last.cavityVolumeChange / s.cavityVolume, 3) +
+                  " %" + at);
   std::ostringstream regions;
   regions << "mean outward retina displacement by region:";
   for (std::size_t k = 0; k < kReportedRegions.size() && k < last.regionMeanOutward.size(); ++k)

@@ -87,29 +87,29 @@ inline constexpr double kCapRimSpacings = 1.0;
 inline constexpr double kOrbitGapSpacings = 2.0;
 
 struct TissueBody {
-  std::string name;                  // "sclera" or "orbital fat"
-  std::string material;              // material library name
-  double youngsModulus = 0.0;        // [Pa] the tissue's (library, or the protocol's override)
-  double poissonRatio = 0.0;         // [1]
-  double density = 0.0;              // [kg/m^3]
-  double thickness = 0.0;            // [m] used in the estimate
-  double loadPressure = 0.0;         // [Pa] used in the estimate
+  std::string name;                    // "sclera" or "orbital fat"
+  std::string material;                // material library name
+  double youngsModulus = 0.0;          // [Pa] the tissue's (library, or the protocol's override)
+  double poissonRatio = 0.0;           // [1]
+  double density = 0.0;                // [kg/m^3]
+  double thickness = 0.0;              // [m] used in the estimate
+  double loadPressure = 0.0;           // [Pa] used in the estimate
   double estimatedDisplacement = 0.0;  // [m]
   sim::TissueDecision decision;
   // Elastic only.
-  double layerThickness = 0.0;       // [m] mean sampled layer (>= kMinTissueLayerSpacings d)
+  double layerThickness = 0.0;  // [m] mean sampled layer (>= kMinTissueLayerSpacings d)
   // [rad/s] first thickness mode of the layer, fixed on one face: pi c_p / (2 t_layer) with
   // c_p the P-wave speed of the simulated modulus. The elastic stage runs before the pressure
   // solve, so a layer loaded by the fluid answers as if softened by 1 + (omega_1 dt)^2.
   double thicknessModeFrequency = 0.0;
-  double simulatedModulus = 0.0;     // [Pa] E (t / t_layer when thickened)
-  int materialIndex = -1;            // in world.materials
-  std::int32_t firstId = 0;          // particle ids firstId .. firstId + count - 1
+  double simulatedModulus = 0.0;  // [Pa] E (t / t_layer when thickened)
+  int materialIndex = -1;         // in world.materials
+  std::int32_t firstId = 0;       // particle ids firstId .. firstId + count - 1
   std::size_t count = 0;
   std::size_t anchored = 0;
-  std::size_t limbusClamped = 0;     // sclera: of `anchored`, those anchored by the limbus clamp
+  std::size_t limbusClamped = 0;  // sclera: of `anchored`, those anchored by the limbus clamp
   std::vector<sim::Vec3> restPositions;  // [m] by id - firstId
-  std::string describe() const;      // one line for `tamponade plan` and notes
+  std::string describe() const;          // one line for `tamponade plan` and notes
 };
 
 // The retina samples the coverage is measured at (RetinaMap order), #W.
@@ -134,9 +134,9 @@ void recordRetinaSamples(Scenario& scenario, const std::vector<sim::Vec3>& point
 
 // Decides each tissue of the protocol and adds the elastic ones (materials, particles, anchors;
 // removes the wall particles they replace). Call right after recordRetinaSamples (before the
-// wall tags are given contact angles, and before World::initialize). Throws ProtocolError at the value responsible: a forced elastic tissue the
-// scene cannot sample (imported mesh: no anatomy), a thickness the anatomy rejects, a tissue that
-// gets no particle at this spacing.
+// wall tags are given contact angles, and before World::initialize). Throws ProtocolError at the
+// value responsible: a forced elastic tissue the scene cannot sample (imported mesh: no anatomy), a
+// thickness the anatomy rejects, a tissue that gets no particle at this spacing.
 void addTissues(const Protocol& protocol, Scenario& scenario);
 
 struct TissueMeasures {

@@ -40,12 +40,13 @@ std::size_t addWallLayersBehindSurface(WallParticles& walls, const std::vector<V
               " normals, " + std::to_string(areas.size()) + " areas)");
   require(curvature.empty() || curvature.size() == points.size(),
           "surface curvature must be empty (flat) or one value per sample");
-  require(tags.empty() || tags.size() == points.size(), "surface tags must be empty or one per sample");
+  require(tags.empty() || tags.size() == points.size(),
+          "surface tags must be empty or one per sample");
   std::size_t added = 0;
   for (std::size_t s = 0; s < points.size(); ++s) {
     const Real length = normals[s].norm();
-    require(length > 0.5 && length < 1.5,
-            "surface sample " + std::to_string(s) + " has no unit normal; layered walls need normals");
+    require(length > 0.5 && length < 1.5, "surface sample " + std::to_string(s) +
+                                              " has no unit normal; layered walls need normals");
     const Vec3 n = normals[s] / length;
     for (int k = 0; k < layers.count; ++k) {
       const Real depth = (k + 0.5) * d;  // [m]
@@ -53,7 +54,8 @@ std::size_t addWallLayersBehindSurface(WallParticles& walls, const std::vector<V
       // is a ball of radius R (mean curvature 1/R), the offset sphere has (1 + depth/R)^2 the area.
       const Real grow = curvature.empty() ? 1.0 : 1.0 + curvature[s] * depth;
       const Real volume = areas[s] * d * std::max(grow * grow, Real(0.25));
-      addLayeredWallParticle(walls, points[s] + depth * n, n, tags.empty() ? 0 : tags[s], volume, k);
+      addLayeredWallParticle(walls, points[s] + depth * n, n, tags.empty() ? 0 : tags[s], volume,
+                             k);
       ++added;
     }
   }

@@ -18,10 +18,10 @@ constexpr bool isFluid(MaterialKind kind) { return kind == MaterialKind::kFluid;
 struct Material {
   std::string name;
   MaterialKind kind = MaterialKind::kFluid;
-  Real restDensity = 1000.0;     // [kg/m^3]
-  Real dynamicViscosity = 0.0;   // [Pa s]
-  Real youngsModulus = 0.0;      // [Pa], elastic only
-  Real poissonRatio = 0.0;       // [1], elastic only
+  Real restDensity = 1000.0;    // [kg/m^3]
+  Real dynamicViscosity = 0.0;  // [Pa s]
+  Real youngsModulus = 0.0;     // [Pa], elastic only
+  Real poissonRatio = 0.0;      // [1], elastic only
 
   Real kinematicViscosity() const { return dynamicViscosity / restDensity; }  // [m^2/s]
 };

@@ -52,13 +52,13 @@ class DynamicParticles {
   }
 
   FieldRegistry fields;
-  std::vector<Vec3>& x;             // [m]
-  std::vector<Vec3>& v;             // [m/s]
-  std::vector<Vec3>& a;             // [m/s^2] non-pressure acceleration of the current step
-  std::vector<Real>& mass;          // [kg]
+  std::vector<Vec3>& x;     // [m]
+  std::vector<Vec3>& v;     // [m/s]
+  std::vector<Vec3>& a;     // [m/s^2] non-pressure acceleration of the current step
+  std::vector<Real>& mass;  // [kg]
   std::vector<std::int32_t>& material;
-  std::vector<std::int32_t>& id;    // creation index, survives sorting
-  std::vector<Real>& density;       // [kg/m^3] as the active pressure solver defines it
+  std::vector<std::int32_t>& id;  // creation index, survives sorting
+  std::vector<Real>& density;     // [kg/m^3] as the active pressure solver defines it
 };
 
 // Static wall particles: never moved by forces (DESIGN.md principle 2: the wall is fixed in the
@@ -88,9 +88,9 @@ class WallParticles {
   }
 
   FieldRegistry fields;
-  std::vector<Vec3>& x;        // [m]
-  std::vector<Vec3>& normal;   // [1]
-  std::vector<Real>& volume;   // [m^3]
+  std::vector<Vec3>& x;       // [m]
+  std::vector<Vec3>& normal;  // [1]
+  std::vector<Real>& volume;  // [m^3]
   std::vector<std::int32_t>& tag;
 };
 

@@ -48,7 +48,8 @@ class ScopedStageTimer {
   ScopedStageTimer(StageTimers& timers, int slotIndex)
       : timers_(timers), slot_(slotIndex), start_(std::chrono::steady_clock::now()) {}
   ~ScopedStageTimer() {
-    timers_.add(slot_, std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
+    timers_.add(slot_,
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count());
   }
   ScopedStageTimer(const ScopedStageTimer&) = delete;
   ScopedStageTimer& operator=(const ScopedStageTimer&) = delete;

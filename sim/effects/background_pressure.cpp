@@ -9,7 +9,8 @@ namespace sim {
 
 BackgroundPressure::BackgroundPressure(Real pressure, Real referenceDensity)
     : pressure_(pressure), referenceDensity_(referenceDensity) {
-  require(pressure > 0 && std::isfinite(pressure), "background pressure must be a positive number of Pa");
+  require(pressure > 0 && std::isfinite(pressure),
+          "background pressure must be a positive number of Pa");
   require(referenceDensity > 0, "background pressure needs a positive reference density");
 }
 
@@ -47,7 +48,8 @@ void BackgroundPressure::apply(World& world, const StepContext& context) {
       bracket += (vi2 + vj * vj) * gradF[k];
     }
     Vec3 wall = Vec3::Zero();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) wall += walls.volume[nw.indices[k]] * gradB[k];
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+      wall += walls.volume[nw.indices[k]] * gradB[k];
     bracket += (2.0 * vi2 / world.restVolumeOf(i)) * wall;
     shift[i] = (-dt * pressure_ / p.mass[i]) * bracket;
     // Contact-line particles (a wall and the other liquid in reach) are not shifted: there the

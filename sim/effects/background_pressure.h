@@ -14,7 +14,8 @@
 //
 // What: the background pressure of the transport-velocity formulation (Adami, Hu & Adams 2013,
 // J. Comput. Phys. 241:292, eq. 14): particles are advected with v + dv instead of v,
-//   dv_i = -(dt p_bg / m_i) [ sum_j (V_i^2 + V_j^2) gradW_ij + 2 V_i^2 sum_b (V_b / V0_i) gradW_ib ],
+//   dv_i = -(dt p_bg / m_i) [ sum_j (V_i^2 + V_j^2) gradW_ij + 2 V_i^2 sum_b (V_b / V0_i) gradW_ib
+//   ],
 // V = m / rho (= 1 / delta under INDSPH), walls mirrored at p_bg as the Akinci pressure mirror
 // does. The bracket is the kernel's consistency error, zero on a complete regular
 // neighbourhood, so dv only moves particles towards a uniform arrangement, against the clumping;
@@ -73,8 +74,8 @@ class BackgroundPressure final : public Effect {
   Real pressure() const { return pressure_; }
 
  private:
-  Real pressure_;          // [Pa]
-  Real referenceDensity_;  // [kg/m^3]
+  Real pressure_;                       // [Pa]
+  Real referenceDensity_;               // [kg/m^3]
   std::vector<Vec3>* shift_ = nullptr;  // [m/s] the transport_shift field
 };
 

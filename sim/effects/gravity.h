@@ -23,7 +23,8 @@ class Gravity final : public Effect {
     // Per material: g (1 - rho_ref / rho_m) (World::gravityReferenceDensity).
     factor_.resize(static_cast<std::size_t>(world.materials.size()));
     for (int m = 0; m < world.materials.size(); ++m)
-      factor_[static_cast<std::size_t>(m)] = 1.0 - world.gravityReferenceDensity / world.materials[m].restDensity;
+      factor_[static_cast<std::size_t>(m)] =
+          1.0 - world.gravityReferenceDensity / world.materials[m].restDensity;
     const auto& material = world.particles.material;
 #pragma omp parallel for schedule(static)
     for (std::size_t i = 0; i < n; ++i) a[i] += factor_[static_cast<std::size_t>(material[i])] * g;

@@ -26,7 +26,8 @@ std::string_view surfaceStressFormName(SurfaceStressForm form) {
 }
 
 SurfaceStressForm surfaceStressFormFromName(std::string_view name) {
-  for (const SurfaceStressForm form : {SurfaceStressForm::kCorrected, SurfaceStressForm::kSymmetric})
+  for (const SurfaceStressForm form :
+       {SurfaceStressForm::kCorrected, SurfaceStressForm::kSymmetric})
     if (name == surfaceStressFormName(form)) return form;
   return SurfaceStressForm::kAuto;
 }
@@ -112,12 +113,12 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
       stressed_[i] = 1;
     }
     if (pairIndex == 0) *colourGradient_ = gradient_;
-    // Phase 2: divergence of the stress; walls mirror the stress.
+      // Phase 2: divergence of the stress; walls mirror the stress.
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       if (colourOf(p.material[i], pair) < 0) continue;
       const Real vi = p.mass[i] / p.density[i];
-      Vec3 f = Vec3::Zero();  // [N]
+      Vec3 f = Vec3::Zero();               // [N]
       Mat3 correction = Mat3::Identity();  // L_i of the divergence (corrected form)
       if (corrected) {
         // Difference form sum_j V_j (Pi_j - Pi_i) L_i gradW_ij: zero for a uniform stress on any
@@ -129,9 +130,9 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
           acted = stressed_[nf.indices[k]] != 0;
         if (!acted) continue;
         const Mat3 fluid = fluidGradientMoment(world, i);
-        correction = gradientCorrection(
-            nw.count(i) > 0 ? Mat3(fluid + wallGradientMoment(world, i)) : fluid,
-            kMinCorrectionDeterminant);
+        correction =
+            gradientCorrection(nw.count(i) > 0 ? Mat3(fluid + wallGradientMoment(world, i)) : fluid,
+                               kMinCorrectionDeterminant);
         const Mat3 zero = Mat3::Zero();
         const Mat3& own = stressed_[i] ? stress_[i] : zero;
         for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
@@ -144,8 +145,9 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
         for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
           const Index j = nf.indices[k];
           if (!stressed_[i] && !stressed_[j]) continue;  // both zero (includes non-members)
-          const Mat3 sum = stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
-                                        : stress_[j];
+          const Mat3 sum = stressed_[i]
+                               ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
+                               : stress_[j];
           f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
         }
       }

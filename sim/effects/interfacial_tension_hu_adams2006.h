@@ -91,9 +91,9 @@ class InterfacialTensionHuAdams2006 final : public Effect {
  private:
   SurfaceStressForm form_;
   std::vector<Vec3>* colourGradient_ = nullptr;  // [1/m] output field of the first pair
-  std::vector<Mat3> stress_;                      // [Pa] scratch: Pi of each particle
-  std::vector<Vec3> gradient_;                    // [1/m] scratch gradC for the current pair
-  std::vector<std::uint8_t> stressed_;            // scratch: 1 where Pi is set (else Pi = 0)
+  std::vector<Mat3> stress_;                     // [Pa] scratch: Pi of each particle
+  std::vector<Vec3> gradient_;                   // [1/m] scratch gradC for the current pair
+  std::vector<std::uint8_t> stressed_;           // scratch: 1 where Pi is set (else Pi = 0)
 };
 
 }  // namespace sim

@@ -40,7 +40,7 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
   const auto& gradB = world.wallGradients();
   const Kernel& kernel = world.kernel;
   const Real h2 = 0.01 * world.supportRadius() * world.supportRadius();
-  constexpr Real kFactor = 2.0 * (3 + 2);  // 2(d+2), d = 3
+  constexpr Real kFactor = 2.0 * (3 + 2);                                  // 2(d+2), d = 3
   const Real smoothingScale = kSmoothing ? smoothing_ / context.dt : 0.0;  // XSPH eps/dt [1/s]
   const Index n = static_cast<Index>(p.size());
   // XSPH reads the kernel values the neighbour pass cached (no square root per pair).

@@ -6,7 +6,8 @@
 // Walls act as no-slip particles at rest with volume V_b (Akinci 2012). Elastic particles act as
 // walls moving with the solid (the pair term with the fluid's viscosity) and take the equal and
 // opposite force; elastic-elastic pairs are left to the elastic stage. Explicit: stable only for
-// dt <= kStableStepFactor d^2 / nu (viscous diffusion limit); viscous oils need the implicit solver.
+// dt <= kStableStepFactor d^2 / nu (viscous diffusion limit); viscous oils need the implicit
+// solver.
 #pragma once
 
 #include "sim/effects/effect.h"
@@ -41,7 +42,7 @@ class ViscosityMonaghan2005 final : public Effect {
   void applyImpl(World& world, const StepContext& context);
 
   bool wallFriction_;
-  Real smoothing_ = 0;  // [1] XSPH eps computed here (0: none)
+  Real smoothing_ = 0;                     // [1] XSPH eps computed here (0: none)
   std::vector<Real> viscosityOfMaterial_;  // [Pa s]
 };
 

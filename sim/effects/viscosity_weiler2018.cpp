@@ -10,8 +10,9 @@
 namespace sim {
 namespace {
 
-constexpr Real kDimensionFactor = 2.0 * (3 + 2);  // [1] 2(d+2), d = 3 (Weiler 2018, after Monaghan 2005)
-constexpr Real kRegularisation = 0.01;            // [1] 0.01 h^2 keeps 1/|x_ij|^2 finite
+constexpr Real kDimensionFactor =
+    2.0 * (3 + 2);                      // [1] 2(d+2), d = 3 (Weiler 2018, after Monaghan 2005)
+constexpr Real kRegularisation = 0.01;  // [1] 0.01 h^2 keeps 1/|x_ij|^2 finite
 
 // Harmonic mean of two dynamic viscosities [Pa s] (header comment: stress continuity). Written
 // symmetric in its arguments so that the pair coefficient is bitwise equal seen from i and j.
@@ -80,8 +81,10 @@ void ViscosityWeiler2018::assemble(const World& world, Real dt) {
     Mat3 block = p.mass[i] * Mat3::Identity();
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
       const Index j = nf.indices[k];
-      const Real mu = pairViscosity(mui, viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])]);
-      const Real c = kDimensionFactor * (p.mass[i] * p.mass[j]) * mu / (p.density[i] * p.density[j]);
+      const Real mu =
+          pairViscosity(mui, viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])]);
+      const Real c =
+          kDimensionFactor * (p.mass[i] * p.mass[j]) * mu / (p.density[i] * p.density[j]);
       const Real s = c == 0 ? 0 : pairScale(c, p.x[i] - p.x[j], gradF[k], eps);
       fluidPair_[k] = s;
       block -= (dt * s) * gradF[k] * gradF[k].transpose();
@@ -151,9 +154,10 @@ void ViscosityWeiler2018::apply(World& world, const StepContext& context) {
   const std::size_t n = p.size();
   if (n == 0) return;
   if (warmStart_ == nullptr || velocityStar_.size() != n)  // message built only on failure
-    throw SimError("implicit viscosity: attach() must run before apply() and the particle count "
-                   "must not change afterwards (" + std::to_string(velocityStar_.size()) +
-                   " attached, " + std::to_string(n) + " now)");
+    throw SimError(
+        "implicit viscosity: attach() must run before apply() and the particle count "
+        "must not change afterwards (" +
+        std::to_string(velocityStar_.size()) + " attached, " + std::to_string(n) + " now)");
   const Real dt = context.dt;
   // The solve starts from the step-start velocity v^n = v* - dt a (a: this step's explicit
   // accelerations, gravity among them), and its viscous change is added to v*. Solving from v*
@@ -250,8 +254,8 @@ ViscosityTreatment chooseViscosityTreatment(const World& world, Real solverLimit
   t.advectionStep = advectionTimeStep(world, solverLimit);
   t.implicit = t.explicitLimit < t.advectionStep;
   why.precision(3);
-  why << "max nu = " << nuMax << " m^2/s: explicit viscous limit " << ViscosityMonaghan2005::kStableStepFactor << " d^2/nu = " << t.explicitLimit
-      << " s ";
+  why << "max nu = " << nuMax << " m^2/s: explicit viscous limit "
+      << ViscosityMonaghan2005::kStableStepFactor << " d^2/nu = " << t.explicitLimit << " s ";
   if (t.implicit)
     why << "< CFL step " << t.advectionStep << " s, so explicit viscosity would take "
         << t.advectionStep / t.explicitLimit

@@ -3,8 +3,9 @@
 // silicone oils (1000-5000 cSt) whose explicit viscous step limit (0.08 d^2/nu) is far below the
 // CFL step.
 //
-// The viscous acceleration is the Laplacian of the velocity field (Weiler et al.'s velocity Laplacian, the vector form
-// of the second-derivative approximation with the factor 2(d+2), d = 3 dimensions):
+// The viscous acceleration is the Laplacian of the velocity field (Weiler et al.'s velocity
+// Laplacian, the vector form of the second-derivative approximation with the factor 2(d+2), d = 3
+// dimensions):
 //   a_i = 2(d+2) sum_j m_j mu_ij / (rho_i rho_j) (v_ij . x_ij) / (|x_ij|^2 + 0.01 h^2) gradW_ij
 //       + 2(d+2) sum_b V_b mu_i / rho_i (v_ib . x_ib) / (|x_ib|^2 + 0.01 h^2) gradW_ib   (walls)
 // and the step is backward Euler, v = v* + dt a(v). Multiplied by m_i every pair term has the
@@ -78,8 +79,8 @@ class ViscosityWeiler2018 final : public Effect {
   void computeForces(const World& world, const std::vector<Vec3>& v, std::vector<Vec3>& out) const;
 
   ImplicitViscosityParameters params_;
-  std::vector<Real> viscosityOfMaterial_;  // [Pa s]
-  std::vector<Vec3>* warmStart_ = nullptr; // [m/s^2] last viscous acceleration (registry field)
+  std::vector<Real> viscosityOfMaterial_;   // [Pa s]
+  std::vector<Vec3>* warmStart_ = nullptr;  // [m/s^2] last viscous acceleration (registry field)
   const std::vector<Vec3>* wallVelocity_ = nullptr;  // [m/s] optional
   // Per pair, aligned with the neighbour lists: s_ij such that the pair force on i is
   // s_ij (gradW_ij . v_ij) gradW_ij (s_ij <= 0, [kg s m^6]).
@@ -100,8 +101,8 @@ class ViscosityWeiler2018 final : public Effect {
 struct ViscosityTreatment {
   bool viscous = false;
   bool implicit = false;
-  Real explicitLimit = 0;    // [s] ViscosityMonaghan2005::kStableStepFactor d^2 / nu_max
-  Real advectionStep = 0;    // [s] the step without a viscous limit (see advectionTimeStep)
+  Real explicitLimit = 0;  // [s] ViscosityMonaghan2005::kStableStepFactor d^2 / nu_max
+  Real advectionStep = 0;  // [s] the step without a viscous limit (see advectionTimeStep)
   std::string reason;
 };
 // The step the pipeline would take without any viscous limit [s]: maxTimeStep, the body-force

@@ -60,8 +60,9 @@ void WallAdhesionYoung::attach(World& world) {
   for (const auto& angle : angles) {
     const std::string& fluid = materials[angle.fluidMaterial].name;
     require(angle.fluidMaterial == materialA_ || angle.fluidMaterial == materialB_,
-            "contact angle given through '" + fluid + "', which is not in the first tension pair ('" +
-                materials[materialA_].name + "', '" + materials[materialB_].name +
+            "contact angle given through '" + fluid +
+                "', which is not in the first tension pair ('" + materials[materialA_].name +
+                "', '" + materials[materialB_].name +
                 "'): wall wetting supports one pair of liquids; list that pair first");
     // theta through B is 180 deg - theta through A.
     const Real thetaA = angle.fluidMaterial == materialA_ ? angle.angle : 180.0 - angle.angle;
@@ -228,8 +229,8 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
       // them under compression) that walls do not exert (docs/interface.md, validation 3,
       // session 16).
       if (!world.materials.isFluid(p.material[j])) continue;
-      const Mat3 sum = stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i])
-                                    : stress_[j];
+      const Mat3 sum =
+          stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i]) : stress_[j];
       f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
     }
     p.a[i] += f / p.mass[i];

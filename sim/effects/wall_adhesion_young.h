@@ -91,14 +91,14 @@ class WallAdhesionYoung final : public Effect {
  private:
   WallLayerPhase layer_;
   int materialA_ = -1, materialB_ = -1;  // the pair; the stored cosines are measured through A
-  bool layerOnA_ = false;         // kLarger: A has more rest volume than B (decided in attach())
-  std::vector<Real> cosThetaA_;   // [1] per wall particle; NaN where its tag has no angle
-  std::vector<Real> wallArea_;    // [m^2] per wall particle
+  bool layerOnA_ = false;        // kLarger: A has more rest volume than B (decided in attach())
+  std::vector<Real> cosThetaA_;  // [1] per wall particle; NaN where its tag has no angle
+  std::vector<Real> wallArea_;   // [m^2] per wall particle
   std::vector<std::uint8_t> surface_;  // 1 for surface-layer wall particles (all of a 1-layer wall)
-  std::vector<Real> wallFluidSum_;  // [1] S_b scratch
-  std::vector<Mat3> stress_;      // [Pa] scratch, valid where stressed_ is 1
+  std::vector<Real> wallFluidSum_;     // [1] S_b scratch
+  std::vector<Mat3> stress_;           // [Pa] scratch, valid where stressed_ is 1
   std::vector<std::uint8_t> stressed_;
-  Real sigma_ = 0.0;              // [N/m]
+  Real sigma_ = 0.0;  // [N/m]
   // Wetted tissue (sim/boundary/wetted_surface.h): its surface particles move, so what the walls
   // compute once (area, normal) is computed per step, per dynamic particle (NaN cosine where the
   // particle is not a wetted surface with an angle).

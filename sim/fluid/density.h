@@ -35,9 +35,11 @@ void kernelSums(const World& world, std::vector<Real>& out, Weight weight, Combi
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       Real fluid = weight(i) * w0;
-      for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) fluid += weight(nf.indices[k]) * wfd[k];
+      for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
+        fluid += weight(nf.indices[k]) * wfd[k];
       Real wall = 0;
-      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) wall += walls.volume[nw.indices[k]] * wwd[k];
+      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+        wall += walls.volume[nw.indices[k]] * wwd[k];
       out[i] = combine(i, fluid, wall);
     }
     return;
@@ -45,7 +47,8 @@ void kernelSums(const World& world, std::vector<Real>& out, Weight weight, Combi
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Real fluid = weight(i) * w0;
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) fluid += weight(*j) * kernel.W(p.x[i] - p.x[*j]);
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
+      fluid += weight(*j) * kernel.W(p.x[i] - p.x[*j]);
     Real wall = 0;
     for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
       wall += walls.volume[*b] * kernel.W(p.x[i] - walls.x[*b]);

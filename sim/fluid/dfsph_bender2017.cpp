@@ -68,8 +68,8 @@ Real DfsphBender2017::predictDensity(World& world, Real dt) {
     predicted_[i] = std::max(p.density[i] + dt * densityRate(world, i), rho0);
   }
   return reducer_.sum(n, [&](std::size_t i) {
-           return predicted_[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0;
-         }) / n;
+    return predicted_[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0;
+  }) / n;
 }
 
 Real DfsphBender2017::maxCompression(const World& world) const {
@@ -86,8 +86,8 @@ Real DfsphBender2017::computeDensityRate(World& world) {
                         ? 0.0
                         : std::max(densityRate(world, i), Real(0));
   return reducer_.sum(n, [&](std::size_t i) {
-           return predicted_[i] / world.restDensityOf(static_cast<Index>(i));
-         }) / n;
+    return predicted_[i] / world.restDensityOf(static_cast<Index>(i));
+  }) / n;
 }
 
 void DfsphBender2017::beginStep(World& world, const StepContext& context) {
@@ -129,7 +129,8 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
       sumSq += gradW.squaredNorm() * p.mass[i] / p.mass[j];
     }
     Vec3 gw = Vec3::Zero();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k];
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+      gw += walls.volume[nw.indices[k]] * gradB[k];
     wallGradient_[i] = world.restDensityOf(i) * gw;
     g += wallGradient_[i];
     const Real denominator = g.squaredNorm() + sumSq;
@@ -201,7 +202,8 @@ void DfsphBender2017::correctVelocities(World& world, const StepContext& context
          iteration < params_.maxIterations) {
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
-      kappa_[i] = params_.relaxation * (predicted_[i] - world.restDensityOf(i)) * invDt2 * (*factor_)[i];
+      kappa_[i] =
+          params_.relaxation * (predicted_[i] - world.restDensityOf(i)) * invDt2 * (*factor_)[i];
       warm[i] += kappa_[i];
     }
     applyPressureVelocity(world, kappa_, dt);

@@ -24,7 +24,7 @@ struct DfsphParameters {
   int maxIterations = 100;
   int maxDivergenceIterations = 100;
   bool divergenceSolve = true;
-  Real warmStartFactor = 0.5;       // [1] fraction of last step's pressure applied first
+  Real warmStartFactor = 0.5;           // [1] fraction of last step's pressure applied first
   bool warmStartOnlyCompressed = true;  // warm-start only particles predicted compressed
   // [1] Jacobi relaxation of each pressure update. The local update with the full factor
   // (omega = 1, Bender's choice) barely damps the checkerboard mode of the pressure field: the
@@ -53,19 +53,19 @@ class DfsphBender2017 final : public PressureSolver {
   Real maxCompression(const World& world) const;  // of the current prediction
 
   DfsphParameters params_;
-  std::vector<Real>* factor_ = nullptr;       // alpha_i [kg s^2... see header] (not checkpointed)
-  std::vector<Real>* pressure_ = nullptr;     // [Pa] last step's pressure, output
-  std::vector<Real>* kappaDensity_ = nullptr; // [m^2/s^2] accumulated stiffness p/rho, warm start
+  std::vector<Real>* factor_ = nullptr;        // alpha_i [kg s^2... see header] (not checkpointed)
+  std::vector<Real>* pressure_ = nullptr;      // [Pa] last step's pressure, output
+  std::vector<Real>* kappaDensity_ = nullptr;  // [m^2/s^2] accumulated stiffness p/rho, warm start
   std::vector<Real>* kappaDivergence_ = nullptr;  // [m^2/s^2] accumulated for warm start
-  std::vector<Real> predicted_;               // rho* or Drho/Dt per particle (scratch)
-  std::vector<Real> kappa_;                   // this iteration's k_i (scratch)
-  std::vector<Real> densityWarmStart_;        // [m^2/s^2] last accepted step's kappa (scratch)
-  std::vector<Real> kappaOverRho_;            // [m^5/(kg s^2)] k_i / rho_i (scratch)
+  std::vector<Real> predicted_;                   // rho* or Drho/Dt per particle (scratch)
+  std::vector<Real> kappa_;                       // this iteration's k_i (scratch)
+  std::vector<Real> densityWarmStart_;            // [m^2/s^2] last accepted step's kappa (scratch)
+  std::vector<Real> kappaOverRho_;                // [m^5/(kg s^2)] k_i / rho_i (scratch)
   // [kg/m^4] rho0_i sum_b V_b gradW_ib per particle, fixed for a step (walls are static and the
   // positions do not move during the solves): every wall term of both solves is this vector times
   // a per-particle scalar, so the iterations never loop over wall pairs (scratch).
   std::vector<Vec3> wallGradient_;
-  Real divergenceDt_ = 0;                     // [s] dt the divergence solve used this step
+  Real divergenceDt_ = 0;  // [s] dt the divergence solve used this step
   DeterministicReducer reducer_;
 };
 

@@ -97,7 +97,8 @@ void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context
     for (Index i = 0; i < n; ++i) {
       Real value = 0;
       for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-        value += p.mass[*j] * (acceleration_[i] - acceleration_[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
+        value +=
+            p.mass[*j] * (acceleration_[i] - acceleration_[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
       Real wall = 0;
       for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
         wall += walls.volume[*b] * acceleration_[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
@@ -105,9 +106,9 @@ void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context
     }
     // Mean compression of the predicted density rho_adv + A p (only compression counts).
     error = reducer_.sum(n, [&](std::size_t i) {
-              const Index k = static_cast<Index>(i);
-              return std::max((advected_[k] + product_[k]) / world.restDensityOf(k) - 1.0, Real(0));
-            }) / n;
+      const Index k = static_cast<Index>(i);
+      return std::max((advected_[k] + product_[k]) / world.restDensityOf(k) - 1.0, Real(0));
+    }) / n;
     if ((iteration >= params_.minIterations && error < params_.tolerance) ||
         iteration >= params_.maxIterations)
       break;
@@ -128,10 +129,11 @@ void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context
   stats_.densityIterationLimit = params_.maxIterations;
   stats_.divergenceIterations = 0;
   stats_.averageCompression = error;
-  stats_.maxCompression = DeterministicReducer::max(static_cast<std::size_t>(n), [&](std::size_t i) {
-    const Index k = static_cast<Index>(i);
-    return (advected_[k] + product_[k]) / world.restDensityOf(k) - 1.0;
-  });
+  stats_.maxCompression =
+      DeterministicReducer::max(static_cast<std::size_t>(n), [&](std::size_t i) {
+        const Index k = static_cast<Index>(i);
+        return (advected_[k] + product_[k]) / world.restDensityOf(k) - 1.0;
+      });
 }
 
 }  // namespace sim

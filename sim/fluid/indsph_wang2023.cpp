@@ -140,7 +140,8 @@ void IndsphWang2023::beginStep(World& world, const StepContext& context) {
       neighbours += gradF[k].squaredNorm() / p.mass[nf.indices[k]];
     }
     Vec3 gw = Vec3::Zero();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) gw += walls.volume[nw.indices[k]] * gradB[k];
+    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
+      gw += walls.volume[nw.indices[k]] * gradB[k];
     wallGradient_[i] = gw / world.restVolumeOf(i);
     g += wallGradient_[i];
     diagonal_[i] = g.squaredNorm() / p.mass[i] + neighbours;
@@ -182,9 +183,12 @@ void IndsphWang2023::solveDivergence(World& world, Real dt) {
       const Real rate = numberDensityRate(world, i);
       predicted_[i] = !full ? 0.0 : (twoSided(world, i) ? rate : std::max(rate, Real(0)));
     }
-    return reducer_.sum(n, [&](std::size_t i) {
-             return std::abs(predicted_[i]) * world.restVolumeOf(static_cast<Index>(i));
-           }) * dt / n;
+    return reducer_.sum(n,
+                        [&](std::size_t i) {
+                          return std::abs(predicted_[i]) *
+                                 world.restVolumeOf(static_cast<Index>(i));
+                        }) *
+           dt / n;
   };
   Real error = computeRates();
   int iteration = 0;
@@ -215,11 +219,11 @@ Real IndsphWang2023::predictNumberDensity(World& world, Real dt) {
   }
   if (params_.correctBulkExpansion)
     return reducer_.sum(n, [&](std::size_t i) {
-             return std::abs(predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0);
-           }) / n;
+      return std::abs(predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0);
+    }) / n;
   return reducer_.sum(n, [&](std::size_t i) {
-           return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
-         }) / n;
+    return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
+  }) / n;
 }
 
 void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt,
@@ -259,7 +263,8 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
       Vec3 g = Vec3::Zero();
       for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
         const Index b = nw.indices[k];
-        if ((*wallKappa)[b] != 0.0) g += ((*wallKappa)[b] / (wallDensity_[b] * walls.volume[b])) * gradB[k];
+        if ((*wallKappa)[b] != 0.0)
+          g += ((*wallKappa)[b] / (wallDensity_[b] * walls.volume[b])) * gradB[k];
       }
       force += v0 * g;
     }
@@ -326,11 +331,10 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
       for (Index a = 0; a < active; ++a) {
         const Index b = wallPairs_.walls[a];
         // Eq. 21: only the dynamic neighbours move, so the diagonal is d_j^{p_b} alone.
-        wallIncrement_[b] = wallDiagonal_[b] > 0
-                                ? params_.relaxation * wallDensity_[b] *
-                                      (wallPredicted_[b] - 1.0 / walls.volume[b]) * invDt2 /
-                                      wallDiagonal_[b]
-                                : 0.0;
+        wallIncrement_[b] = wallDiagonal_[b] > 0 ? params_.relaxation * wallDensity_[b] *
+                                                       (wallPredicted_[b] - 1.0 / walls.volume[b]) *
+                                                       invDt2 / wallDiagonal_[b]
+                                                 : 0.0;
         (*wallKappa_)[b] += wallIncrement_[b];
       }
     }

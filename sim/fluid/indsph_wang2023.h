@@ -37,7 +37,7 @@
 namespace sim {
 
 struct IndsphParameters {
-  Real tolerance = 1e-4;        // [1] eta: stop when mean (delta*/delta0 - 1) < eta (paper: 1e-4)
+  Real tolerance = 1e-4;  // [1] eta: stop when mean (delta*/delta0 - 1) < eta (paper: 1e-4)
   int minIterations = 2;
   int maxIterations = 100;
   // [1] omega of each Jacobi update. With mixed masses a light particle is pushed by all its
@@ -45,13 +45,13 @@ struct IndsphParameters {
   // (omega = 1) overshoot and at 1:75 threw particles through the floor after 0.3 s of the
   // two-phase dam break (cfl 0.15). 0.5, IISPH's relaxation, ran 1 s at 1:2...1:75 (2026-11-22).
   Real relaxation = 0.5;
-  Real warmStartFactor = 0.5;   // [1] fraction of last accepted step's kappa applied first
+  Real warmStartFactor = 0.5;  // [1] fraction of last accepted step's kappa applied first
   // Divergence-free pass (not in the paper; DFSPH's second solve in number-density form). On the
   // 4 x 8 cm tank at rest (omega 0.5) it lowers the final kinetic energy 3x (1.6e-6 vs 4.8e-6 J)
   // and the hydrostatic error (1.0 % vs 1.9 %); on the dam break it converges in one iteration
   // and changes nothing measurable (docs/solvers.md).
   bool divergenceSolve = true;
-  Real divergenceTolerance = 1e-3;  // [1] stop when mean dt (D delta/Dt)/delta0 falls below
+  Real divergenceTolerance = 1e-3;     // [1] stop when mean dt (D delta/Dt)/delta0 falls below
   int minNeighborsForDivergence = 20;  // particles with fewer (free surface) are left alone
   // [1] Layered walls: a wall particle is an unknown of the solve only when its dynamic
   // neighbours make up at least this fraction of its number density (small-diagonal guard, as in
@@ -78,7 +78,7 @@ struct StaticWallPairs {
   std::vector<Index> walls;    // wall indices with at least one dynamic neighbour (ascending)
   std::vector<Index> offsets;  // CSR into dynamic/pair, one row per wall particle (size walls+1)
   std::vector<Index> dynamic;  // dynamic neighbour j
-  std::vector<Index> pair;     // index k of the pair (j, b) in World::wallNeighbors()/wallGradients()
+  std::vector<Index> pair;  // index k of the pair (j, b) in World::wallNeighbors()/wallGradients()
 };
 
 class IndsphWang2023 final : public PressureSolver {
@@ -115,9 +115,9 @@ class IndsphWang2023 final : public PressureSolver {
   // vector times a per-particle scalar, so the iterations loop over wall pairs only for the wall
   // particles' own stiffnesses (layered walls).
   std::vector<Vec3> wallGradient_;
-  std::vector<Real> predicted_;                 // [1/m^3] delta* (scratch)
-  std::vector<Real> increment_;                 // [Pa m^3] this iteration's kappa (scratch)
-  std::vector<Real> warmStart_;                 // [Pa m^3] last accepted step's kappa (scratch)
+  std::vector<Real> predicted_;  // [1/m^3] delta* (scratch)
+  std::vector<Real> increment_;  // [Pa m^3] this iteration's kappa (scratch)
+  std::vector<Real> warmStart_;  // [Pa m^3] last accepted step's kappa (scratch)
   DeterministicReducer reducer_;
 
   // Layered walls only (allocated by attach() when the scene has them; DESIGN principle 1).
@@ -125,12 +125,12 @@ class IndsphWang2023 final : public PressureSolver {
   std::vector<Real>* wallKappa_ = nullptr;     // [Pa m^3] kappa_b, warm start (wall field)
   std::vector<Real>* wallPressure_ = nullptr;  // [Pa] p_b = kappa_b delta_b (wall field, output)
   StaticWallPairs wallPairs_;
-  std::vector<Real> wallStaticDensity_;        // [1/m^3] W_0 + sum_c (V_c/V_b) W_bc, fixed
-  std::vector<Real> wallDensity_;              // [1/m^3] delta_b (per wall)
-  std::vector<Real> wallDiagonal_;             // [m^-8 kg^-1] sum_j (V0_j/V_b)^2 |gradW|^2/m_j
-  std::vector<Real> wallPredicted_;            // [1/m^3] delta*_b (scratch)
-  std::vector<Real> wallIncrement_;            // [Pa m^3] (scratch, per wall)
-  std::vector<Real> wallWarmStart_;            // [Pa m^3] (scratch)
+  std::vector<Real> wallStaticDensity_;  // [1/m^3] W_0 + sum_c (V_c/V_b) W_bc, fixed
+  std::vector<Real> wallDensity_;        // [1/m^3] delta_b (per wall)
+  std::vector<Real> wallDiagonal_;       // [m^-8 kg^-1] sum_j (V0_j/V_b)^2 |gradW|^2/m_j
+  std::vector<Real> wallPredicted_;      // [1/m^3] delta*_b (scratch)
+  std::vector<Real> wallIncrement_;      // [Pa m^3] (scratch, per wall)
+  std::vector<Real> wallWarmStart_;      // [Pa m^3] (scratch)
 };
 
 // Number density with Akinci wall terms (eq. 6), shared with the explicit number-density solver.

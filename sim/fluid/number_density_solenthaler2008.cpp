@@ -81,9 +81,9 @@ void NumberDensitySolenthaler2008::correctVelocities(World& world, const StepCon
   stats_.averageCompression = reducer_.sum(n, [&](std::size_t i) {
     return std::max(delta[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0, Real(0));
   }) / n;
-  stats_.maxCompression = DeterministicReducer::max(static_cast<std::size_t>(n), [&](std::size_t i) {
-    return delta[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
-  });
+  stats_.maxCompression = DeterministicReducer::max(
+      static_cast<std::size_t>(n),
+      [&](std::size_t i) { return delta[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0; });
 }
 
 }  // namespace sim

@@ -2,8 +2,10 @@
 // SCA): the adapted density rho~_i = m_i delta_i with delta_i = sum_j W_ij (Wang et al. 2023
 // eqs. 6-7), the Tait equation of state of WCSPH (Becker & Teschner 2007) on rho~, and the
 // symmetric number-density pressure force
-//   F_i = -sum_j (p_i/delta_i^2 + p_j/delta_j^2) gradW_ij - p_i/delta_i^2 sum_b (V_b/V0_i) gradW_ib,
-// plus the Monaghan artificial viscosity of the WCSPH solver. The baseline Wang et al. compare with.
+//   F_i = -sum_j (p_i/delta_i^2 + p_j/delta_j^2) gradW_ij - p_i/delta_i^2 sum_b (V_b/V0_i)
+//   gradW_ib,
+// plus the Monaghan artificial viscosity of the WCSPH solver. The baseline Wang et al. compare
+// with.
 #pragma once
 
 #include <vector>

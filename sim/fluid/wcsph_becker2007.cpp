@@ -10,9 +10,11 @@
 namespace sim {
 
 WcsphBecker2007::WcsphBecker2007(const WcsphParameters& parameters) : params_(parameters) {
-  require(params_.speedOfSound > 0, "WCSPH needs a speed of sound > 0 m/s (about 10x the flow speed)");
+  require(params_.speedOfSound > 0,
+          "WCSPH needs a speed of sound > 0 m/s (about 10x the flow speed)");
   require(params_.artificialViscosity >= 0, "WCSPH artificial viscosity must be >= 0");
-  require(params_.courantNumber > 0 && params_.courantNumber <= 1, "WCSPH Courant number in (0, 1]");
+  require(params_.courantNumber > 0 && params_.courantNumber <= 1,
+          "WCSPH Courant number in (0, 1]");
 }
 
 void WcsphBecker2007::attach(World& world) {

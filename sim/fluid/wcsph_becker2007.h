@@ -28,8 +28,8 @@ class WcsphBecker2007 final : public PressureSolver {
 
  private:
   WcsphParameters params_;
-  std::vector<Real>* pressure_ = nullptr;  // [Pa]
-  std::vector<Vec3> pressureAcceleration_; // [m/s^2] scratch
+  std::vector<Real>* pressure_ = nullptr;   // [Pa]
+  std::vector<Vec3> pressureAcceleration_;  // [m/s^2] scratch
   DeterministicReducer reducer_;
 };
 

@@ -11,7 +11,8 @@ namespace sim {
 
 struct WendlandC2 {
   explicit WendlandC2(Real supportRadius)
-      : h(supportRadius), invH(1.0 / supportRadius),
+      : h(supportRadius),
+        invH(1.0 / supportRadius),
         k(21.0 / (2.0 * std::numbers::pi * h * h * h)) {}
 
   Real W(Real r) const {

@@ -20,7 +20,8 @@ inline Vec3 linearMomentum(const World& world) {  // [kg m/s]
 
 inline Real maxSpeed(const World& world) {  // [m/s]
   const auto& v = world.particles.v;
-  return std::sqrt(DeterministicReducer::max(v.size(), [&](std::size_t i) { return v[i].squaredNorm(); }));
+  return std::sqrt(
+      DeterministicReducer::max(v.size(), [&](std::size_t i) { return v[i].squaredNorm(); }));
 }
 
 inline bool allFinite(const World& world) {

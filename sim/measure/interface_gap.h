@@ -21,10 +21,10 @@ struct InterfaceGap {
   // [1] mean kernel number density sum_j W_ij (fluid and walls, walls weighted by their Akinci
   // volume over d^3) of the interface particles of both phases, over the same mean of the other
   // particles; both only over particles with at least kFullNeighbourhood fluid neighbours at a
-  // non-zero kernel weight, so that free-surface particles do not enter. A gap is a layer of missing particles and lowers
-  // it below 1; a gap-free interface reads 1 within ~1 % whatever the disorder (the nearest-
-  // distance measure above counts the second layer too and reads ~1.3 d even without a gap).
-  // 0 when there is no interface.
+  // non-zero kernel weight, so that free-surface particles do not enter. A gap is a layer of
+  // missing particles and lowers it below 1; a gap-free interface reads 1 within ~1 % whatever the
+  // disorder (the nearest- distance measure above counts the second layer too and reads ~1.3 d even
+  // without a gap). 0 when there is no interface.
   Real numberDensityRatio = 0;
 };
 
@@ -81,9 +81,11 @@ inline InterfaceGap interfaceGap(const World& world, int materialA, int material
     atInterface[i] = interface ? 1.0 : 0.0;
   }
   const Real interfaceSum = r.sum(n, [&](std::size_t i) { return delta[i] * atInterface[i]; });
-  const Real interfaceCount = r.sum(n, [&](std::size_t i) { return delta[i] > 0 ? atInterface[i] : 0.0; });
+  const Real interfaceCount =
+      r.sum(n, [&](std::size_t i) { return delta[i] > 0 ? atInterface[i] : 0.0; });
   const Real bulkSum = r.sum(n, [&](std::size_t i) { return delta[i] * (1.0 - atInterface[i]); });
-  const Real bulkCount = r.sum(n, [&](std::size_t i) { return delta[i] > 0 ? 1.0 - atInterface[i] : 0.0; });
+  const Real bulkCount =
+      r.sum(n, [&](std::size_t i) { return delta[i] > 0 ? 1.0 - atInterface[i] : 0.0; });
   if (interfaceCount > 0 && bulkCount > 0 && bulkSum > 0)
     gap.numberDensityRatio = (interfaceSum / interfaceCount) / (bulkSum / bulkCount);
   return gap;

@@ -30,8 +30,8 @@ std::vector<Vec3> interfacePairMidpoints(const World& world, int material);
 SphereFit fitSphereGeometric(const std::vector<Vec3>& points, const SphereFit& start);
 
 struct WallPlane {
-  Vec3 point = Vec3::Zero();   // [m] a point on the wall surface
-  Vec3 normal = Vec3::UnitY(); // [1] unit normal pointing into the fluid
+  Vec3 point = Vec3::Zero();    // [m] a point on the wall surface
+  Vec3 normal = Vec3::UnitY();  // [1] unit normal pointing into the fluid
 };
 
 // Angle [deg] through the droplet of the spherical cap of the given volume [m^3] on the wall,
@@ -60,11 +60,11 @@ Real capAngleOfFootprint(Real volume, Real sectionRadius, Real height);
 Real capAngleOfCentroid(Real volume, Real centroidHeight);
 
 struct CapFit {
-  SphereFit sphere;         // the algebraic fit (Kasa) of the interface points
-  Real sphereAngle = 0.0;   // [deg] its angle acos(-z_c / R), through the droplet's material
-  Real contactAngle = 0.0;  // [deg] the cap of the droplet's volume that fits the points best
-  Real capRadius = 0.0;     // [m] that cap's sphere radius
-  Real volume = 0.0;        // [m^3] the droplet's volume, sum of m_i / rho_i
+  SphereFit sphere;          // the algebraic fit (Kasa) of the interface points
+  Real sphereAngle = 0.0;    // [deg] its angle acos(-z_c / R), through the droplet's material
+  Real contactAngle = 0.0;   // [deg] the cap of the droplet's volume that fits the points best
+  Real capRadius = 0.0;      // [m] that cap's sphere radius
+  Real volume = 0.0;         // [m^3] the droplet's volume, sum of m_i / rho_i
   Real centroidAngle = 0.0;  // [deg] the cap of that volume with the droplet's centroid height
                              //       (capAngleOfCentroid), a check without interface points
   int pointCount = 0;

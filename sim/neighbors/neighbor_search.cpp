@@ -61,7 +61,8 @@ void NeighborSearch::bin(const std::vector<Vec3>& x, CellBins& bins, bool dynami
   }
   // Counting sort, serial so that the order inside a cell is the index order (determinism).
   bins.cellStart.assign(static_cast<std::size_t>(cellCount_) + 1, 0);
-  for (std::size_t i = 0; i < n; ++i) ++bins.cellStart[static_cast<std::size_t>(bins.cellOf[i]) + 1];
+  for (std::size_t i = 0; i < n; ++i)
+    ++bins.cellStart[static_cast<std::size_t>(bins.cellOf[i]) + 1];
   std::partial_sum(bins.cellStart.begin(), bins.cellStart.end(), bins.cellStart.begin());
   bins.sorted.resize(n);
   counts_.assign(bins.cellStart.begin(), bins.cellStart.end() - 1);

@@ -46,10 +46,11 @@ struct NeighborList {
 
 // A set of points binned into the grid's cells.
 struct CellBins {
-  std::vector<Index> cellStart;  // size cellCount+1; points of cell c: sorted[cellStart[c]..cellStart[c+1])
-  std::vector<Index> sorted;     // point indices grouped by cell
+  std::vector<Index>
+      cellStart;  // size cellCount+1; points of cell c: sorted[cellStart[c]..cellStart[c+1])
+  std::vector<Index> sorted;         // point indices grouped by cell
   std::vector<std::int64_t> cellOf;  // per point
-  std::vector<Vec3> sortedX;     // [m] positions in `sorted` order (contiguous candidate scan)
+  std::vector<Vec3> sortedX;         // [m] positions in `sorted` order (contiguous candidate scan)
 };
 
 class NeighborSearch {
@@ -86,7 +87,8 @@ class NeighborSearch {
   // Permutation (new -> old) that orders points by the Morton index of their cell.
   void zOrder(const std::vector<Vec3>& x, std::vector<Index>& newToOld) const;
 
-  // Cell coordinates of a point, clamped to the grid; `inside` reports whether it was in the domain.
+  // Cell coordinates of a point, clamped to the grid; `inside` reports whether it was in the
+  // domain.
   Eigen::Vector3i cellCoords(const Vec3& x) const;
   bool contains(const Vec3& x) const;
 
@@ -106,8 +108,8 @@ class NeighborSearch {
     std::vector<Index> indices;
     std::vector<Vec3> gradients;
     std::vector<Real> values;
-    std::size_t count = 0;  // used entries (the vectors only grow)
-    std::size_t offset = 0; // where the block starts in the final list
+    std::size_t count = 0;   // used entries (the vectors only grow)
+    std::size_t offset = 0;  // where the block starts in the final list
   };
   std::int64_t linear(const Eigen::Vector3i& c) const {
     return c.x() + dims_.x() * (static_cast<std::int64_t>(c.y()) +

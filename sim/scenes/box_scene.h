@@ -29,7 +29,8 @@ void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag = 0)
 // tank size is rounded to whole cells per axis as above) and its layer index: 0 for the layer
 // touching the tank's inside (faces, edges and corners), k for the cells k spacings further out.
 // These are the static particles of Wang et al. 2023 eq. 21.
-void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag, const WallLayers& layers);
+void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag,
+                  const WallLayers& layers);
 // Fills [min, max] with particles on a lattice of spacing d (cell-centred: first at min + d/2),
 // mass rho0 d^3 of material `materialIndex`. Returns the number added.
 std::size_t addFluidBlock(World& world, const Vec3& min, const Vec3& max, Real spacing,

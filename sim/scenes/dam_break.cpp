@@ -19,7 +19,7 @@ constexpr Real kWallGap = 1.2;
 Material damBreakWater() {
   Material m;
   m.name = "water";
-  m.restDensity = 998.2;     // [kg/m^3]
+  m.restDensity = 998.2;        // [kg/m^3]
   m.dynamicViscosity = 1.0e-3;  // [Pa s]
   return m;
 }
@@ -28,11 +28,12 @@ Material damBreakWater() {
 
 DamBreakScene buildDamBreak(const DamBreakSpec& spec) {
   const Real a = spec.columnWidth, d = spec.spacing;
-  require(std::isfinite(a) && a > 0, "dam break: column width a must be > 0 m (got " +
-                                         std::to_string(a) + ")");
-  require(std::isfinite(d) && d > 0 && d <= a / 4,
-          "dam break: spacing must be in (0, a/4] so the column is at least 4 particles wide (got " +
-              std::to_string(d) + " m for a = " + std::to_string(a) + " m)");
+  require(std::isfinite(a) && a > 0,
+          "dam break: column width a must be > 0 m (got " + std::to_string(a) + ")");
+  require(
+      std::isfinite(d) && d > 0 && d <= a / 4,
+      "dam break: spacing must be in (0, a/4] so the column is at least 4 particles wide (got " +
+          std::to_string(d) + " m for a = " + std::to_string(a) + " m)");
   require(spec.heightRatio > 0, "dam break: height ratio n^2 must be > 0");
   require(spec.tankLengthRatio > 1.5, "dam break: the tank must be longer than 1.5 a");
   require(spec.depth >= 0, "dam break: depth must be >= 0 m (0 = quasi-2D slab)");
@@ -82,7 +83,8 @@ Real surgeFront(const DamBreakScene& scene, Index minNeighbors) {
   const auto& x = world.particles.x;
   Real front = -std::numeric_limits<Real>::infinity();
   for (Index i = 0; i < static_cast<Index>(x.size()); ++i)
-    if (static_cast<Index>(nb.end(i) - nb.begin(i)) >= minNeighbors) front = std::max(front, x[i].x());
+    if (static_cast<Index>(nb.end(i) - nb.begin(i)) >= minNeighbors)
+      front = std::max(front, x[i].x());
   const Real d = world.particleSpacing();
   return (front + 0.5 * d - scene.backWall) / scene.spec.columnWidth;
 }

@@ -24,15 +24,15 @@
 namespace sim {
 
 struct DamBreakSpec {
-  Real columnWidth = 0.05;    // [m] a, along x (the surge direction)
-  Real heightRatio = 2.0;     // [1] n^2: column height = n^2 a (Martin & Moyce used 1 and 2)
-  Real depth = 0.0;           // [m] fluid extent in z; 0 = 4 spacings (quasi-2D slab)
-  Real spacing = 0.05 / 16;   // [m] particle spacing d
-  Real tankLengthRatio = 4.0; // [1] inner tank length along x in units of a (the front reaches
-                              //     Z = 3.2 at T = 2.65 in the experiment)
+  Real columnWidth = 0.05;     // [m] a, along x (the surge direction)
+  Real heightRatio = 2.0;      // [1] n^2: column height = n^2 a (Martin & Moyce used 1 and 2)
+  Real depth = 0.0;            // [m] fluid extent in z; 0 = 4 spacings (quasi-2D slab)
+  Real spacing = 0.05 / 16;    // [m] particle spacing d
+  Real tankLengthRatio = 4.0;  // [1] inner tank length along x in units of a (the front reaches
+                               //     Z = 3.2 at T = 2.65 in the experiment)
   std::string solver = "wcsph";
   KernelKind kernel = KernelKind::kCubicSpline;
-  Real gravity = 9.81;        // [m/s^2] magnitude, along -y
+  Real gravity = 9.81;  // [m/s^2] magnitude, along -y
 };
 
 struct DamBreakScene {

@@ -1,7 +1,7 @@
 #include "sim/solid/elasticity_peer2018.h"
 
-#include <Eigen/Geometry>
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -25,16 +25,15 @@ Lame lameOf(const Material& m) {
 }
 
 // Rotational part of A by Mueller, Bender, Chentanez & Macklin 2016 ("A robust method to extract
-// the rotational part of deformations", MIG '16), eq. 7, starting from q (the last step's rotation):
-// robust for degenerate and inverted A, where a polar decomposition by SVD flips arbitrarily.
+// the rotational part of deformations", MIG '16), eq. 7, starting from q (the last step's
+// rotation): robust for degenerate and inverted A, where a polar decomposition by SVD flips
+// arbitrarily.
 Eigen::Quaterniond extractRotation(const Mat3& A, Eigen::Quaterniond q) {
   for (int iteration = 0; iteration < 20; ++iteration) {
     const Mat3 R = q.toRotationMatrix();
-    const Vec3 omega = (R.col(0).cross(A.col(0)) + R.col(1).cross(A.col(1)) +
-                        R.col(2).cross(A.col(2))) /
-                       (std::abs(R.col(0).dot(A.col(0)) + R.col(1).dot(A.col(1)) +
-                                 R.col(2).dot(A.col(2))) +
-                        1e-9);
+    const Vec3 omega =
+        (R.col(0).cross(A.col(0)) + R.col(1).cross(A.col(1)) + R.col(2).cross(A.col(2))) /
+        (std::abs(R.col(0).dot(A.col(0)) + R.col(1).dot(A.col(1)) + R.col(2).dot(A.col(2))) + 1e-9);
     const Real w = omega.norm();
     if (w < 1e-9) break;
     q = Eigen::Quaterniond(Eigen::AngleAxisd(w, omega / w)) * q;
@@ -73,8 +72,8 @@ bool quadraticGradientWeights(const std::vector<Vec3>& Xsj, const std::vector<Re
   Eigen::SelfAdjointEigenSolver<Mat9> eigen(M);
   const Vec9 lambda = eigen.eigenvalues();  // ascending
   if (!(lambda[0] > 1e-8 * lambda[8])) return false;
-  const Mat9 Minv = eigen.eigenvectors() * lambda.cwiseInverse().asDiagonal() *
-                    eigen.eigenvectors().transpose();
+  const Mat9 Minv =
+      eigen.eigenvectors() * lambda.cwiseInverse().asDiagonal() * eigen.eigenvectors().transpose();
   a.resize(Xsj.size());
   for (std::size_t k = 0; k < Xsj.size(); ++k)
     a[k] = w[k] * (Minv * quadraticBasis(Xsj[k], h)).head<3>() / h;
@@ -146,7 +145,8 @@ void ElasticityPeer2018::computeBodyThickness(Real spacing, const std::vector<Re
   using Entry = std::pair<Real, std::size_t>;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
   for (std::size_t s = 0; s < slots; ++s)
-    if (4 * (pairBegin_[s + 1] - pairBegin_[s]) < 3 * maxCount[static_cast<std::size_t>(bodyOf_[s])]) {
+    if (4 * (pairBegin_[s + 1] - pairBegin_[s]) <
+        3 * maxCount[static_cast<std::size_t>(bodyOf_[s])]) {
       depth[s] = 0;
       queue.push({0.0, s});
     }
@@ -224,10 +224,10 @@ void ElasticityPeer2018::attach(World& world) {
 
   // Reference neighbours: same material (one body per material) within the support radius, found
   // by binning the reference positions (the world's lists hold current, possibly moved positions).
-  const Kernel kernel = parameters_.supportRadiusFactor > 0
-                            ? Kernel(world.kernel.kind(),
-                                     parameters_.supportRadiusFactor * world.particleSpacing())
-                            : world.kernel;
+  const Kernel kernel =
+      parameters_.supportRadiusFactor > 0
+          ? Kernel(world.kernel.kind(), parameters_.supportRadiusFactor * world.particleSpacing())
+          : world.kernel;
   const Real h = kernel.supportRadius();
   std::vector<Vec3> X(slots);
   for (std::size_t s = 0; s < slots; ++s)
@@ -261,8 +261,8 @@ void ElasticityPeer2018::attach(World& world) {
             const Eigen::Vector3i cc = c + Eigen::Vector3i(dx, dy, dz);
             if (cc.minCoeff() < 0) continue;
             const std::int64_t k = key(cc);
-            auto it = std::lower_bound(keyed.begin(), keyed.end(),
-                                       std::make_pair(k, std::int32_t(-1)));
+            auto it =
+                std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(k, std::int32_t(-1)));
             for (; it != keyed.end() && it->first == k; ++it) {
               const auto j = static_cast<std::size_t>(it->second);
               if (j == s || materialOf[j] != materialOf[s]) continue;
@@ -310,8 +310,8 @@ void ElasticityPeer2018::attach(World& world) {
     Vec3 inv = Vec3::Zero();
     for (int c = 0; c < 3; ++c)
       if (s2[c] > 1e-6 * s2[2]) inv[c] = 1.0 / s2[c];
-    const Mat3 Ainv = eigen.eigenvectors() * inv.asDiagonal() * eigen.eigenvectors().transpose() *
-                      A.transpose();
+    const Mat3 Ainv =
+        eigen.eigenvectors() * inv.asDiagonal() * eigen.eigenvectors().transpose() * A.transpose();
     const Mat3 L = Ainv.transpose();
     // Second-order weights where the neighbourhood supports them (needs a support of > 2 d so that
     // a surface particle sees two layers inwards); Bonet & Lok otherwise.
@@ -360,7 +360,8 @@ void ElasticityPeer2018::attach(World& world) {
   bodySlots_.resize(slots);
   {
     std::vector<std::size_t> next(bodyBegin_.begin(), bodyBegin_.end() - 1);
-    for (std::size_t s = 0; s < slots; ++s) bodySlots_[next[static_cast<std::size_t>(bodyOf_[s])]++] = s;
+    for (std::size_t s = 0; s < slots; ++s)
+      bodySlots_[next[static_cast<std::size_t>(bodyOf_[s])]++] = s;
   }
   bodyFixed_.assign(bodyCount_, 0);
   {
@@ -412,8 +413,9 @@ void ElasticityPeer2018::energyGradient(const std::vector<Vec3>& u, bool subtrac
     defGrad_[s] = F;
   }
   if (subtractIdentity) computeRotations();
-  // Phase 2: T_s = V_s R_s sigma_s + sum_j r_sj X_sj^T, the stress and the zero-energy-mode error
-  // moment, both acting on the neighbours through g (Peer 2018 eq. 9-11; Ganzenmueller 2015 eq. 20).
+    // Phase 2: T_s = V_s R_s sigma_s + sum_j r_sj X_sj^T, the stress and the zero-energy-mode error
+    // moment, both acting on the neighbours through g (Peer 2018 eq. 9-11; Ganzenmueller 2015 eq.
+    // 20).
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < slots; ++s) {
     const Mat3& R = rotation_[s];
@@ -423,12 +425,14 @@ void ElasticityPeer2018::energyGradient(const std::vector<Vec3>& u, bool subtrac
     Mat3 T = volume_[s] * R * sigma;
     for (std::size_t k = pairBegin_[s]; k < pairBegin_[s + 1]; ++k) {
       const auto j = static_cast<std::size_t>(pairSlot_[k]);
-      const Vec3 r = pairHourglass_[k] * (0.5 * (defGrad_[s] + defGrad_[j]) * pairX_[k] - (u[j] - u[s]));
+      const Vec3 r =
+          pairHourglass_[k] * (0.5 * (defGrad_[s] + defGrad_[j]) * pairX_[k] - (u[j] - u[s]));
       T += r * pairX_[k].transpose();
     }
     stress_[s] = T;
     if (subtractIdentity) {
-      Real e = volume_[s] * (mu_[s] * eps.squaredNorm() + 0.5 * lambda_[s] * eps.trace() * eps.trace());
+      Real e =
+          volume_[s] * (mu_[s] * eps.squaredNorm() + 0.5 * lambda_[s] * eps.trace() * eps.trace());
       for (std::size_t k = pairBegin_[s]; k < pairBegin_[s + 1]; ++k) {
         const auto j = static_cast<std::size_t>(pairSlot_[k]);
         e += 0.5 * pairHourglass_[k] *
@@ -466,8 +470,9 @@ void ElasticityPeer2018::buildPreconditioner(Real dt) {
     for (std::size_t k = pairBegin_[a]; k < pairBegin_[a + 1]; ++k) {
       const auto i = static_cast<std::size_t>(pairSlot_[k]);
       const Vec3 g = rotation_[i] * pairGrad_[pairReverse_[k]];
-      D += volume_[i] * volume_[a] * volume_[a] *
-           (mu_[i] * g.squaredNorm() * Mat3::Identity() + (mu_[i] + lambda_[i]) * g * g.transpose());
+      D +=
+          volume_[i] * volume_[a] * volume_[a] *
+          (mu_[i] * g.squaredNorm() * Mat3::Identity() + (mu_[i] + lambda_[i]) * g * g.transpose());
       pair += 2.0 * pairHourglass_[k];
     }
     D += pair * Mat3::Identity();

@@ -52,8 +52,8 @@ struct ElasticityParameters {
   // the cantilever of tests/sim/solid_elasticity_test.cpp (4 particles thick): tip deflection
   // +14 % (alpha 1), +10 % (10), -5 % (100), -36 % (1000) against Euler-Bernoulli.
   Real hourglassStiffness = 10.0;
-  Real solverTolerance = 1e-6;      // [1] CG stop: |r| <= tol |b| (preconditioned norm)
-  int maxSolverIterations = 1000;   // [1]
+  Real solverTolerance = 1e-6;     // [1] CG stop: |r| <= tol |b| (preconditioned norm)
+  int maxSolverIterations = 1000;  // [1]
   // [1] dt <= C d / c_p, c_p = sqrt((lambda + 2 mu) / rho) the pressure-wave speed. Backward Euler
   // is unconditionally stable for the linearised system; the limit keeps the lagged rotation
   // accurate (a wave crosses at most C spacings per step) and the CG iteration count moderate.
@@ -86,7 +86,7 @@ struct ElasticityStats {
   int iterations = 0;         // CG iterations
   Real relativeResidual = 0;  // [1] at exit
   bool converged = true;
-  Real elasticEnergy = 0;     // [J] E + E_hg at the start-of-step positions
+  Real elasticEnergy = 0;  // [J] E + E_hg at the start-of-step positions
 };
 
 class ElasticityPeer2018 final : public Effect {
@@ -129,34 +129,34 @@ class ElasticityPeer2018 final : public Effect {
   DeterministicReducer reducer_;
 
   // Fixed per elastic particle, in slot order (slot = rank of the id among elastic particles).
-  std::vector<std::int32_t> slotId_;   // particle id of slot s
-  std::vector<std::int32_t> idToSlot_; // -1 for non-elastic ids
-  std::vector<Real> volume_;           // [m^3] reference volume V_s
-  std::vector<Real> mu_, lambda_;      // [Pa] Lame parameters of the slot's material
-  std::vector<Vec3> gradSum_;          // [1/m] b_s = sum_j V_j g_sj (non-zero at surfaces)
+  std::vector<std::int32_t> slotId_;    // particle id of slot s
+  std::vector<std::int32_t> idToSlot_;  // -1 for non-elastic ids
+  std::vector<Real> volume_;            // [m^3] reference volume V_s
+  std::vector<Real> mu_, lambda_;       // [Pa] Lame parameters of the slot's material
+  std::vector<Vec3> gradSum_;           // [1/m] b_s = sum_j V_j g_sj (non-zero at surfaces)
   // Reference neighbour pairs, CSR over slots.
-  std::vector<std::size_t> pairBegin_;  // size slots + 1
-  std::vector<std::int32_t> pairSlot_;  // neighbour slot j
-  std::vector<std::size_t> pairReverse_;// position of (j, s) in j's list
-  std::vector<Vec3> pairGrad_;          // [1/m^4] g_sj = L_s gradW, corrected gradient
-  std::vector<Vec3> pairX_;             // [m] X_j - X_s
-  std::vector<Real> pairHourglass_;     // [N/m] alpha E V_s V_j W0 / |X|^2
+  std::vector<std::size_t> pairBegin_;    // size slots + 1
+  std::vector<std::int32_t> pairSlot_;    // neighbour slot j
+  std::vector<std::size_t> pairReverse_;  // position of (j, s) in j's list
+  std::vector<Vec3> pairGrad_;            // [1/m^4] g_sj = L_s gradW, corrected gradient
+  std::vector<Vec3> pairX_;               // [m] X_j - X_s
+  std::vector<Real> pairHourglass_;       // [N/m] alpha E V_s V_j W0 / |X|^2
 
   // Bodies = elastic materials: slots of body b are bodySlots_[bodyBegin_[b] .. bodyBegin_[b+1]).
   std::size_t bodyCount_ = 0;
   std::vector<std::int32_t> bodyOf_;
   std::vector<std::size_t> bodyBegin_, bodySlots_;
-  std::vector<std::int32_t> bodyFixed_;  // 1 if the body has a fixed particle this step
-  std::vector<Real> bodyThickness_;      // [m]
-  std::vector<Real> bodyOmega_;          // [rad/s]
+  std::vector<std::int32_t> bodyFixed_;           // 1 if the body has a fixed particle this step
+  std::vector<Real> bodyThickness_;               // [m]
+  std::vector<Real> bodyOmega_;                   // [rad/s]
   mutable std::vector<std::int32_t> bodyLoaded_;  // scratch of maxTimeStep
   void computeBodyThickness(Real spacing, const std::vector<Real>& waveSpeeds);
 
   // Per-step state, in slot order.
-  std::vector<Index> slotIndex_;       // current particle index of slot s
+  std::vector<Index> slotIndex_;  // current particle index of slot s
   std::vector<std::int32_t> fixed_;
-  std::vector<Real> mass_;             // [kg]
-  std::vector<Real> energy_;           // [J] per slot, elastic + zero-energy-mode penalty
+  std::vector<Real> mass_;    // [kg]
+  std::vector<Real> energy_;  // [J] per slot, elastic + zero-energy-mode penalty
   std::vector<Vec3> x_, v_, rhs_, r_, z_, p_, ap_, grad_;
   std::vector<Mat3> rotation_, defGrad_, stress_, precond_;  // stress_ holds T_s (see .cpp)
 };

@@ -42,8 +42,8 @@ TissueDecision decideElastic(Real estimatedDisplacement, Real particleSpacing,
     const bool on = choice == TissueChoice::kElastic;
     if (on != rule) {
       d.forced = true;
-      d.reason = std::string("forced ") + (on ? "elastic" : "rigid") + " by the protocol (rule: " +
-                 d.reason + ")";
+      d.reason = std::string("forced ") + (on ? "elastic" : "rigid") +
+                 " by the protocol (rule: " + d.reason + ")";
     }
     d.elastic = on;
   }

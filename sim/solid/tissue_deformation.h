@@ -27,7 +27,8 @@ Real estimateTissueDeformation(Real loadPressure, Real cavityRadius, Real thickn
 // (1 - 2 nu)), so the estimate again errs towards "elastic"). Measured on the paper's 10 kPa
 // sclera anchored at its outer surface (d = 1.2 mm, INDSPH, 0.3 s): the membrane formula above
 // predicts 3.4 mm, the retina moved 0.09 mm at most (7 um on average), the layer compression of
-// the simulated 2-particle layer (2.4 mm, E scaled to 4.2 kPa) is 0.13 mm. Throws SimError as above.
+// the simulated 2-particle layer (2.4 mm, E scaled to 4.2 kPa) is 0.13 mm. Throws SimError as
+// above.
 Real estimateAnchoredLayerCompression(Real loadPressure, Real thickness, Real youngsModulus);
 
 enum class TissueChoice { kAuto, kElastic, kRigid };

@@ -47,7 +47,8 @@ void Pipeline::attach(World& world) {
     if (auto* v = dynamic_cast<ViscosityMonaghan2005*>(effects_[k].get()))
       if (auto* x = dynamic_cast<XsphMonaghan1989*>(effects_[k + 1].get())) v->absorbSmoothing(*x);
   auto& fields = world.particles.fields;
-  transportShift_ = fields.has(field::kTransportShift) ? &fields.get<Vec3>(field::kTransportShift) : nullptr;
+  transportShift_ =
+      fields.has(field::kTransportShift) ? &fields.get<Vec3>(field::kTransportShift) : nullptr;
   attached_ = true;
 }
 
@@ -100,7 +101,8 @@ Real Pipeline::step(World& world) {
         lastStep_.dt <= world.parameters().minTimeStep)
       break;
     p.v = velocityAtStart_;
-    lastStep_ = {std::max(0.5 * maxDisplacement / vmax, world.parameters().minTimeStep), "rejected"};
+    lastStep_ = {std::max(0.5 * maxDisplacement / vmax, world.parameters().minTimeStep),
+                 "rejected"};
   }
   rejectedSteps_ += attempt;
   const Real dt = lastStep_.dt;
@@ -170,7 +172,8 @@ std::string Pipeline::describe() const {
   out << "  " << k++ << ". " << solver_->name() << ".solve         pressure correction\n";
   out << "  " << k++ << ". constrain            fixed (anchored) particles keep v = 0\n";
   out << "  " << k++ << ". integrate            "
-      << (hasStage("background_pressure") ? "x += dt (v + dv), dv the transport correction" : "x += dt v")
+      << (hasStage("background_pressure") ? "x += dt (v + dv), dv the transport correction"
+                                          : "x += dt v")
       << "\n";
   out << "stage decisions:\n";
   for (const auto& d : decisions_)

@@ -6,9 +6,9 @@
 #include "sim/effects/background_pressure.h"
 #include "sim/effects/gravity.h"
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
-#include "sim/effects/wall_adhesion_young.h"
 #include "sim/effects/viscosity_monaghan2005.h"
 #include "sim/effects/viscosity_weiler2018.h"
+#include "sim/effects/wall_adhesion_young.h"
 #include "sim/effects/xsph_monaghan1989.h"
 
 namespace sim {
@@ -27,7 +27,6 @@ const InterfacialTension* presentTensionPair(const World& w) {
   }
   return nullptr;
 }
-
 
 // Rule of the two viscosity stages: explicit while its limit 0.08 d^2/nu is at least the CFL
 // step, implicit when it would force shorter steps (chooseViscosityTreatment). Forcing one of them
@@ -53,7 +52,8 @@ std::size_t elasticParticleCount(const World& w) {
 }
 
 // p_bg [Pa]: the options' value, or the tension's automatic one when that is negative.
-Real chosenBackgroundPressure(const World& w, const PipelineOptions& o, const InterfacialTension& t) {
+Real chosenBackgroundPressure(const World& w, const PipelineOptions& o,
+                              const InterfacialTension& t) {
   return o.backgroundPressure >= 0 ? o.backgroundPressure : backgroundPressureFor(w, t);
 }
 
@@ -62,12 +62,14 @@ Real chosenBackgroundPressure(const World& w, const PipelineOptions& o, const In
 StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& o) {
   const std::string name = "background_pressure";
   const InterfacialTension* t = presentTensionPair(w);
-  if (t == nullptr) return {name, false, false, "no interfacial tension (nothing under tension to clump)"};
+  if (t == nullptr)
+    return {name, false, false, "no interfacial tension (nothing under tension to clump)"};
   if (o.backgroundPressure == 0) return {name, false, false, "background pressure set to 0"};
   if (o.solver != "indsph")
     return {name, false, false,
-            "solver '" + o.solver + "': implemented in INDSPH's pair form only (WCSPH's equation "
-            "of state carries its own offset when its masses are compressed)"};
+            "solver '" + o.solver +
+                "': implemented in INDSPH's pair form only (WCSPH's equation "
+                "of state carries its own offset when its masses are compressed)"};
   // Elastic tissue: with the stage the paper's 10 kPa eye (paper_sclera_10kpa.toml, 2 x 0.3 s)
   // lost an oil particle out of the domain at 0.46 s, through the lattice-sampled sclera that
   // already lets fluid in (docs/elasticity.md); without it none left. Not understood; off there.
@@ -84,13 +86,14 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
   const std::size_t surface = o.closedDomain == Force::kOn ? 0 : countFreeSurfaceParticles(w);
   if (surface > 0)
     return {name, false, false,
-            std::to_string(surface) + " fluid particles at a free surface (number density below 0.9 "
-            "of rest)" + consequence};
+            std::to_string(surface) +
+                " fluid particles at a free surface (number density below 0.9 "
+                "of rest)" +
+                consequence};
   std::ostringstream why;
   why.precision(3);
   why << (o.closedDomain == Force::kOn ? "closed scene (declared)" : "closed scene")
-      << " with interfacial tension under INDSPH: p_bg = "
-      << chosenBackgroundPressure(w, o, *t)
+      << " with interfacial tension under INDSPH: p_bg = " << chosenBackgroundPressure(w, o, *t)
       << " Pa keeps the surface stress from clumping the interface (tensile instability)";
   return {name, true, false, why.str()};
 }
@@ -162,7 +165,7 @@ const std::vector<EffectEntry>& effectRegistry() {
              "velocity_smoothing", on, false,
              on ? "incompressible solver: damps particle-scale noise physical viscosity cannot"
                 : (explicitSolver ? "the explicit solver carries its own artificial viscosity"
-                                       : "velocity smoothing set to 0")};
+                                  : "velocity smoothing set to 0")};
        },
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<XsphMonaghan1989>(o.velocitySmoothing);
@@ -196,7 +199,8 @@ const std::vector<EffectEntry>& effectRegistry() {
          if (on)
            why << "two liquid phases with sigma = " << t->sigma << " N/m ('"
                << w.materials[t->materialA].name << "', '" << w.materials[t->materialB].name
-               << "'); " << surfaceStressFormName(resolveSurfaceStressForm(o.surfaceStress, o.solver))
+               << "'); "
+               << surfaceStressFormName(resolveSurfaceStressForm(o.surfaceStress, o.solver))
                << " surface stress"
                << (o.surfaceStress == SurfaceStressForm::kAuto ? " (auto: by the solver)" : "");
          if (!on) why << "no two liquid phases with an interfacial tension";
@@ -210,8 +214,10 @@ const std::vector<EffectEntry>& effectRegistry() {
        backgroundPressureDecision,
        [](const World& w, const PipelineOptions& o) {
          const InterfacialTension* t = presentTensionPair(w);
-         require(t != nullptr, "background_pressure needs an interfacial tension pair in the scene");
-         const Real rho = 0.5 * (w.materials[t->materialA].restDensity + w.materials[t->materialB].restDensity);
+         require(t != nullptr,
+                 "background_pressure needs an interfacial tension pair in the scene");
+         const Real rho =
+             0.5 * (w.materials[t->materialA].restDensity + w.materials[t->materialB].restDensity);
          return std::make_unique<BackgroundPressure>(chosenBackgroundPressure(w, o, *t), rho);
        }},
       {"elasticity", "implicit corotated linear elasticity (Peer et al. 2018), elastic tissue",

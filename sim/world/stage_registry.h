@@ -30,16 +30,16 @@ enum class Force { kAuto, kOn, kOff };
 struct PipelineOptions {
   std::string solver = "dfsph";
   DfsphParameters dfsph;
-  WcsphParameters wcsph;             // also the number_density solver's speed of sound
+  WcsphParameters wcsph;  // also the number_density solver's speed of sound
   IndsphParameters indsph;
   IisphParameters iisph;
   ImplicitViscosityParameters implicitViscosity;  // wallFriction below overrides its own
   ElasticityParameters elasticity;
-  bool wallFriction = true;              // no-slip viscous walls
-  Real velocitySmoothing = 0.05;         // [1] XSPH strength for incompressible solvers (0 = off)
-  // Discretisation of the interfacial surface stress (sim/effects/interfacial_tension_hu_adams2006.h):
-  // corrected (first-order consistent on any particle order), symmetric (momentum-exact), or
-  // auto (by the solver: resolveSurfaceStressForm).
+  bool wallFriction = true;       // no-slip viscous walls
+  Real velocitySmoothing = 0.05;  // [1] XSPH strength for incompressible solvers (0 = off)
+  // Discretisation of the interfacial surface stress
+  // (sim/effects/interfacial_tension_hu_adams2006.h): corrected (first-order consistent on any
+  // particle order), symmetric (momentum-exact), or auto (by the solver: resolveSurfaceStressForm).
   SurfaceStressForm surfaceStress = SurfaceStressForm::kAuto;
   // [Pa] background_pressure stage's p_bg; < 0: automatic, kBackgroundPressurePerTension sigma / d
   // (sim/effects/background_pressure.h)
@@ -49,7 +49,7 @@ struct PipelineOptions {
   // from the number densities at assembly (countFreeSurfaceParticles; a jittered lattice can
   // read as a free surface there).
   Force closedDomain = Force::kAuto;
-  std::map<std::string, Force> forced;   // effect name -> forced on/off
+  std::map<std::string, Force> forced;  // effect name -> forced on/off
 };
 
 struct SolverEntry {

@@ -40,7 +40,8 @@ void World::initialize() {
                 " but only " + std::to_string(materials.size()) + " are defined");
     require(particles.mass[i] > 0.0 && std::isfinite(particles.mass[i]),
             "particle " + std::to_string(i) + " has a non-positive mass");
-    require(particles.v[i].allFinite(), "particle " + std::to_string(i) + " has a non-finite velocity");
+    require(particles.v[i].allFinite(),
+            "particle " + std::to_string(i) + " has a non-finite velocity");
   }
   search_ = std::make_unique<NeighborSearch>(parameters_.domain, supportRadius());
   search_->setStatic(walls.x);  // throws, naming the wall particle, if one lies outside
@@ -106,9 +107,11 @@ std::string World::describeEscape(const std::string& fallback) const {
              "or particle spacing).";
     else if (isFluid(m.kind))
       msg << "A fluid leaves the domain only through a wall: look for a hole in the wall or a wall "
-             "thinner than the particle spacing, or an instability (velocities far above the flow's).";
+             "thinner than the particle spacing, or an instability (velocities far above the "
+             "flow's).";
     else
-      msg << "An elastic tissue leaves the domain when it deforms further than the domain's margin: "
+      msg << "An elastic tissue leaves the domain when it deforms further than the domain's "
+             "margin: "
              "the tissue is too soft for its load or not held; anchor it or keep it rigid.";
     return msg.str();
   }

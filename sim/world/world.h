@@ -13,18 +13,18 @@
 namespace sim {
 
 struct WorldParameters {
-  Real particleSpacing = 0.0;          // [m] initial lattice spacing d of dynamic particles
-  Real supportRadiusFactor = 2.0;      // [1] kernel support radius h = factor * d
+  Real particleSpacing = 0.0;      // [m] initial lattice spacing d of dynamic particles
+  Real supportRadiusFactor = 2.0;  // [1] kernel support radius h = factor * d
   KernelKind kernel = KernelKind::kCubicSpline;
-  Vec3 gravity = Vec3(0, -9.81, 0);    // [m/s^2] in the simulation (eye) frame; may change in time
-  Box domain;                          // [m] every particle stays inside for the whole run
-  Real cflNumber = 0.15;               // [1] dt <= cfl * d / v_max
+  Vec3 gravity = Vec3(0, -9.81, 0);  // [m/s^2] in the simulation (eye) frame; may change in time
+  Box domain;                        // [m] every particle stays inside for the whole run
+  Real cflNumber = 0.15;             // [1] dt <= cfl * d / v_max
   // [1] a step whose pressure-corrected velocities move a particle further than this many
   // spacings is redone with a shorter step (Pipeline::step)
   Real maxDisplacement = 0.3;
-  Real minTimeStep = 1e-6;             // [s]
-  Real maxTimeStep = 5e-3;             // [s]
-  int zSortInterval = 16;              // [steps] how often particle data are re-sorted in Z-order
+  Real minTimeStep = 1e-6;  // [s]
+  Real maxTimeStep = 5e-3;  // [s]
+  int zSortInterval = 16;   // [steps] how often particle data are re-sorted in Z-order
 
   void validate() const;
 };
@@ -56,18 +56,18 @@ class World {
   DynamicParticles particles;
   WallParticles walls;
   Kernel kernel;
-  Vec3 gravity;          // [m/s^2] current gravity (the runner turns it with posture)
+  Vec3 gravity;  // [m/s^2] current gravity (the runner turns it with posture)
   // [kg/m^3] 0 = off. Otherwise gravity acts on each particle as g (1 - rho_ref / rho_i), rho_i its
   // material's rest density: the exact rewrite -grad p / rho + g = -grad p' / rho + g (1 - rho_ref
   // / rho) with p' = p - rho_ref g.x, which takes the hydrostatic background out of the pressure
   // the solver carries. Why: under a background pressure p the SPH pressure force on an imperfect
-  // particle arrangement errs by ~ p epsilon / d, which pins slow buoyant motion (docs/interface.md,
-  // validation 6). Exact only for a closed domain filled with fluid (at a free surface p = 0 would
-  // become p' = -rho_ref g.x), and walls and tissue then feel p', not p.
+  // particle arrangement errs by ~ p epsilon / d, which pins slow buoyant motion
+  // (docs/interface.md, validation 6). Exact only for a closed domain filled with fluid (at a free
+  // surface p = 0 would become p' = -rho_ref g.x), and walls and tissue then feel p', not p.
   Real gravityReferenceDensity = 0.0;
-  Real time = 0.0;       // [s]
+  Real time = 0.0;  // [s]
   long stepCount = 0;
-  Real lastTimeStep = 0; // [s]
+  Real lastTimeStep = 0;  // [s]
 
   const NeighborList& fluidNeighbors() const { return search_->dynamicDynamic(); }
   const NeighborList& wallNeighbors() const { return search_->dynamicStatic(); }
@@ -77,7 +77,9 @@ class World {
   const std::vector<Vec3>& fluidGradients() const { return search_->dynamicDynamicGradients(); }
   const std::vector<Vec3>& wallGradients() const { return search_->dynamicStaticGradients(); }
   // Kernel values W(x_i - x_j), same alignment (density sums; empty if no kernel pass ran).
-  const std::vector<Real>& fluidKernelValues() const { return search_->dynamicDynamicKernelValues(); }
+  const std::vector<Real>& fluidKernelValues() const {
+    return search_->dynamicDynamicKernelValues();
+  }
   const std::vector<Real>& wallKernelValues() const { return search_->dynamicStaticKernelValues(); }
   const NeighborSearch& search() const { return *search_; }
 

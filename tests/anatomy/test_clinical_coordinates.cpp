@@ -44,7 +44,8 @@ TEST_CASE("OD: 3 o'clock is nasal, OS: 3 o'clock is temporal", "[unit][clinical]
 TEST_CASE("clinical position round trip on parametric eyes", "[unit][clinical]") {
   StaphylomaCavityParameters p;
   const CavityShape shapes[] = {CavityShape(emmetropicGeometry({})),
-                                CavityShape(myopicGeometry({})), CavityShape(staphylomaGeometry(p))};
+                                CavityShape(myopicGeometry({})),
+                                CavityShape(staphylomaGeometry(p))};
   for (const CavityShape& shape : shapes)
     for (Laterality side : {Laterality::kRight, Laterality::kLeft}) {
       const Eye eye(side, shape);
@@ -101,13 +102,16 @@ TEST_CASE("OD and OS are mirror images across the vertical midplane", "[unit][cl
   CHECK(right.opticDisc().x() > 0.0);  // nasal = +x for OD
   CHECK(left.opticDisc().x() < 0.0);
   CHECK((Vec3(-right.opticDisc().x(), right.opticDisc().y(), right.opticDisc().z()) -
-         left.opticDisc()).norm() < 1e-9);
+         left.opticDisc())
+            .norm() < 1e-9);
 }
 
 TEST_CASE("positions off the modelled wall are rejected", "[unit][clinical]") {
   const Eye eye(Laterality::kRight, CavityShape(emmetropicGeometry({})));
-  CHECK_THROWS_WITH(eye.wallPointAt({3.0, 2.0 * kMm}), Catch::Contains("anterior to the modelled wall"));
-  CHECK_THROWS_WITH(eye.wallPointAt({3.0, 60.0 * kMm}), Catch::Contains("beyond the posterior pole"));
+  CHECK_THROWS_WITH(eye.wallPointAt({3.0, 2.0 * kMm}),
+                    Catch::Contains("anterior to the modelled wall"));
+  CHECK_THROWS_WITH(eye.wallPointAt({3.0, 60.0 * kMm}),
+                    Catch::Contains("beyond the posterior pole"));
   CHECK_THROWS_WITH(eye.wallPointAt({13.0, 10.0 * kMm}), Catch::Contains("clock hour"));
   CHECK_THROWS_WITH(eye.clinicalPositionOf(eye.cavity().capPoint(0.2, 1.0)),
                     Catch::Contains("lens/IOL cap"));

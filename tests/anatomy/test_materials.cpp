@@ -15,12 +15,12 @@ namespace {
 struct Expected {
   const char* name;
   MaterialKind kind;
-  double density;           // [kg/m^3]
-  double viscosity;         // [Pa s], 0 = not applicable
-  double tension;           // [N/m], 0 = not applicable
-  double contactAngle;      // [deg] through the aqueous, 0 = not applicable
-  double youngsModulus;     // [Pa], 0 = not applicable
-  double poissonRatio;      // [1], 0 = not applicable
+  double density;        // [kg/m^3]
+  double viscosity;      // [Pa s], 0 = not applicable
+  double tension;        // [N/m], 0 = not applicable
+  double contactAngle;   // [deg] through the aqueous, 0 = not applicable
+  double youngsModulus;  // [Pa], 0 = not applicable
+  double poissonRatio;   // [1], 0 = not applicable
 };
 
 // Reference values (reference-data.md): 1.1 table defaults, 2 Fawcett 1994, 5 tissue table.
@@ -99,15 +99,18 @@ TEST_CASE("the shipped data file is the built-in table", "[unit][materials]") {
 }
 
 TEST_CASE("bad material rows are rejected with file:line and the reason", "[unit][materials]") {
-  const std::string good = "oil,fluid,density,970,kg/m^3,S,Lucke 1990\n"
-                           "oil,fluid,dynamic_viscosity,1.0,Pa*s,S,Rossi 2021\n";
+  const std::string good =
+      "oil,fluid,density,970,kg/m^3,S,Lucke 1990\n"
+      "oil,fluid,dynamic_viscosity,1.0,Pa*s,S,Rossi 2021\n";
   CHECK(MaterialLibrary::parseCsv(good, "t.csv").find("oil").density->value == 970.0);
   const auto fails = [&](const std::string& extra, const std::string& message) {
     INFO(extra);
     CHECK_THROWS_WITH(MaterialLibrary::parseCsv(good + extra, "t.csv"), Catch::Contains(message));
   };
-  fails("oil,fluid,surface_tension,0.04,N/m,S,x y z\n", "t.csv:3: unknown property 'surface_tension'");
-  fails("oil,fluid,interfacial_tension,40,mN/m,S,x y z\n", "t.csv:3: interfacial_tension must be given in N/m");
+  fails("oil,fluid,surface_tension,0.04,N/m,S,x y z\n",
+        "t.csv:3: unknown property 'surface_tension'");
+  fails("oil,fluid,interfacial_tension,40,mN/m,S,x y z\n",
+        "t.csv:3: interfacial_tension must be given in N/m");
   fails("oil,fluid,contact_angle,abc,deg,S,x y z\n", "t.csv:3: value 'abc' is not a number");
   fails("oil,fluid,contact_angle,200,deg,S,x y z\n", "out of the physical range");
   fails("oil,fluid,contact_angle,20,deg,X,x y z\n", "t.csv:3: flag 'X' must be S, D or U");

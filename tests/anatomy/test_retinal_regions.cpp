@@ -23,8 +23,7 @@ constexpr double R = test::kSphereRadius;
 // the closed form (not from Eye::wallPointAt): polar angle from the posterior pole
 // theta = rimTheta - (distance - limbusToRim) / R.
 Vec3 spherePoint(const Eye& eye, double hour, double distance) {
-  const double theta =
-      eye.cavity().rimTheta() - (distance - eye.landmarks().limbusToRim) / R;
+  const double theta = eye.cavity().rimTheta() - (distance - eye.landmarks().limbusToRim) / R;
   const Vec3 d = clockHourDirection(hour);
   const Vec3 pole = eye.cavity().posteriorPole();
   return {R * std::sin(theta) * d.x(), R * std::sin(theta) * d.y(),
@@ -109,8 +108,8 @@ TEST_CASE("retinal breaks: membership on a sphere, rejection anterior to the ora
   const CavityShape sphere(test::sphereGeometry());
   const Eye od(Laterality::kRight, sphere);
   const double ora = od.landmarks().oraFromLimbus;
-  const RetinalBreak tear(od, {"horseshoe tear", {10.5, 2.0 * kMm, DistanceReference::kOraSerrata},
-                               3.0 * kMm});
+  const RetinalBreak tear(
+      od, {"horseshoe tear", {10.5, 2.0 * kMm, DistanceReference::kOraSerrata}, 3.0 * kMm});
   // Centre: 2 mm posterior to the ora at 10:30.
   CHECK((tear.centre().position - spherePoint(od, 10.5, ora + 2.0 * kMm)).norm() < 1e-6);
   CHECK(tear.isInBreak(tear.centre().position));

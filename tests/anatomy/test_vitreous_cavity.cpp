@@ -146,14 +146,15 @@ TEST_CASE("spherical cavity: mesh volume matches the truncated sphere", "[unit][
   const CavityShape shape(test::sphereGeometry(1.0e-3));
   const double R = test::kSphereRadius, h = 6.0e-3, sag = 1.0e-3;
   const double pi = std::numbers::pi;
-  const double exact =
-      pi * R * R * ((h + R) - (h * h * h + R * R * R) / (3 * R * R)) - pi * (R * R - h * h) * sag / 2;
+  const double exact = pi * R * R * ((h + R) - (h * h * h + R * R * R) / (3 * R * R)) -
+                       pi * (R * R - h * h) * sag / 2;
   CHECK(shape.volume() == Approx(exact).epsilon(1e-12));
   const auto mesh = shape.triangulate(256);
   const MeshProperties m = measureMesh(mesh);
   // Tessellation bound as in checkCavity.
   const double edge = longestEdge(mesh);
-  CHECK(std::abs(m.signedVolume - exact) <= edge * edge / (2 * shape.minimumCurvatureRadius()) * m.area);
+  CHECK(std::abs(m.signedVolume - exact) <=
+        edge * edge / (2 * shape.minimumCurvatureRadius()) * m.area);
   // Centroid at the origin of the eye frame (DESIGN.md): the mesh's volume centroid is ~0.
   Vec3 moment = Vec3::Zero();
   for (const auto& f : mesh.faces) {

@@ -54,8 +54,7 @@ void fillFluid(sim::DynamicParticles& particles, std::size_t n, std::uint64_t se
   std::mt19937_64 random(seed);
   if (particles.size() != n) {
     fields.resize(0);
-    for (std::size_t i = 0; i < n; ++i)
-      particles.add(sim::Vec3::Zero(), sim::Vec3::Zero(), 0, 0);
+    for (std::size_t i = 0; i < n; ++i) particles.add(sim::Vec3::Zero(), sim::Vec3::Zero(), 0, 0);
   }
   for (const auto& field : fields) {
     if (field->kind() == sim::ScalarKind::kReal) {
@@ -132,13 +131,20 @@ bool decode(const std::string& raw, std::string& out) {
     const std::size_t end = raw.find(';', i);
     if (end == std::string::npos) return false;
     const std::string entity = raw.substr(i + 1, end - i - 1);
-    if (entity == "amp") out += '&';
-    else if (entity == "lt") out += '<';
-    else if (entity == "gt") out += '>';
-    else if (entity == "quot") out += '"';
-    else if (entity == "apos") out += '\'';
-    else if (entity.size() > 1 && entity[0] == '#') out += static_cast<char>(std::stoi(entity.substr(1)));
-    else return false;
+    if (entity == "amp")
+      out += '&';
+    else if (entity == "lt")
+      out += '<';
+    else if (entity == "gt")
+      out += '>';
+    else if (entity == "quot")
+      out += '"';
+    else if (entity == "apos")
+      out += '\'';
+    else if (entity.size() > 1 && entity[0] == '#')
+      out += static_cast<char>(std::stoi(entity.substr(1)));
+    else
+      return false;
     i = end;
   }
   return true;
@@ -208,8 +214,15 @@ std::string checkXml(const std::string& text, std::vector<XmlElement>* elements)
       const std::size_t before = j;
       while (j < text.size() && std::isspace(static_cast<unsigned char>(text[j]))) ++j;
       if (j >= text.size()) return problem("unterminated tag <" + name + ">");
-      if (text[j] == '>') { ++j; break; }
-      if (text.compare(j, 2, "/>") == 0) { selfClosing = true; j += 2; break; }
+      if (text[j] == '>') {
+        ++j;
+        break;
+      }
+      if (text.compare(j, 2, "/>") == 0) {
+        selfClosing = true;
+        j += 2;
+        break;
+      }
       if (j == before) return problem("attributes must be separated by whitespace");
       std::string key;
       while (j < text.size() && isNameChar(text[j])) key += text[j++];

@@ -66,8 +66,8 @@ TEST_CASE("checkpoints restore every checkpointed field bit-identically", "[unit
     for (const auto& field : *original) {
       INFO(field->info().name);
       const sim::FieldBase* other = restored->find(field->info().name);
-      const std::size_t bytes = field->size() * field->components() *
-                                (field->kind() == sim::ScalarKind::kReal ? 8 : 4);
+      const std::size_t bytes =
+          field->size() * field->components() * (field->kind() == sim::ScalarKind::kReal ? 8 : 4);
       const bool equal = std::memcmp(field->rawData(), other->rawData(), bytes) == 0;
       // Checkpointed fields are restored exactly; the others keep the resumed run's values.
       CHECK(equal == field->info().checkpointed);
@@ -94,7 +94,8 @@ TEST_CASE("checkpoint mismatches are reported by name and restore nothing", "[un
     other.fields.add<sim::Real>({"interface_curvature", "1/m", true, false});
     other.fields.add<sim::Vec3>({"surface_normal", "1", true, false});
     try {
-      readCheckpoint(dir / "checkpoint.h5", {{"fluid", &other.fields}, {"wall", &otherWalls.fields}});
+      readCheckpoint(dir / "checkpoint.h5",
+                     {{"fluid", &other.fields}, {"wall", &otherWalls.fields}});
       FAIL("missing fields accepted");
     } catch (const IoError& e) {
       CHECK(e.object() == "/groups/fluid");
@@ -105,23 +106,25 @@ TEST_CASE("checkpoint mismatches are reported by name and restore nothing", "[un
   SECTION("a field the checkpoint holds but this run does not checkpoint") {
     sim::DynamicParticles plain;  // no "stress" field
     for (std::size_t i = 0; i < 50; ++i) plain.add(sim::Vec3::Zero(), sim::Vec3::Zero(), 0, 0);
-    CHECK_THROWS_WITH(
-        readCheckpoint(dir / "checkpoint.h5", {{"fluid", &plain.fields}, {"wall", &otherWalls.fields}}),
-        Catch::Contains("'stress'") && Catch::Contains("does not checkpoint them"));
+    CHECK_THROWS_WITH(readCheckpoint(dir / "checkpoint.h5",
+                                     {{"fluid", &plain.fields}, {"wall", &otherWalls.fields}}),
+                      Catch::Contains("'stress'") && Catch::Contains("does not checkpoint them"));
   }
   SECTION("a different particle count") {
     sim::DynamicParticles bigger;
     iotest::fillFluid(bigger, 51, 5);
-    CHECK_THROWS_WITH(
-        readCheckpoint(dir / "checkpoint.h5", {{"fluid", &bigger.fields}, {"wall", &otherWalls.fields}}),
-        Catch::Contains("/groups/fluid/position") && Catch::Contains("holds 50 particles") &&
-            Catch::Contains("this run has 51"));
+    CHECK_THROWS_WITH(readCheckpoint(dir / "checkpoint.h5",
+                                     {{"fluid", &bigger.fields}, {"wall", &otherWalls.fields}}),
+                      Catch::Contains("/groups/fluid/position") &&
+                          Catch::Contains("holds 50 particles") &&
+                          Catch::Contains("this run has 51"));
   }
   SECTION("a group the checkpoint lacks, or one it has that the run lacks") {
-    CHECK_THROWS_WITH(readCheckpoint(dir / "checkpoint.h5", {{"fluid", &other.fields},
-                                                             {"wall", &otherWalls.fields},
-                                                             {"tissue", &other.fields}}),
-                      Catch::Contains("/groups/tissue") && Catch::Contains("not in the checkpoint"));
+    CHECK_THROWS_WITH(
+        readCheckpoint(
+            dir / "checkpoint.h5",
+            {{"fluid", &other.fields}, {"wall", &otherWalls.fields}, {"tissue", &other.fields}}),
+        Catch::Contains("/groups/tissue") && Catch::Contains("not in the checkpoint"));
     CHECK_THROWS_WITH(readCheckpoint(dir / "checkpoint.h5", {{"fluid", &other.fields}}),
                       Catch::Contains("'wall'") && Catch::Contains("does not have"));
   }
@@ -213,8 +216,8 @@ TEST_CASE("a writer killed while checkpointing leaves the last complete checkpoi
   sim::WallParticles walls;
   iotest::fillFluid(fluid, kParticles, 0);
   iotest::fillWall(walls, 10, 0);
-  const auto read = readCheckpoint(dir / "checkpoint.h5",
-                                   {{"fluid", &fluid.fields}, {"wall", &walls.fields}});
+  const auto read =
+      readCheckpoint(dir / "checkpoint.h5", {{"fluid", &fluid.fields}, {"wall", &walls.fields}});
   // The checkpoint is the last one reported complete, or one the kill caught after its rename
   // but before it could report.
   CHECK(read.step >= lastReported);

@@ -45,8 +45,7 @@ void fillFrame(sim::DynamicParticles& fluid, std::int64_t frame) {
 
 }  // namespace
 
-TEST_CASE("a run killed while writing frames leaves every completed frame readable",
-          "[unit][io]") {
+TEST_CASE("a run killed while writing frames leaves every completed frame readable", "[unit][io]") {
   // (frames reported before the kill, delay [us] after that): delay 0 lands right after a
   // flush, the others at varying points inside later frame writes. After 60 frames the writer
   // has closed and reopened the file at least once (its metadata cache bound), which the kill
@@ -77,7 +76,7 @@ TEST_CASE("a run killed while writing frames leaves every completed frame readab
     close(pipeFds[0]);
 
     INFO("kill " << delay << " us after frame " << warmUp - 1
-                  << "; last frame reported complete: " << reported);
+                 << "; last frame reported complete: " << reported);
     protocols::FrameReader reader(dir / "frames.h5");
     const auto& frames = reader.frames();
     // Every reported frame is there; at most one more (finished, not yet reported).
@@ -90,8 +89,7 @@ TEST_CASE("a run killed while writing frames leaves every completed frame readab
       for (const auto& field : expected.fields) {
         if (!field->info().written) continue;
         INFO("frame " << info.index << " field " << field->info().name);
-        CHECK(iotest::sameBits(reader.readField(info.index, "fluid", field->info().name),
-                               *field));
+        CHECK(iotest::sameBits(reader.readField(info.index, "fluid", field->info().name), *field));
       }
     }
     const auto coverage = reader.readSeries("coverage");

@@ -182,8 +182,8 @@ TEST_CASE("series tables append rows and keep their columns", "[unit][io]") {
       writer.appendSeries("coverage", 99.0, {1.0}, {"retina"});
       FAIL("a row with other columns was accepted");
     } catch (const IoError& e) {
-      CHECK_THAT(e.what(), Catch::Contains("/series/coverage") &&
-                               Catch::Contains("columns differ"));
+      CHECK_THAT(e.what(),
+                 Catch::Contains("/series/coverage") && Catch::Contains("columns differ"));
     }
   }
   FrameReader reader(dir / "frames.h5");
@@ -243,7 +243,10 @@ TEST_CASE("bad use of frame files is reported with file and object", "[unit][io]
   iotest::TempDir dir;
   sim::DynamicParticles fluid;
   iotest::fillFluid(fluid, 10, 1);
-  { FrameWriter writer(dir / "frames.h5", {}); writer.writeFrame(0, 0, {{"fluid", &fluid.fields}}); }
+  {
+    FrameWriter writer(dir / "frames.h5", {});
+    writer.writeFrame(0, 0, {{"fluid", &fluid.fields}});
+  }
 
   SECTION("an existing file is not overwritten unless asked") {
     try {
@@ -267,8 +270,7 @@ TEST_CASE("bad use of frame files is reported with file and object", "[unit][io]
       CHECK_THAT(e.what(), Catch::Contains("no such field dataset"));
     }
     CHECK_THROWS_WITH(reader.readField(5, "fluid", "position"),
-                      Catch::Contains("no complete frame 5") &&
-                          Catch::Contains("numbered 0 to 0"));
+                      Catch::Contains("no complete frame 5") && Catch::Contains("numbered 0 to 0"));
   }
   SECTION("a file that is not HDF5 is rejected with HDF5's reason") {
     std::ofstream(dir / "junk.h5") << "not hdf5 at all";
@@ -341,9 +343,9 @@ TEST_CASE("fields spanning several chunks (compressed on all threads) read back 
 
   hid_t file = H5Fopen((dir / "frames.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
   REQUIRE(file >= 0);
-  for (const auto& [path, chunks] : {std::pair{"/frames/000000/fluid/position", 2},
-                                     std::pair{"/frames/000000/fluid/stress", 6},
-                                     std::pair{"/frames/000000/labels/label", 3}}) {
+  for (const auto& [path, chunks] :
+       {std::pair{"/frames/000000/fluid/position", 2}, std::pair{"/frames/000000/fluid/stress", 6},
+        std::pair{"/frames/000000/labels/label", 3}}) {
     hid_t dataset = H5Dopen2(file, path, H5P_DEFAULT);
     hid_t space = H5Dget_space(dataset);
     hsize_t count = 0;

@@ -25,7 +25,8 @@ DatasetCheck inspect(hid_t file, const std::string& path) {
   DatasetCheck result;
   H5E_BEGIN_TRY {
     if (H5Oexists_by_name(file, path.c_str(), H5P_DEFAULT) <= 0) return result;
-  } H5E_END_TRY;
+  }
+  H5E_END_TRY;
   hid_t dataset = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
   hid_t space = H5Dget_space(dataset);
   hsize_t dims[2] = {0, 0};
@@ -54,8 +55,7 @@ TEST_CASE("the XML checker used below rejects malformed documents", "[unit][io]"
   CHECK_FALSE(iotest::checkXml("<a>1 < 2</a>", nullptr).empty());
 }
 
-TEST_CASE("the XDMF sidecar is well-formed and references only existing datasets",
-          "[unit][io]") {
+TEST_CASE("the XDMF sidecar is well-formed and references only existing datasets", "[unit][io]") {
   iotest::TempDir dir;
   sim::DynamicParticles fluid;
   sim::WallParticles walls;
@@ -93,7 +93,10 @@ TEST_CASE("the XDMF sidecar is well-formed and references only existing datasets
   int temporal = 0, spatial = 0, uniform = 0, times = 0;
   for (const auto& e : elements) {
     if (e.name != "Grid" && e.name != "Time") continue;
-    if (e.name == "Time") { ++times; continue; }
+    if (e.name == "Time") {
+      ++times;
+      continue;
+    }
     const std::string type = e.attributes.count("GridType") ? e.attributes.at("GridType") : "";
     const std::string collection =
         e.attributes.count("CollectionType") ? e.attributes.at("CollectionType") : "";

@@ -26,8 +26,10 @@ std::string joined(const std::vector<std::string>& lines) {
 TriangleMesh withoutFaces(TriangleMesh m, double zAbove) {
   std::vector<Triangle> kept;
   for (const Triangle& f : m.faces) {
-    const double z = (m.vertices[static_cast<size_t>(f[0])].z() + m.vertices[static_cast<size_t>(f[1])].z() +
-                      m.vertices[static_cast<size_t>(f[2])].z()) / 3;
+    const double z =
+        (m.vertices[static_cast<size_t>(f[0])].z() + m.vertices[static_cast<size_t>(f[1])].z() +
+         m.vertices[static_cast<size_t>(f[2])].z()) /
+        3;
     if (z <= zAbove) kept.push_back(f);
   }
   m.faces = kept;
@@ -46,10 +48,12 @@ TEST_CASE("a clean sphere passes unchanged with its measures", "[unit][check]") 
   // 1280 faces (chordal error); 1.5 % bounds both.
   CHECK(r.measures.signedVolume == Approx(4.0 / 3.0 * M_PI * kR * kR * kR).epsilon(0.015));
   CHECK(r.measures.area == Approx(4 * M_PI * kR * kR).epsilon(0.015));
-  CHECK(r.measures.size() == Approx(2 * kR).epsilon(1e-9));  // icosahedron vertices on the axes' planes
+  CHECK(r.measures.size() ==
+        Approx(2 * kR).epsilon(1e-9));  // icosahedron vertices on the axes' planes
 }
 
-TEST_CASE("bad meshes: repaired with the repair listed, or refused saying what and where", "[unit][check]") {
+TEST_CASE("bad meshes: repaired with the repair listed, or refused saying what and where",
+          "[unit][check]") {
   const TriangleMesh sphere = meshing_test::eyeSphere(3);
   const double volume = checkMesh(sphere).measures.signedVolume;
 
@@ -63,10 +67,12 @@ TEST_CASE("bad meshes: repaired with the repair listed, or refused saying what a
   }
   SECTION("a few faces flipped: re-oriented and listed") {
     TriangleMesh m = sphere;
-    for (int f : {5, 77, 300}) std::swap(m.faces[static_cast<size_t>(f)][1], m.faces[static_cast<size_t>(f)][2]);
+    for (int f : {5, 77, 300})
+      std::swap(m.faces[static_cast<size_t>(f)][1], m.faces[static_cast<size_t>(f)][2]);
     const MeshReport r = checkMesh(m);
     REQUIRE(r.isUsable());
-    CHECK_THAT(joined(r.repairs), Catch::Contains("re-oriented 3 faces") && Catch::Contains("5, 77, 300"));
+    CHECK_THAT(joined(r.repairs),
+               Catch::Contains("re-oriented 3 faces") && Catch::Contains("5, 77, 300"));
     CHECK(r.measures.signedVolume == Approx(volume).epsilon(1e-12));
   }
   SECTION("duplicate vertices (a triangle soup) are joined") {
@@ -78,7 +84,8 @@ TEST_CASE("bad meshes: repaired with the repair listed, or refused saying what a
     }
     const MeshReport r = checkMesh(m);
     REQUIRE(r.isUsable());
-    CHECK_THAT(joined(r.repairs), Catch::Contains("removed 3198 duplicate"));  // 3840 corners, 642 vertices
+    CHECK_THAT(joined(r.repairs),
+               Catch::Contains("removed 3198 duplicate"));  // 3840 corners, 642 vertices
     CHECK(r.mesh.vertices.size() == 642);
   }
   SECTION("small hole: filled, volume nearly unchanged") {
@@ -108,7 +115,8 @@ TEST_CASE("bad meshes: repaired with the repair listed, or refused saying what a
                             Catch::Contains("pairs of faces cross, e.g. face "));
     // WHERE: one of the two faces named first is a spike face around the moved vertex 0.
     std::smatch match;
-    REQUIRE(std::regex_search(refusal, match, std::regex("e\\.g\\. face ([0-9]+) and face ([0-9]+)")));
+    REQUIRE(
+        std::regex_search(refusal, match, std::regex("e\\.g\\. face ([0-9]+) and face ([0-9]+)")));
     const auto touchesVertex0 = [&](const std::string& index) {
       const Triangle& f = sphere.faces[std::stoul(index)];
       return f[0] == 0 || f[1] == 0 || f[2] == 0;
@@ -123,8 +131,9 @@ TEST_CASE("bad meshes: repaired with the repair listed, or refused saying what a
     for (Triangle f : bubble.faces) m.faces.push_back({f[0] + base, f[1] + base, f[2] + base});
     const MeshReport r = checkMesh(m);
     REQUIRE(r.isUsable());
-    CHECK_THAT(joined(r.repairs), Catch::Contains("kept the largest of 2 connected components (1280 faces)") &&
-                                      Catch::Contains("320 faces near (0.03"));
+    CHECK_THAT(joined(r.repairs),
+               Catch::Contains("kept the largest of 2 connected components (1280 faces)") &&
+                   Catch::Contains("320 faces near (0.03"));
     CHECK(r.measures.signedVolume == Approx(volume).epsilon(1e-12));
     MeshCheckOptions strict;
     strict.keepLargestComponent = false;
@@ -142,14 +151,15 @@ TEST_CASE("bad meshes: repaired with the repair listed, or refused saying what a
     const int p = static_cast<int>(m.vertices.size());
     m.vertices.emplace_back(0, 0.5 * L, 0);
     m.faces[0] = {f0[0], p, f0[2]};
-    m.faces.push_back({p, f0[1], f0[2]});       // face 12
-    m.faces.push_back({f0[0], f0[1], p});       // face 13: the sliver
-    m.faces.push_back({f0[2], f0[2], f0[1]});   // face 14: repeats a vertex
+    m.faces.push_back({p, f0[1], f0[2]});      // face 12
+    m.faces.push_back({f0[0], f0[1], p});      // face 13: the sliver
+    m.faces.push_back({f0[2], f0[2], f0[1]});  // face 14: repeats a vertex
     const MeshReport r = checkMesh(m);
     REQUIRE(r.isUsable());
     const std::string repairs = joined(r.repairs);
     CHECK_THAT(repairs, Catch::Contains("degenerate faces that repeat a vertex (faces 14)"));
-    CHECK_THAT(repairs, Catch::Contains("removed 1 degenerate (zero-area) faces by edge collapses (faces 13)"));
+    CHECK_THAT(repairs, Catch::Contains(
+                            "removed 1 degenerate (zero-area) faces by edge collapses (faces 13)"));
     CHECK(detail::findDegenerateFaces(r.mesh).empty());
     CHECK(r.measures.signedVolume == Approx(L * L * L).epsilon(1e-12));
   }
@@ -165,7 +175,10 @@ TEST_CASE("bad meshes: repaired with the repair listed, or refused saying what a
   SECTION("NaN coordinates and broken indices throw MeshError") {
     TriangleMesh m = sphere;
     m.vertices[7].y() = std::numeric_limits<double>::quiet_NaN();
-    CHECK_THROWS_MATCHES(checkMesh(m), MeshError, Catch::Matchers::Message("mesh: vertex 7 has a NaN or infinite coordinate (repair or re-export the mesh)"));
+    CHECK_THROWS_MATCHES(
+        checkMesh(m), MeshError,
+        Catch::Matchers::Message(
+            "mesh: vertex 7 has a NaN or infinite coordinate (repair or re-export the mesh)"));
     TriangleMesh broken = sphere;
     broken.faces[3][1] = 9999;
     CHECK_THROWS_WITH(checkMesh(broken), Catch::Contains("face 3 refers to vertex 9999"));

@@ -11,23 +11,26 @@
 using namespace meshing;
 
 namespace {
-constexpr double kR = 0.012;  // [m]
+constexpr double kR = 0.012;                                                     // [m]
 double capVolume(double R, double h) { return M_PI * h * h * (3 * R - h) / 3; }  // [m^3]
 }  // namespace
 
-TEST_CASE("clipped volume is exact on a polyhedron and conserves volume in any direction", "[unit][fill]") {
+TEST_CASE("clipped volume is exact on a polyhedron and conserves volume in any direction",
+          "[unit][fill]") {
   // Above + below == total for arbitrary directions and offsets, to round-off: the clip adds
   // no volume and loses none.
   const TriangleMesh m = meshing_test::eyeSphere(3);
   const double total = measureMesh(m).signedVolume;
-  for (const Vec3& u : {Vec3(0, 0, 1), Vec3(1, 2, -3).normalized(), Vec3(-0.3, 0.1, 0.9).normalized()})
+  for (const Vec3& u :
+       {Vec3(0, 0, 1), Vec3(1, 2, -3).normalized(), Vec3(-0.3, 0.1, 0.9).normalized()})
     for (double c : {-0.011, -0.004, 0.0, 0.0023, 0.0119}) {
       const double above = clippedVolume(m, u, c), below = clippedVolume(m, -u, -c);
       CHECK(above + below == Approx(total).epsilon(1e-12));
     }
   // Symmetric polyhedron (icosphere is centrally symmetric): half on each side of a plane
   // through the centre, exactly.
-  CHECK(clippedVolume(m, Vec3(0.2, -0.5, 0.7).normalized(), 0.0) == Approx(0.5 * total).epsilon(1e-12));
+  CHECK(clippedVolume(m, Vec3(0.2, -0.5, 0.7).normalized(), 0.0) ==
+        Approx(0.5 * total).epsilon(1e-12));
 }
 
 TEST_CASE("fill plane on a sphere matches the spherical cap", "[validation][fill]") {
@@ -55,7 +58,8 @@ TEST_CASE("fill plane on a sphere matches the spherical cap", "[validation][fill
   }
 }
 
-TEST_CASE("fill plane on a prolate (myopic) cavity and in a tilted direction", "[validation][fill]") {
+TEST_CASE("fill plane on a prolate (myopic) cavity and in a tilted direction",
+          "[validation][fill]") {
   const TriangleMesh sphere = meshing_test::eyeSphere(4);
   // A prolate spheroid is the sphere stretched along z by 1.25 (a 30 mm axial length from a 24 mm
   // sphere). Volumes of polyhedra scale exactly by the determinant under a linear map, so the

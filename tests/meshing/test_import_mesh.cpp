@@ -18,7 +18,8 @@
 using namespace meshing;
 using meshing_test::TempDir;
 
-TEST_CASE("import round trip keeps topology, area and volume in STL, OBJ, PLY and OFF", "[unit][import]") {
+TEST_CASE("import round trip keeps topology, area and volume in STL, OBJ, PLY and OFF",
+          "[unit][import]") {
   const TempDir dir("roundtrip");
   const TriangleMesh sphere = meshing_test::eyeSphere(3);  // [m]
   const MeshMeasures expected = measureMesh(sphere);
@@ -86,7 +87,8 @@ void writeBinaryStl(const std::string& path, const float corner[4][3]) {
 
 }  // namespace
 
-TEST_CASE("unreadable files give MeshError naming the file, the problem and the fix", "[unit][import]") {
+TEST_CASE("unreadable files give MeshError naming the file, the problem and the fix",
+          "[unit][import]") {
   const TempDir dir("badfiles");
   const TriangleMesh sphere = meshing_test::eyeSphere(1);
   struct Case {
@@ -102,8 +104,9 @@ TEST_CASE("unreadable files give MeshError naming the file, the problem and the 
   meshing_test::writeText(dir.file("garbage.ply"), garbage);
   meshing_test::writeText(dir.file("points.xyz"), "1 2 3\n");
   meshing_test::writeText(dir.file("lines.obj"), "v 0 0 0\nv 10 0 0\nv 0 10 0\nl 1 2\nl 2 3\n");
-  meshing_test::writeText(dir.file("nan.obj"), "v 0 0 0\nv 10 0 0\nv 0 nan 0\nv 0 0 10\n"
-                                               "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  meshing_test::writeText(dir.file("nan.obj"),
+                          "v 0 0 0\nv 10 0 0\nv 0 nan 0\nv 0 0 10\n"
+                          "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float nanCorners[4][3] = {{0, 0, 0}, {20, 0, 0}, {0, 20, nan}, {0, 0, 20}};
   writeBinaryStl(dir.file("nan.stl"), nanCorners);
@@ -115,15 +118,21 @@ TEST_CASE("unreadable files give MeshError naming the file, the problem and the 
   const Case cases[] = {
       {"missing", dir.file("nothing_here.stl"), LengthUnit::millimetre, "file not found"},
       {"empty", dir.file("empty.stl"), LengthUnit::millimetre, "file is empty"},
-      {"garbage stl", dir.file("garbage.stl"), LengthUnit::millimetre, "cannot read the file as a mesh"},
-      {"garbage ply", dir.file("garbage.ply"), LengthUnit::millimetre, "cannot read the file as a mesh"},
-      {"unknown format", dir.file("points.xyz"), LengthUnit::millimetre, "unknown mesh format '.xyz'"},
+      {"garbage stl", dir.file("garbage.stl"), LengthUnit::millimetre,
+       "cannot read the file as a mesh"},
+      {"garbage ply", dir.file("garbage.ply"), LengthUnit::millimetre,
+       "cannot read the file as a mesh"},
+      {"unknown format", dir.file("points.xyz"), LengthUnit::millimetre,
+       "unknown mesh format '.xyz'"},
       {"no triangles", dir.file("lines.obj"), LengthUnit::millimetre, "no triangles"},
       {"NaN in OBJ", dir.file("nan.obj"), LengthUnit::millimetre, "NaN or infinite"},
       {"NaN in binary STL", dir.file("nan.stl"), LengthUnit::millimetre, "NaN or infinite"},
-      {"24 m eye (um file declared mm)", dir.file("eye_24m.stl"), LengthUnit::millimetre, "implausible size 24 m"},
-      {"0.024 mm eye (m file declared mm)", dir.file("eye_in_m.obj"), LengthUnit::millimetre, "probably in m:"},
-      {"24 m eye (mm file declared m)", dir.file("eye_in_mm.obj"), LengthUnit::metre, "probably in mm:"},
+      {"24 m eye (um file declared mm)", dir.file("eye_24m.stl"), LengthUnit::millimetre,
+       "implausible size 24 m"},
+      {"0.024 mm eye (m file declared mm)", dir.file("eye_in_m.obj"), LengthUnit::millimetre,
+       "probably in m:"},
+      {"24 m eye (mm file declared m)", dir.file("eye_in_mm.obj"), LengthUnit::metre,
+       "probably in mm:"},
       {"cannot guess", dir.file("huge.obj"), LengthUnit::unknown, "implausible for an eye in mm"},
   };
   for (const Case& c : cases) {
@@ -146,12 +155,15 @@ TEST_CASE("loadMesh: shipped test meshes load, repair or refuse", "[unit][import
   CHECK(good.report.repairs.empty());
   CHECK(good.mesh.faces.size() == 1280);
   // Icosphere of r = 12 mm at 1280 faces: 0.86 % below the sphere's volume (chordal error).
-  CHECK(good.report.measures.signedVolume == Approx(4.0 / 3.0 * M_PI * 1.728e-6 * (1 - 0.0086)).epsilon(0.001));
-  const LoadedMesh inverted = loadMesh("data/meshes/test/sphere_r12mm_inverted.obj", LengthUnit::millimetre);
+  CHECK(good.report.measures.signedVolume ==
+        Approx(4.0 / 3.0 * M_PI * 1.728e-6 * (1 - 0.0086)).epsilon(0.001));
+  const LoadedMesh inverted =
+      loadMesh("data/meshes/test/sphere_r12mm_inverted.obj", LengthUnit::millimetre);
   CHECK_THAT(inverted.report.repairs.at(0), Catch::Contains("reversed all 1280 faces"));
   CHECK(loadMesh("data/meshes/test/sphere_r12mm_coarse.off").unit == LengthUnit::millimetre);
-  CHECK_THROWS_WITH(loadMesh("data/meshes/test/sphere_r12mm_open.ply", LengthUnit::millimetre),
-                    Catch::StartsWith("data/meshes/test/sphere_r12mm_open.ply: mesh refused: open surface"));
+  CHECK_THROWS_WITH(
+      loadMesh("data/meshes/test/sphere_r12mm_open.ply", LengthUnit::millimetre),
+      Catch::StartsWith("data/meshes/test/sphere_r12mm_open.ply: mesh refused: open surface"));
 }
 
 TEST_CASE("import applies nested node transforms (COLLADA)", "[unit][import]") {

@@ -54,7 +54,9 @@ TEST_CASE("mesh check: exit codes and messages for the bad-mesh table", "[unit][
   writeMesh(two, dir.file("two.obj"), 1000.0);
   meshing_test::writeText(dir.file("empty.stl"), "");
   meshing_test::writeText(dir.file("garbage.stl"), std::string(300, '\x7f') + "not an stl");
-  meshing_test::writeText(dir.file("nan.obj"), "v 0 0 0\nv 10 0 0\nv 0 nan 0\nv 0 0 10\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
+  meshing_test::writeText(
+      dir.file("nan.obj"),
+      "v 0 0 0\nv 10 0 0\nv 0 nan 0\nv 0 0 10\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
   writeMesh(sphere, dir.file("eye_in_m.stl"), 1.0);
 
   struct Case {
@@ -86,14 +88,16 @@ TEST_CASE("mesh check: exit codes and messages for the bad-mesh table", "[unit][
   }
   const Run report = runTamponade("mesh check " + dir.file("good.stl") + " --units mm");
   CHECK_THAT(report.output, Catch::Contains("area:") && Catch::Contains("volume:") &&
-                                Catch::Contains("size:      24 x") && Catch::Contains("units:     mm"));
+                                Catch::Contains("size:      24 x") &&
+                                Catch::Contains("units:     mm"));
 }
 
 TEST_CASE("mesh sample: counts, spacing statistics, PLY output and strict lengths", "[unit][cli]") {
   const meshing_test::TempDir dir("cli-sample");
   writeMesh(meshing_test::eyeSphere(3), dir.file("eye.stl"), 1000.0);
   const std::string eye = dir.file("eye.stl");
-  const Run ok = runTamponade("mesh sample " + eye + " --units mm --spacing 1mm --out " + dir.file("p.ply"));
+  const Run ok =
+      runTamponade("mesh sample " + eye + " --units mm --spacing 1mm --out " + dir.file("p.ply"));
   INFO(ok.output);
   CHECK(ok.code == 0);
   CHECK_THAT(ok.output, Catch::Contains("wall:") && Catch::Contains("interior:") &&
@@ -105,7 +109,7 @@ TEST_CASE("mesh sample: counts, spacing statistics, PLY output and strict length
   const struct {
     std::string spacing;
     std::string message;
-  } bad[] = {{"0.4", "is not a length with a unit"}, {"0.4 inch", "is not a length with a unit"},
+  } bad[] = {{"0.4", "is not a length with a unit"},  {"0.4 inch", "is not a length with a unit"},
              {"-1mm", "is not a length with a unit"}, {"0mm", "must be a positive length"},
              {"1mmm", "is not a length with a unit"}, {"abc", "is not a length with a unit"}};
   for (const auto& b : bad) {
@@ -115,7 +119,9 @@ TEST_CASE("mesh sample: counts, spacing statistics, PLY output and strict length
     CHECK_THAT(r.output, Catch::Contains(b.message));
   }
   CHECK(runTamponade("mesh sample " + eye).code == 2);  // --spacing required
-  CHECK(runTamponade("mesh sample " + eye + " --spacing 1mm --out " + dir.file("nodir/p.ply")).code == 1);
+  CHECK(
+      runTamponade("mesh sample " + eye + " --spacing 1mm --out " + dir.file("nodir/p.ply")).code ==
+      1);
   CHECK(runTamponade("mesh sample --help").code == 0);
   CHECK(runTamponade("mesh check --help").code == 0);
   CHECK(runTamponade("mesh frobnicate x").code == 2);

@@ -42,7 +42,8 @@ inline void writeOff(const meshing::TriangleMesh& m, const std::string& path, do
   std::ofstream out(path);
   out.precision(12);
   out << "OFF\n" << m.vertices.size() << ' ' << m.faces.size() << " 0\n";
-  for (const auto& v : m.vertices) out << v.x() * scale << ' ' << v.y() * scale << ' ' << v.z() * scale << '\n';
+  for (const auto& v : m.vertices)
+    out << v.x() * scale << ' ' << v.y() * scale << ' ' << v.z() * scale << '\n';
   for (const auto& f : m.faces) out << "3 " << f[0] << ' ' << f[1] << ' ' << f[2] << '\n';
 }
 
@@ -73,7 +74,8 @@ inline meshing::TriangleMesh eyeSphere(int subdivisions = 3) {
 // The cube [0, L]^3 with outward faces: exact coordinates, lattice-aligned edges.
 inline meshing::TriangleMesh makeCube(double L) {
   meshing::TriangleMesh m;
-  for (int k = 0; k < 8; ++k) m.vertices.emplace_back(L * (k & 1), L * ((k >> 1) & 1), L * ((k >> 2) & 1));
+  for (int k = 0; k < 8; ++k)
+    m.vertices.emplace_back(L * (k & 1), L * ((k >> 1) & 1), L * ((k >> 2) & 1));
   m.faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
              {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
   return m;

@@ -23,7 +23,8 @@ double cube(double x) { return x * x * x; }
 
 }  // namespace
 
-TEST_CASE("surface samples: areas sum to the mesh area, spacing >= 0.9 d, on the surface, outward", "[unit][sampling]") {
+TEST_CASE("surface samples: areas sum to the mesh area, spacing >= 0.9 d, on the surface, outward",
+          "[unit][sampling]") {
   const TriangleMesh sphere = meshing_test::eyeSphere(4);
   const double d = 0.0006;  // [m]
   const SurfaceSamples s = sampleSurface(sphere, d);
@@ -98,7 +99,8 @@ TEST_CASE("volume samples: exact count in a lattice-aligned cube", "[unit][sampl
   CHECK(points.size() == 8000);
 }
 
-TEST_CASE("volume samples: N d^3 matches the sphere shrunk by the wall gap, nothing outside", "[unit][sampling]") {
+TEST_CASE("volume samples: N d^3 matches the sphere shrunk by the wall gap, nothing outside",
+          "[unit][sampling]") {
   const TriangleMesh sphere = meshing_test::eyeSphere(5);
   const double d = 0.0005, gap = 0.5 * d;  // [m]
   VolumeSamplingOptions o;
@@ -112,7 +114,8 @@ TEST_CASE("volume samples: N d^3 matches the sphere shrunk by the wall gap, noth
   CHECK(static_cast<double>(points.size()) * cube(d) == Approx(expected).epsilon(0.01));
   // Against the full volume the d/2 gap shell is missing: (1 - d/(2R))^3 = 0.938.
   const double volume = measureMesh(sphere).signedVolume;
-  CHECK(static_cast<double>(points.size()) * cube(d) / volume == Approx(cube(1 - gap / kR)).epsilon(0.01));
+  CHECK(static_cast<double>(points.size()) * cube(d) / volume ==
+        Approx(cube(1 - gap / kR)).epsilon(0.01));
   // Nothing outside or closer than the gap to the wall: the ball of radius gap around each
   // point lies inside the polyhedron, which lies inside the sphere.
   double worst = 0;
@@ -123,7 +126,8 @@ TEST_CASE("volume samples: N d^3 matches the sphere shrunk by the wall gap, noth
   CHECK(sampleVolume(sphere, o) == points);  // deterministic, lattice order
 }
 
-TEST_CASE("shell samples: constant thickness matches the spherical shell volume", "[unit][sampling]") {
+TEST_CASE("shell samples: constant thickness matches the spherical shell volume",
+          "[unit][sampling]") {
   const TriangleMesh sphere = meshing_test::eyeSphere(5);
   const double d = 0.0004, T = 0.0012, gap = 0.5 * d;  // [m]
   const ShellSamples s = sampleShell(sphere, T, d);
@@ -142,7 +146,8 @@ TEST_CASE("shell samples: constant thickness matches the spherical shell volume"
     outer += s.isOuter[i] != 0;
   }
   // The outermost layer (depth in (T - d, T]) holds d/(T - gap) = 40 % of the shell.
-  CHECK(static_cast<double>(outer) / static_cast<double>(s.points.size()) == Approx(0.4).epsilon(0.1));
+  CHECK(static_cast<double>(outer) / static_cast<double>(s.points.size()) ==
+        Approx(0.4).epsilon(0.1));
 }
 
 TEST_CASE("shell samples: variable thickness follows the callback", "[unit][sampling]") {

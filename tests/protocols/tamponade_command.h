@@ -20,14 +20,17 @@ struct CommandResult {
 // Passive OpenMP waiting: the CI machine is shared, and spinning threads that wait for a
 // descheduled one made steps 100x slower there (protocols/scenario/README.md). stderr goes to a
 // pipe, so `tamponade run` prints its plain (non-terminal) progress lines.
-inline CommandResult runTamponade(const std::string& arguments, const std::filesystem::path& workingDirectory) {
-  const std::string command = "cd '" + workingDirectory.string() + "' && OMP_WAIT_POLICY=passive '" +
-                              TAMPONADE_EXECUTABLE "' " + arguments + " 2>&1";
+inline CommandResult runTamponade(const std::string& arguments,
+                                  const std::filesystem::path& workingDirectory) {
+  const std::string command = "cd '" + workingDirectory.string() +
+                              "' && OMP_WAIT_POLICY=passive '" + TAMPONADE_EXECUTABLE "' " +
+                              arguments + " 2>&1";
   CommandResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
   std::array<char, 4096> buffer{};
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+    result.output.append(buffer.data(), n);
   const int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;

@@ -17,8 +17,8 @@ using namespace protocols;
 
 namespace {
 
-constexpr double kRadius = 11e-3;         // [m] sphere of about an eye's 5.6 mL
-constexpr double kDraftSpacing = 0.8e-3;  // [m] the draft preset's d (protocol.h)
+constexpr double kRadius = 11e-3;                 // [m] sphere of about an eye's 5.6 mL
+constexpr double kDraftSpacing = 0.8e-3;          // [m] the draft preset's d (protocol.h)
 constexpr double kWallGap = 1.2 * kDraftSpacing;  // [m] fluid starts 1.2 d from the wall
 // [m] h_c = g + sqrt(3) d, the coverage kernel's support (wall_oil_fraction.h)
 const double kCoverageRadius = coverageSupportRadius(kDraftSpacing, kWallGap);
@@ -133,7 +133,8 @@ TEST_CASE("regions are measured separately, walls without fluid are dry", "[unit
   for (std::size_t w = 0; w < s.walls.size(); ++w)
     s.map.regions[w] |= s.walls.points[w].y() > 0 ? anatomy::kSuperior : anatomy::kInferior;
   const sim::Kernel kernel(sim::KernelKind::kCubicSpline, kCoverageRadius);
-  const WallOilFractions f = computeWallOilFractions(s.walls.points, {&fluid, &isOil, nullptr}, kernel);
+  const WallOilFractions f =
+      computeWallOilFractions(s.walls.points, {&fluid, &isOil, nullptr}, kernel);
   for (std::size_t w = 0; w < s.walls.size(); ++w)
     if (s.walls.points[w].y() > kCoverageRadius) CHECK(f.wetting[w] == WallWetting::kDry);
   const FrameCoverage frame = measureFrameCoverage(s.map, f, 0.0);
@@ -151,7 +152,8 @@ TEST_CASE("regions are measured separately, walls without fluid are dry", "[unit
   CHECK(frame.retina().area == Approx(superior.area + inferior.area).epsilon(1e-12));
 }
 
-TEST_CASE("wall oil fraction is the Shepard-normalised, volume-weighted indicator", "[unit][coverage]") {
+TEST_CASE("wall oil fraction is the Shepard-normalised, volume-weighted indicator",
+          "[unit][coverage]") {
   const sim::Kernel kernel(sim::KernelKind::kCubicSpline, 1.0);
   const std::vector<sim::Vec3> walls = {{0, 0, 0}, {10, 0, 0}};
   const std::vector<sim::Vec3> fluid = {{0.3, 0, 0}, {-0.3, 0, 0}, {0, 0.9, 0}};
@@ -185,7 +187,8 @@ TEST_CASE("schedule coverage is the time-weighted mean of the frames", "[unit][c
     return f;
   };
   // Frames at 0, 1, 3 s stand for [0, 0.5], [0.5, 2], [2, 3]: weights 1/6, 1/2, 1/3.
-  const ScheduleCoverage s = summarizeSchedule({frame(0, 0.0, false), frame(1, 1.0, true), frame(3, 0.4, true)});
+  const ScheduleCoverage s =
+      summarizeSchedule({frame(0, 0.0, false), frame(1, 1.0, true), frame(3, 0.4, true)});
   CHECK(s.duration == 3.0);
   CHECK(s.regions[0] == Approx(0.5 + 0.4 / 3.0).epsilon(1e-14));
   CHECK(s.breakFraction[0] == Approx(0.5 + 0.4 / 3.0).epsilon(1e-14));

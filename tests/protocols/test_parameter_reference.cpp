@@ -31,7 +31,8 @@ std::string section(const std::string& doc, const std::string& name) {
 }  // namespace
 
 TEST_CASE("docs/protocols.md holds the generated reference tables", "[unit][protocol][docs]") {
-  const std::string doc = readFile(std::filesystem::path(TAMPONADE_SOURCE_DIR) / "docs" / "protocols.md");
+  const std::string doc =
+      readFile(std::filesystem::path(TAMPONADE_SOURCE_DIR) / "docs" / "protocols.md");
   INFO("regenerate the tables with: tamponade validate --reference");
   CHECK(section(doc, "parameter-reference") == protocols::renderParameterReference());
   CHECK(section(doc, "unit-table") == protocols::renderUnitTable());
@@ -49,10 +50,12 @@ TEST_CASE("the parameter table is complete and consistent", "[unit][protocol]") 
     const std::size_t dot = spec.key.rfind('.');
     if (dot != std::string_view::npos) {
       const auto& parent = protocols::parameterSpec(spec.key.substr(0, dot));
-      CHECK((parent.kind == protocols::ValueKind::kTable || parent.kind == protocols::ValueKind::kTableArray));
+      CHECK((parent.kind == protocols::ValueKind::kTable ||
+             parent.kind == protocols::ValueKind::kTableArray));
     }
     if (spec.kind == protocols::ValueKind::kChoice) CHECK_FALSE(spec.choices.empty());
-    if (spec.requirement == protocols::Requirement::kConditional) CHECK_FALSE(spec.condition.empty());
+    if (spec.requirement == protocols::Requirement::kConditional)
+      CHECK_FALSE(spec.condition.empty());
     const bool isContainer =
         spec.kind == protocols::ValueKind::kTable || spec.kind == protocols::ValueKind::kTableArray;
     if (!isContainer) CHECK_FALSE(spec.example.empty());

@@ -2,10 +2,10 @@
 // the shipped examples, which must all parse to what they say.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -18,17 +18,17 @@ namespace {
 
 // A minimal valid protocol; the bad cases replace one of its lines (numbered from 1).
 const std::vector<std::string> kBaseLines = {
-    "format_version = 1",           // 1
-    "[eye]",                        // 2
-    "kind = \"emmetropic\"",        // 3
-    "side = \"OD\"",                // 4
-    "[tamponade]",                  // 5
+    "format_version = 1",             // 1
+    "[eye]",                          // 2
+    "kind = \"emmetropic\"",          // 3
+    "side = \"OD\"",                  // 4
+    "[tamponade]",                    // 5
     "agent = \"silicone_oil_1000\"",  // 6
-    "fill = \"90 %\"",              // 7
-    "[schedule]",                   // 8
-    "[[schedule.postures]]",        // 9
-    "name = \"supine\"",            // 10
-    "duration = \"10 min\"",        // 11
+    "fill = \"90 %\"",                // 7
+    "[schedule]",                     // 8
+    "[[schedule.postures]]",          // 9
+    "name = \"supine\"",              // 10
+    "duration = \"10 min\"",          // 11
 };
 
 std::string withLine(int line, const std::string& replacement) {
@@ -223,7 +223,8 @@ TEST_CASE("bad protocols: each problem is reported with its place and a fix", "[
       CHECK(d->where.line == c.line);
       CHECK(d->where.column == c.column);
       // The printed form is `file:line:column: what — fix`.
-      const std::string prefix = "case.toml:" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": ";
+      const std::string prefix =
+          "case.toml:" + std::to_string(c.line) + ":" + std::to_string(c.column) + ": ";
       CHECK(d->toString().rfind(prefix, 0) == 0);
       CHECK_FALSE(d->fix.empty());
     }
@@ -235,15 +236,15 @@ TEST_CASE("all problems of a file are reported at once, in file order", "[unit][
       "format_version = 1\n"
       "[eye]\n"
       "kind = \"emmetropic\"\n"
-      "side = \"right\"\n"              // 4: unknown side
+      "side = \"right\"\n"  // 4: unknown side
       "[tamponade]\n"
       "agent = \"silicone_oil_1000\"\n"
-      "fill = 1.5\n"                    // 7: out of range
-      "colour = \"yellow\"\n"           // 8: unknown key
+      "fill = 1.5\n"           // 7: out of range
+      "colour = \"yellow\"\n"  // 8: unknown key
       "[schedule]\n"
       "[[schedule.postures]]\n"
       "name = \"upright\"\n"
-      "duration = 10\n";                // 12: no unit
+      "duration = 10\n";  // 12: no unit
   try {
     (void)protocols::parseProtocolText(text, "many.toml");
     FAIL("accepted");
@@ -261,11 +262,13 @@ TEST_CASE("all problems of a file are reported at once, in file order", "[unit][
 }
 
 TEST_CASE("a missing file or a folder is a ProtocolError naming it", "[unit][protocol]") {
-  CHECK_THROWS_WITH(protocols::parseProtocol(kProtocolDir), Catch::Contains("is a folder, not a protocol file"));
-  CHECK_THROWS_MATCHES(protocols::parseProtocol("/no/such/protocol.toml"), ProtocolError,
-                       Catch::Matchers::Message(
-                           "/no/such/protocol.toml: cannot open the protocol file \u2014 check the path "
-                           "(see data/protocols/ for examples)"));
+  CHECK_THROWS_WITH(protocols::parseProtocol(kProtocolDir),
+                    Catch::Contains("is a folder, not a protocol file"));
+  CHECK_THROWS_MATCHES(
+      protocols::parseProtocol("/no/such/protocol.toml"), ProtocolError,
+      Catch::Matchers::Message(
+          "/no/such/protocol.toml: cannot open the protocol file \u2014 check the path "
+          "(see data/protocols/ for examples)"));
 }
 
 TEST_CASE("values, defaults and locations are kept", "[unit][protocol]") {
@@ -281,7 +284,8 @@ TEST_CASE("values, defaults and locations are kept", "[unit][protocol]") {
   REQUIRE(p.tamponade.viscosity.has_value());
   CHECK(p.tamponade.viscosity->value.kind == protocols::ViscosityKind::kKinematic);
   CHECK(p.tamponade.viscosity->value.value == Approx(1e-3).epsilon(1e-12));
-  CHECK(p.tamponade.contactAngle->value == Approx(18.0 * 3.14159265358979323846 / 180.0).epsilon(1e-12));
+  CHECK(p.tamponade.contactAngle->value ==
+        Approx(18.0 * 3.14159265358979323846 / 180.0).epsilon(1e-12));
   CHECK_FALSE(p.tamponade.density.has_value());  // comes from the library later
   // Preset values fill what the file leaves out; an explicit one wins and keeps its line.
   CHECK(p.accuracy.preset.value == protocols::AccuracyPreset::kDraft);
@@ -298,14 +302,16 @@ TEST_CASE("values, defaults and locations are kept", "[unit][protocol]") {
   CHECK(p.schedule.gravity.value == 9.80665);
   CHECK(p.outputs.folder.value == "runs/values");
   CHECK(p.outputs.report.value);
-  for (const auto& setting : p.effects.settings) CHECK(setting.value == protocols::EffectSetting::kAuto);
+  for (const auto& setting : p.effects.settings)
+    CHECK(setting.value == protocols::EffectSetting::kAuto);
 }
 
 TEST_CASE("an imported mesh is found relative to the protocol file", "[unit][protocol]") {
   const fs::path dir = fs::temp_directory_path() / "tamponade_protocols_test_mesh";
   fs::create_directories(dir / "meshes");
   std::ofstream(dir / "meshes" / "eye.stl") << "solid eye\nendsolid eye\n";
-  const std::string text = withLine(3, "kind = \"mesh\"\nmesh = \"meshes/eye.stl\"\nmesh_units = \"mm\"");
+  const std::string text =
+      withLine(3, "kind = \"mesh\"\nmesh = \"meshes/eye.stl\"\nmesh_units = \"mm\"");
   const protocols::Protocol p = protocols::parseProtocolText(text, dir / "case.toml");
   REQUIRE(p.eye.mesh.has_value());
   CHECK(p.eye.mesh->path.value == (dir / "meshes" / "eye.stl").lexically_normal());
@@ -366,7 +372,8 @@ TEST_CASE("the example protocols say what their names promise", "[unit][protocol
   }
 }
 
-TEST_CASE("custom agent, tissues, gravity direction and forced effects are read", "[unit][protocol][examples]") {
+TEST_CASE("custom agent, tissues, gravity direction and forced effects are read",
+          "[unit][protocol][examples]") {
   const auto p = protocols::parseProtocol(kProtocolDir / "custom_agent_reclined.toml");
   CHECK(p.tamponade.isCustom());
   REQUIRE(p.tamponade.viscosity.has_value());

@@ -60,7 +60,8 @@ ReportInput constructedRun() {
     rb.where = b == 0 ? "12 o'clock, 8 mm from the limbus" : "6 o'clock, 2 mm from the ora";
     const sim::Vec3 centre = in.wallPositions[map.breakWalls[b].front()];
     for (int k = 0; k < 12; ++k)
-      rb.outline.push_back((centre + 1e-3 * sim::Vec3(std::cos(k * 0.52), 0, std::sin(k * 0.52))).normalized() * kR);
+      rb.outline.push_back(
+          (centre + 1e-3 * sim::Vec3(std::cos(k * 0.52), 0, std::sin(k * 0.52))).normalized() * kR);
     in.breaks.push_back(rb);
   }
   ReportOutline ora{"ora serrata", {}, true};
@@ -161,11 +162,13 @@ TEST_CASE("coverage.csv and summary.json hold the frames and the averages", "[un
   int rows = 0;
   while (std::getline(csv, line)) {
     ++rows;
-    CHECK(std::count(line.begin(), line.end(), ',') == std::count(header.begin(), header.end(), ','));
+    CHECK(std::count(line.begin(), line.end(), ',') ==
+          std::count(header.begin(), header.end(), ','));
   }
   CHECK(rows == 3);
   const std::string json = renderSummaryJson(in);
-  CHECK(json.find("\"mean_fraction\": " + formatNumber(in.summary.regions[0], 6)) != std::string::npos);
+  CHECK(json.find("\"mean_fraction\": " + formatNumber(in.summary.regions[0], 6)) !=
+        std::string::npos);
   CHECK(json.find("\"time_covered\": 1, \"covered_at_end\": true") != std::string::npos);
   CHECK(json.find("\"title\": \"Test eye <OD> & 90 % fill\"") != std::string::npos);
   // Bad folder: IoError naming the file.

@@ -35,10 +35,12 @@ std::string eyeProtocol(const std::string& schedule, const std::string& outputs 
                         const std::string& fill = "90 %") {
   return "format_version = 1\ntitle = \"Run control\"\n"
          "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
-         "[[eye.breaks]]\nname = \"superior tear\"\nclock_hour = 12\nposterior_to_limbus = \"14 mm\"\n"
+         "[[eye.breaks]]\nname = \"superior tear\"\nclock_hour = 12\nposterior_to_limbus = \"14 "
+         "mm\"\n"
          "diameter = \"2 mm\"\n"
-         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"" + fill + "\"\n" +
-         schedule + "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n" + outputs;
+         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"" +
+         fill + "\"\n" + schedule +
+         "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n" + outputs;
 }
 
 protocols::RunProgress progressAt(double time, double endTime) {
@@ -65,7 +67,9 @@ TEST_CASE("progress text: ETA, plain line and terminal bar", "[unit][run][progre
   CHECK(progressFraction(progressAt(0.7, 0.5)) == 1.0);  // the last step may overshoot the end
 
   const std::string line = renderProgressLine(progressAt(0.125, 0.5), 20.0);
-  CHECK(line == "progress  25.0 %  t = 0.125 s / 0.5 s  upright  step 1520  elapsed 20 s  ETA 1 min 00 s\n");
+  CHECK(
+      line ==
+      "progress  25.0 %  t = 0.125 s / 0.5 s  upright  step 1520  elapsed 20 s  ETA 1 min 00 s\n");
   CHECK(renderProgressLine(progressAt(0, 0.5), 1.0).find("ETA ?") != std::string::npos);
 
   const std::string bar = renderProgressBar(progressAt(0.125, 0.5), 20.0, 20);
@@ -81,8 +85,8 @@ TEST_CASE("progress text: ETA, plain line and terminal bar", "[unit][run][progre
   CHECK_FALSE(throttle.due(0.05, 1.0));
   CHECK(throttle.due(0.1, 2.0));
   CHECK_FALSE(throttle.due(0.15, 3.0));
-  CHECK(throttle.due(0.16, 33.5));  // slow run: alive after 30 s
-  CHECK(throttle.due(0.45, 34.0));  // a jump prints once...
+  CHECK(throttle.due(0.16, 33.5));        // slow run: alive after 30 s
+  CHECK(throttle.due(0.45, 34.0));        // a jump prints once...
   CHECK_FALSE(throttle.due(0.46, 35.0));  // ...and the next line is due at 50 %
   CHECK(throttle.due(0.5, 36.0));
 }
@@ -128,7 +132,8 @@ TEST_CASE("until steady: a constructed time series", "[unit][run][steady]") {
   CHECK_FALSE(isSteady(slosh, 0.0, c));
 
   // Samples that do not reach back to the window's start (e.g. sparse sampling): not steady.
-  CHECK_FALSE(isSteady(std::vector<SteadySample>{sample(0.15, 1e-6, 0.8), sample(0.3, 1e-6, 0.8)}, 0.0, c));
+  CHECK_FALSE(
+      isSteady(std::vector<SteadySample>{sample(0.15, 1e-6, 0.8), sample(0.3, 1e-6, 0.8)}, 0.0, c));
 }
 
 TEST_CASE("until steady: a settling eye ends its posture before the maximum",
@@ -143,13 +148,15 @@ TEST_CASE("until steady: a settling eye ends its posture before the maximum",
   fs::create_directories(dir);
   std::ofstream(dir / "steady.toml") << eyeProtocol(
       "[schedule]\nsteady_window = \"0.05 s\"\nsteady_coverage_change = \"1 %\"\n"
-      "[[schedule.postures]]\nname = \"supine\"\nduration = \"until steady\"\nmax_duration = \"0.6 s\"\n",
+      "[[schedule.postures]]\nname = \"supine\"\nduration = \"until steady\"\nmax_duration = \"0.6 "
+      "s\"\n",
       "[outputs]\nframe_interval = \"0.05 s\"\n", "100 %");
   const auto r = runTamponade("run steady.toml --out a --threads 1", dir);
   INFO(r.output);
   REQUIRE(r.exitCode == 0);
   std::smatch m;
-  REQUIRE(std::regex_search(r.output, m, std::regex("posture 1 \\(supine\\): steady after ([0-9.e+-]+) s")));
+  REQUIRE(std::regex_search(r.output, m,
+                            std::regex("posture 1 \\(supine\\): steady after ([0-9.e+-]+) s")));
   const double steadyAfter = std::stod(m[1].str());
   CHECK(steadyAfter >= 0.05);
   CHECK(steadyAfter < 0.6);
@@ -175,7 +182,8 @@ TEST_CASE("outputs.fields: only the named fields are written, unknown names are 
   const fs::path dir = fs::temp_directory_path() / "tamponade_fields_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string schedule = "[schedule]\n[[schedule.postures]]\nname = \"supine\"\nduration = \"2 ms\"\n";
+  const std::string schedule =
+      "[schedule]\n[[schedule.postures]]\nname = \"supine\"\nduration = \"2 ms\"\n";
   std::ofstream(dir / "fields.toml") << eyeProtocol(
       schedule, "[outputs]\nframe_interval = \"1 ms\"\nfields = [\"velocity\", \"pressure\"]\n");
   const auto r = runTamponade("run fields.toml --out a --threads 1", dir);
@@ -201,7 +209,8 @@ TEST_CASE("outputs.fields: only the named fields are written, unknown names are 
   INFO(bad.output);
   CHECK(bad.exitCode == 2);
   // [outputs] is line 21 of eyeProtocol's text, fields line 22; "presure" starts at column 23.
-  CHECK(bad.output.find("bad.toml:22:23: outputs.fields: 'presure' is not a particle field") != std::string::npos);
+  CHECK(bad.output.find("bad.toml:22:23: outputs.fields: 'presure' is not a particle field") !=
+        std::string::npos);
   CHECK(bad.output.find("did you mean 'pressure'") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "b"));
   fs::remove_all(dir);
@@ -228,7 +237,8 @@ TEST_CASE("SIGTERM: checkpoint, readable frames, exit 143, resume equals the con
   posix_spawn_file_actions_t actions;
   posix_spawn_file_actions_init(&actions);
   const std::string logPath = (dir / "s.log").string();
-  posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+  posix_spawn_file_actions_addopen(&actions, 1, logPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
+                                   0644);
   posix_spawn_file_actions_adddup2(&actions, 1, 2);
   setenv("OMP_WAIT_POLICY", "passive", 1);
   pid_t child = -1;
@@ -240,7 +250,9 @@ TEST_CASE("SIGTERM: checkpoint, readable frames, exit 143, resume equals the con
   auto gridCount = [&]() {
     const std::string xmf = readText(dir / "s" / "frames.xmf");
     std::size_t count = 0;
-    for (std::size_t at = xmf.find("<Time "); at != std::string::npos; at = xmf.find("<Time ", at + 1)) ++count;
+    for (std::size_t at = xmf.find("<Time "); at != std::string::npos;
+         at = xmf.find("<Time ", at + 1))
+      ++count;
     return count;
   };
   while (gridCount() < 2 && std::chrono::steady_clock::now() < deadline)
@@ -262,18 +274,18 @@ TEST_CASE("SIGTERM: checkpoint, readable frames, exit 143, resume equals the con
   // parses and lists exactly the complete frames.
   REQUIRE(fs::exists(dir / "s" / "checkpoint.h5"));
   {
-  // Closed before the resume: HDF5 shares one open file per process, so a reader kept open here
-  // would show later readers in this process the stopped run's state.
-  const protocols::FrameReader stopped(dir / "s" / "frames.h5");
-  CHECK(stopped.frames().size() >= 2);
-  CHECK(stopped.unreadableFrames().empty());
-  std::string xmf = readText(dir / "s" / "frames.xmf");
-  xmf.erase(0, xmf.find("?>") + 2);  // the checker knows no <?xml ...?> declaration
-  CHECK(protocols_test::checkXml(xmf).empty());
-  CHECK(gridCount() == stopped.frames().size());
-  for (const auto& f : stopped.frames())
-    CHECK(stopped.readField(f.index, "fluid", sim::field::kPosition).rows > 0);
-  CHECK(stopped.frames().back().time < 0.06);  // stopped early, not finished
+    // Closed before the resume: HDF5 shares one open file per process, so a reader kept open here
+    // would show later readers in this process the stopped run's state.
+    const protocols::FrameReader stopped(dir / "s" / "frames.h5");
+    CHECK(stopped.frames().size() >= 2);
+    CHECK(stopped.unreadableFrames().empty());
+    std::string xmf = readText(dir / "s" / "frames.xmf");
+    xmf.erase(0, xmf.find("?>") + 2);  // the checker knows no <?xml ...?> declaration
+    CHECK(protocols_test::checkXml(xmf).empty());
+    CHECK(gridCount() == stopped.frames().size());
+    for (const auto& f : stopped.frames())
+      CHECK(stopped.readField(f.index, "fluid", sim::field::kPosition).rows > 0);
+    CHECK(stopped.frames().back().time < 0.06);  // stopped early, not finished
   }
 
   // Resume, and compare with an uninterrupted run at the same thread count: bit-identical.
@@ -292,12 +304,13 @@ TEST_CASE("SIGTERM: checkpoint, readable frames, exit 143, resume equals the con
   fs::remove_all(dir);
 }
 
-TEST_CASE("the README's default protocol stays a few-minute draft run", "[unit][protocol][examples]") {
+TEST_CASE("the README's default protocol stays a few-minute draft run",
+          "[unit][protocol][examples]") {
   // tools/quickstart.sh runs it; the README promises a few minutes on a 2-core machine (measured
   // 1 min 43 s for 0.68 s simulated at 1.2 mm). That holds only while it stays a draft run with
   // short "until steady" postures: at most 1.2 s simulated, spacing >= 1.2 mm.
-  const protocols::Protocol p =
-      protocols::parseProtocol(fs::path(TAMPONADE_SOURCE_DIR) / "data" / "protocols" / "default_eye.toml");
+  const protocols::Protocol p = protocols::parseProtocol(fs::path(TAMPONADE_SOURCE_DIR) / "data" /
+                                                         "protocols" / "default_eye.toml");
   CHECK(p.accuracy.preset.value == protocols::AccuracyPreset::kDraft);
   CHECK(p.accuracy.particleSpacing.value >= 1.2e-3);
   double total = 0.0;  // [s]

@@ -46,7 +46,8 @@ CommandResult runTamponade(const std::string& arguments, const fs::path& working
   FILE* pipe = popen(command.c_str(), "r");
   REQUIRE(pipe != nullptr);
   std::array<char, 4096> buffer{};
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+    result.output.append(buffer.data(), n);
   const int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
@@ -54,7 +55,8 @@ CommandResult runTamponade(const std::string& arguments, const fs::path& working
 
 }  // namespace
 
-TEST_CASE("tiny protocol assembles: walls with regions, phases with their true masses", "[unit][scenario]") {
+TEST_CASE("tiny protocol assembles: walls with regions, phases with their true masses",
+          "[unit][scenario]") {
   const Protocol p = parseProtocol((kProtocols / "tiny.toml").string());
   // The kFillCavity rule (lattice 1.2 d from the wall, heavier particles), checked on its own
   // here; the default kRelaxedFill has its own test case below.
@@ -86,7 +88,8 @@ TEST_CASE("tiny protocol assembles: walls with regions, phases with their true m
   CHECK(oil.material == "silicone_oil_1000");
   CHECK(oil.volume / (oil.volume + aq.volume) == Approx(0.9).epsilon(1e-9));
   CHECK(oil.volume + aq.volume == Approx(s.cavityVolume).epsilon(1e-9));
-  const PhaseTotals oilTotals = totalsOf(s, oil.materialIndex), aqTotals = totalsOf(s, aq.materialIndex);
+  const PhaseTotals oilTotals = totalsOf(s, oil.materialIndex),
+                    aqTotals = totalsOf(s, aq.materialIndex);
   CHECK(oilTotals.count == oil.count);
   CHECK(aqTotals.count == aq.count);
   // Mass rule kFillCavity: every particle m = rho d^3 f, one factor f for all, such that
@@ -106,8 +109,10 @@ TEST_CASE("tiny protocol assembles: walls with regions, phases with their true m
     ScenarioOptions trueMass;
     trueMass.massRule = MassRule::kTrueMass;
     const Scenario t = assembleScenario(p, trueMass);
-    CHECK(totalsOf(t, t.phases[1].materialIndex).mass == Approx(oil.density * oil.volume).epsilon(1e-12));
-    CHECK(totalsOf(t, t.phases[0].materialIndex).mass == Approx(aq.density * aq.volume).epsilon(1e-12));
+    CHECK(totalsOf(t, t.phases[1].materialIndex).mass ==
+          Approx(oil.density * oil.volume).epsilon(1e-12));
+    CHECK(totalsOf(t, t.phases[0].materialIndex).mass ==
+          Approx(aq.density * aq.volume).epsilon(1e-12));
   }
   // First posture supine: gravity -z; light oil floats, so every oil particle is at least as
   // anterior (z) as every aqueous one.
@@ -159,8 +164,10 @@ TEST_CASE("heavy oil sinks, the physiological sclera stays rigid", "[unit][scena
   double maxOilZ = -1e9, minAqZ = 1e9;
   for (std::size_t i = 0; i < s.world->particles.size(); ++i) {
     const double z = s.world->particles.x[i].z();
-    if (s.world->particles.material[i] == oil.materialIndex) maxOilZ = std::max(maxOilZ, z);
-    else minAqZ = std::min(minAqZ, z);
+    if (s.world->particles.material[i] == oil.materialIndex)
+      maxOilZ = std::max(maxOilZ, z);
+    else
+      minAqZ = std::min(minAqZ, z);
   }
   CHECK(maxOilZ <= minAqZ + s.accuracy.particleSpacing);
   // [eye.sclera] in mode auto with the library's 1.8 MPa: decided rigid (issue 7), no particles.
@@ -173,7 +180,8 @@ TEST_CASE("heavy oil sinks, the physiological sclera stays rigid", "[unit][scena
   // tests/sim/test_solvers_multiphase.cpp), and plan/report say so.
   CHECK(s.world->gravityReferenceDensity == s.phases[0].density);
   bool noted = false;
-  for (const auto& note : s.notes) noted = noted || note.find("gravity acts relative to aqueous") != std::string::npos;
+  for (const auto& note : s.notes)
+    noted = noted || note.find("gravity acts relative to aqueous") != std::string::npos;
   CHECK(noted);
   ScenarioOptions plain = draft;
   plain.removeHydrostaticBackground = false;
@@ -185,16 +193,18 @@ TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenari
   const fs::path dir = fs::temp_directory_path() / "tamponade_scenario_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  const std::string base = "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OS\"\n"
-                           "[tamponade]\nagent = \"silicone_oil_1000\"\n";
-  const std::string rest = "[schedule]\n[[schedule.postures]]\nname = \"upright\"\nduration = \"1 s\"\n"
-                           "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n";
-  std::ofstream(dir / "off.toml") << base << "fill = \"80 %\"\n" << rest
-                                  << "surface_stress = \"symmetric\"\n"
+  const std::string base =
+      "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OS\"\n"
+      "[tamponade]\nagent = \"silicone_oil_1000\"\n";
+  const std::string rest =
+      "[schedule]\n[[schedule.postures]]\nname = \"upright\"\nduration = \"1 s\"\n"
+      "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n";
+  std::ofstream(dir / "off.toml") << base << "fill = \"80 %\"\n"
+                                  << rest << "surface_stress = \"symmetric\"\n"
                                   << "[effects]\nviscosity = false\nimplicit_viscosity = false\n";
   std::ofstream(dir / "full.toml") << base << "fill = 1.0\n" << rest;
-  std::ofstream(dir / "missing.toml") << base << "fill = \"80 %\"\n" << rest
-                                      << "[effects]\ninterfacial_tension = true\n";
+  std::ofstream(dir / "missing.toml") << base << "fill = \"80 %\"\n"
+                                      << rest << "[effects]\ninterfacial_tension = true\n";
   {
     Scenario s = assembleScenario(parseProtocol((dir / "off.toml").string()));
     CHECK(s.pipelineOptions.forced.at("viscosity") == sim::Force::kOff);
@@ -215,7 +225,8 @@ TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenari
     CHECK(t.phases[0].count == 0);
     CHECK(t.phases[1].count == t.world->particles.size());
     bool noted = false;
-    for (const auto& note : t.notes) noted = noted || note.find("one fluid only") != std::string::npos;
+    for (const auto& note : t.notes)
+      noted = noted || note.find("one fluid only") != std::string::npos;
     CHECK(noted);
   }
   // Two phases with the library's sigma: interfacial tension and wall adhesion are chosen; a
@@ -237,7 +248,8 @@ TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenari
   fs::remove_all(dir);
 }
 
-TEST_CASE("tamponade plan: tiny protocol prints counts, stages, memory and estimates", "[unit][scenario][cli]") {
+TEST_CASE("tamponade plan: tiny protocol prints counts, stages, memory and estimates",
+          "[unit][scenario][cli]") {
   const fs::path dir = fs::temp_directory_path() / "tamponade_plan_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -265,18 +277,21 @@ TEST_CASE("tamponade plan: tiny protocol prints counts, stages, memory and estim
   fs::remove_all(dir);
 }
 
-TEST_CASE("tamponade plan: a bad protocol exits 2 with file:line:col and creates nothing", "[unit][scenario][cli]") {
+TEST_CASE("tamponade plan: a bad protocol exits 2 with file:line:col and creates nothing",
+          "[unit][scenario][cli]") {
   const fs::path dir = fs::temp_directory_path() / "tamponade_plan_bad_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
-  std::ofstream(dir / "bad.toml") << "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
-                                     "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = 1.5\n"
-                                     "[schedule]\n[[schedule.postures]]\nname = \"supine\"\n"
-                                     "duration = \"1 s\"\n[outputs]\nfolder = \"out\"\n";
+  std::ofstream(dir / "bad.toml")
+      << "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
+         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = 1.5\n"
+         "[schedule]\n[[schedule.postures]]\nname = \"supine\"\n"
+         "duration = \"1 s\"\n[outputs]\nfolder = \"out\"\n";
   const CommandResult r = runTamponade("plan bad.toml", dir);
   INFO(r.output);
   CHECK(r.exitCode == 2);
-  CHECK(r.output.find("bad.toml:7:8: tamponade.fill = 1.5 is outside the allowed range (0, 1]") != std::string::npos);
+  CHECK(r.output.find("bad.toml:7:8: tamponade.fill = 1.5 is outside the allowed range (0, 1]") !=
+        std::string::npos);
   CHECK(r.output.find("nothing was run") != std::string::npos);
   CHECK(!fs::exists(dir / "out"));
   CHECK(runTamponade("plan", dir).exitCode == 2);  // usage
@@ -312,7 +327,8 @@ TEST_CASE("plan cost model scales particles and steps by the spacing", "[unit][s
   // Particle counts scale as (d / d_preset)^3 from the scenario's own spacing.
   const double d = s.accuracy.particleSpacing;
   for (const PresetEstimate& e : plan.presets) {
-    CHECK(e.particles == Approx(plan.dynamicParticles * std::pow(d / e.particleSpacing, 3)).epsilon(1e-12));
+    CHECK(e.particles ==
+          Approx(plan.dynamicParticles * std::pow(d / e.particleSpacing, 3)).epsilon(1e-12));
     CHECK(e.seconds == Approx(e.steps * e.particles * plan.secondsPerParticleStep).epsilon(1e-12));
     CHECK(e.steps == std::ceil(plan.simulatedDuration / e.timeStep));
   }

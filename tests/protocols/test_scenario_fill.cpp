@@ -55,7 +55,8 @@ double deepestPenetration(const Scenario& s) {
       const double r = (w.particles.x[i] - w.walls.x[b]).squaredNorm();
       if (r < best) best = r, nearest = b;
     }
-    deepest = std::max(deepest, (w.particles.x[i] - w.walls.x[nearest]).dot(w.walls.normal[nearest]));
+    deepest =
+        std::max(deepest, (w.particles.x[i] - w.walls.x[nearest]).dot(w.walls.normal[nearest]));
   }
   return deepest / w.particleSpacing();
 }
@@ -164,7 +165,8 @@ TEST_CASE("default fill: rest-mass particles hold the cavity minus the wall shel
   const FluidPhase& oil = s.phases[1];
   // Every particle carries rho d^3: no compression built into the masses.
   for (std::size_t i = 0; i < w.particles.size(); ++i)
-    CHECK(w.particles.mass[i] == Approx(w.restDensityOf(static_cast<sim::Index>(i)) * d * d * d).epsilon(1e-14));
+    CHECK(w.particles.mass[i] ==
+          Approx(w.restDensityOf(static_cast<sim::Index>(i)) * d * d * d).epsilon(1e-14));
   // Volumes held: N d^3 against V - A d/2, the fluid's share of the cavity with Akinci walls
   // (the wall particles' volumes stand for the d/2 shell). A lattice cut at gap g holds
   // V - A g on average over lattice offsets (sample_volume.h); on one offset the staircase along
@@ -173,7 +175,8 @@ TEST_CASE("default fill: rest-mass particles hold the cavity minus the wall shel
   const double held = static_cast<double>(oil.count + aq.count) * d * d * d;  // [m^3]
   WARN("held / (V - A d/2) = " << s.heldVolumeRatio << ", held / V = " << held / s.cavityVolume
                                << ", N = " << oil.count + aq.count);
-  CHECK(s.heldVolumeRatio == Approx(held / (s.cavityVolume - 0.5 * d * s.cavityArea)).epsilon(1e-12));
+  CHECK(s.heldVolumeRatio ==
+        Approx(held / (s.cavityVolume - 0.5 * d * s.cavityArea)).epsilon(1e-12));
   CHECK(std::abs(s.heldVolumeRatio - 1.0) < 0.05);
   // Phases: the oil holds the fill fraction of the particles to one particle.
   const double share = static_cast<double>(oil.count) / static_cast<double>(oil.count + aq.count);
@@ -181,13 +184,15 @@ TEST_CASE("default fill: rest-mass particles hold the cavity minus the wall shel
   // Start density after the shifting pass.
   const FractionStats c = fractionStats(s);
   WARN("t = 0: C mean " << c.mean << ", max " << c.max << " (scenario: " << s.startMeanFraction
-                        << ", " << s.startMaxFraction << "), penetration " << deepestPenetration(s));
+                        << ", " << s.startMaxFraction << "), penetration "
+                        << deepestPenetration(s));
   CHECK(c.mean == Approx(s.startMeanFraction).epsilon(1e-12));
   CHECK(s.fillCompression == Approx(s.startMeanFraction).epsilon(1e-12));
   CHECK(deepestPenetration(s) < 0.0);
 }
 
-TEST_CASE("default fill: INDSPH steps the tiny protocol, finite and inside the wall", "[stability][scenario]") {
+TEST_CASE("default fill: INDSPH steps the tiny protocol, finite and inside the wall",
+          "[stability][scenario]") {
   const Protocol p = singleLayer(parseProtocol((kProtocols / "tiny.toml").string()));
   Scenario s = assembleScenario(p);
   s.pipelineOptions.solver = "indsph";

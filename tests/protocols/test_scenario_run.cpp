@@ -28,13 +28,15 @@ struct CommandResult {
 CommandResult runTamponade(const std::string& arguments, const fs::path& workingDirectory) {
   // Passive OpenMP waiting: the CI machine is shared, and spinning threads that wait for a
   // descheduled one made steps 100x slower there (protocols/scenario/README.md).
-  const std::string command = "cd '" + workingDirectory.string() + "' && OMP_WAIT_POLICY=passive '" +
-                              TAMPONADE_EXECUTABLE "' " + arguments + " 2>&1";
+  const std::string command = "cd '" + workingDirectory.string() +
+                              "' && OMP_WAIT_POLICY=passive '" + TAMPONADE_EXECUTABLE "' " +
+                              arguments + " 2>&1";
   CommandResult result{-1, {}};
   FILE* pipe = popen(command.c_str(), "r");
   REQUIRE(pipe != nullptr);
   std::array<char, 4096> buffer{};
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+    result.output.append(buffer.data(), n);
   const int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
@@ -56,7 +58,8 @@ void checkSameFrames(const fs::path& continuousFile, const fs::path& restartedFi
     CHECK(continuous.frames()[f].step == restarted.frames()[f].step);
     CHECK(continuous.frames()[f].time == restarted.frames()[f].time);
     for (const char* field : {sim::field::kPosition, sim::field::kVelocity})
-      CHECK(continuous.readField(f, "fluid", field).reals == restarted.readField(f, "fluid", field).reals);
+      CHECK(continuous.readField(f, "fluid", field).reals ==
+            restarted.readField(f, "fluid", field).reals);
   }
 }
 
@@ -144,7 +147,8 @@ TEST_CASE("tamponade run: a short protocol writes frames, series and a well-form
 
   // Stopped at step 48 (as by Ctrl-C: checkpoint, exit 1, no report), then resumed: the same
   // coverage and the same particle states in every frame as the uninterrupted run, bit for bit.
-  const CommandResult stopped = runTamponade("run short.toml --out s --threads 1 --stop-after-steps 48", dir);
+  const CommandResult stopped =
+      runTamponade("run short.toml --out s --threads 1 --stop-after-steps 48", dir);
   INFO(stopped.output);
   CHECK(stopped.exitCode == 1);
   CHECK(stopped.output.find("tamponade run --resume s") != std::string::npos);
@@ -173,8 +177,10 @@ TEST_CASE("tamponade run: a short protocol writes frames, series and a well-form
   fs::remove_all(dir);
 }
 
-TEST_CASE("tamponade run: an INDSPH run stopped twice and resumed ends bit-identical to the uninterrupted one",
-          "[unit][scenario][cli]") {
+TEST_CASE(
+    "tamponade run: an INDSPH run stopped twice and resumed ends bit-identical to the "
+    "uninterrupted one",
+    "[unit][scenario][cli]") {
   // INDSPH keeps state between steps (warm-start pressures, the implicit viscosity's previous
   // solution, the adaptive dt); a checkpoint that missed any of it would change the resumed
   // run's steps and so its last frame. Stopped at step 16 (supine) and 32 (upright).
@@ -186,11 +192,13 @@ TEST_CASE("tamponade run: an INDSPH run stopped twice and resumed ends bit-ident
   INFO(whole.output);
   REQUIRE(whole.exitCode == 0);
   CHECK(whole.output.find("run finished: 33 steps") != std::string::npos);
-  const CommandResult first = runTamponade("run ind.toml --out s --threads 1 --stop-after-steps 16", dir);
+  const CommandResult first =
+      runTamponade("run ind.toml --out s --threads 1 --stop-after-steps 16", dir);
   INFO(first.output);
   CHECK(first.exitCode == 1);
   CHECK(first.output.find("(step 16)") != std::string::npos);
-  const CommandResult second = runTamponade("run --resume s --threads 1 --stop-after-steps 32", dir);
+  const CommandResult second =
+      runTamponade("run --resume s --threads 1 --stop-after-steps 32", dir);
   INFO(second.output);
   CHECK(second.exitCode == 1);
   CHECK(second.output.find("(step 32)") != std::string::npos);

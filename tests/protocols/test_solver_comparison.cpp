@@ -48,13 +48,19 @@ TEST_CASE("bench solvers: CSV and markdown tables from made-up runs", "[unit][be
         "number_density,1:3,1024,no,0.0125,a particle left the tank; at the ;top;,0.0125,2,0.00025,"
         "0.0035,7.5,1.02,1.04,0.985,0.25,1.5,120\n");
   const std::string md = protocols::solverComparisonMarkdown(runs);
-  CHECK(md.find("| indsph | 1:75 | yes | 2.50e-04 / 3.50e-03 | 7.5 | 1.02 / 1.04 | 0.985 | 0.25 | 5 |") != std::string::npos);
-  CHECK(md.find("| number_density | 1:3 | no (0.0125 s: a particle left the tank") != std::string::npos);
+  CHECK(
+      md.find(
+          "| indsph | 1:75 | yes | 2.50e-04 / 3.50e-03 | 7.5 | 1.02 / 1.04 | 0.985 | 0.25 | 5 |") !=
+      std::string::npos);
+  CHECK(md.find("| number_density | 1:3 | no (0.0125 s: a particle left the tank") !=
+        std::string::npos);
   CHECK(protocols::runFileStem(runs[0]) == "indsph_1-75");
   CHECK(protocols::compressionSeriesCsv(runs[0]) ==
-        "time_s,step,average_compression,max_compression\n0.001,1,0.0001,0.002\n0.002,2,0.0004,0.005\n");
+        "time_s,step,average_compression,max_compression\n0.001,1,0.0001,0.002\n0.002,2,0.0004,0."
+        "005\n");
   CHECK(protocols::iterationSeriesCsv(runs[0]) ==
-        "time_s,step,iterations,cumulative_iterations,interface_gap_d\n0.001,1,5,5,1\n0.002,2,10,15,1.04\n");
+        "time_s,step,iterations,cumulative_iterations,interface_gap_d\n0.001,1,5,5,1\n0.002,2,10,"
+        "15,1.04\n");
 
   const auto dir = std::filesystem::temp_directory_path() / "tamponade_bench_tables";
   std::filesystem::remove_all(dir);

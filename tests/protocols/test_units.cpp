@@ -75,8 +75,11 @@ struct BadQuantity {
 const BadQuantity kBad[] = {
     {"12", Dimension::kLength, {"has no unit", "length units: m, cm, mm"}},
     {"18", Dimension::kAngle, {"has no unit", "deg"}},
-    {"12 kPa", Dimension::kLength, {"'kPa' in \"12 kPa\" is a unit of pressure", "but a length is expected"}},
-    {"1000 cSt", Dimension::kDynamicViscosity,
+    {"12 kPa",
+     Dimension::kLength,
+     {"'kPa' in \"12 kPa\" is a unit of pressure", "but a length is expected"}},
+    {"1000 cSt",
+     Dimension::kDynamicViscosity,
      {"is a unit of kinematic viscosity", "but a dynamic viscosity is expected"}},
     {"970 mPa s", Dimension::kKinematicViscosity, {"unit of dynamic viscosity", "kinematic"}},
     {"90 %", Dimension::kLength, {"unit of fraction", "length"}},
@@ -134,7 +137,8 @@ TEST_CASE("every unit converts back to itself and belongs to one dimension", "[u
     INFO(u.symbol);
     CHECK(protocols::findUnit(u.symbol) == &u);  // symbols are unique
     CHECK(u.toSi > 0.0);
-    CHECK(parseQuantity("2 " + std::string(u.symbol), u.dimension) == Approx(2.0 * u.toSi).epsilon(1e-15));
+    CHECK(parseQuantity("2 " + std::string(u.symbol), u.dimension) ==
+          Approx(2.0 * u.toSi).epsilon(1e-15));
   }
 }
 

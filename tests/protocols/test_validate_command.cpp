@@ -26,7 +26,8 @@ Result runTamponade(const std::string& arguments, const fs::path& workingDirecto
   FILE* pipe = popen(command.c_str(), "r");
   REQUIRE(pipe != nullptr);
   std::array<char, 4096> buffer{};
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe)) result.output.append(buffer.data(), n);
+  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
+    result.output.append(buffer.data(), n);
   const int status = pclose(pipe);
   result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return result;
@@ -34,7 +35,8 @@ Result runTamponade(const std::string& arguments, const fs::path& workingDirecto
 
 }  // namespace
 
-TEST_CASE("tamponade validate: bad protocol exits 2 with file:line:column", "[unit][protocol][cli]") {
+TEST_CASE("tamponade validate: bad protocol exits 2 with file:line:column",
+          "[unit][protocol][cli]") {
   const fs::path dir = fs::temp_directory_path() / "tamponade_validate_cli_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
@@ -62,7 +64,8 @@ TEST_CASE("tamponade validate: bad protocol exits 2 with file:line:column", "[un
   fs::remove_all(dir);
 }
 
-TEST_CASE("tamponade validate: good protocol exits 0 and prints SI values", "[unit][protocol][cli]") {
+TEST_CASE("tamponade validate: good protocol exits 0 and prints SI values",
+          "[unit][protocol][cli]") {
   const fs::path dir = fs::path(TAMPONADE_SOURCE_DIR) / "data" / "protocols";
   const Result r = runTamponade("validate emmetropic_superior_break.toml", dir);
   INFO(r.output);
@@ -79,5 +82,6 @@ TEST_CASE("tamponade validate: usage errors exit 2", "[unit][protocol][cli]") {
   CHECK(runTamponade("validate --help", dir).exitCode == 0);
   const Result missing = runTamponade("validate /no/such/file.toml", dir);
   CHECK(missing.exitCode == 2);
-  CHECK(missing.output.find("/no/such/file.toml: cannot open the protocol file") != std::string::npos);
+  CHECK(missing.output.find("/no/such/file.toml: cannot open the protocol file") !=
+        std::string::npos);
 }

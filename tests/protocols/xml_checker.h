@@ -17,7 +17,8 @@ inline std::string checkXml(const std::string& text) {
   int roots = 0;
   auto fail = [&](const std::string& what) { return "offset " + std::to_string(i) + ": " + what; };
   auto isNameChar = [](char c) {
-    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == ':' || c == '.';
+    return std::isalnum(static_cast<unsigned char>(c)) || c == '-' || c == '_' || c == ':' ||
+           c == '.';
   };
   auto checkEntity = [&](std::size_t& k) -> bool {  // text[k] == '&'
     const std::size_t semi = text.find(';', k);
@@ -57,7 +58,8 @@ inline std::string checkXml(const std::string& text) {
         while (k < text.size() && std::isspace(static_cast<unsigned char>(text[k]))) ++k;
         if (k >= text.size() || text[k] != '>') return fail("bad end tag </" + name);
         if (open.empty() || open.back() != name)
-          return fail("</" + name + "> closes <" + (open.empty() ? std::string("nothing") : open.back()) + ">");
+          return fail("</" + name + "> closes <" +
+                      (open.empty() ? std::string("nothing") : open.back()) + ">");
         open.pop_back();
         i = k + 1;
         continue;
@@ -81,7 +83,8 @@ inline std::string checkXml(const std::string& text) {
         k += 2;
         while (k < text.size() && text[k] != quote) {
           if (text[k] == '<') return fail("'<' in attribute " + attribute);
-          if (text[k] == '&' && !checkEntity(k)) return fail("bad entity in attribute " + attribute);
+          if (text[k] == '&' && !checkEntity(k))
+            return fail("bad entity in attribute " + attribute);
           ++k;
         }
         if (k >= text.size()) return fail("unterminated attribute " + attribute);

@@ -5,10 +5,10 @@
 // collapses (a dam break, speeds of tenths of m/s, where the CFL step approaches the explicit
 // limit); scene "shear": a cube of oil between two plates, no gravity, with a decaying sinusoidal
 // shear profile (slow flow without the pressure solver's jitter at rest under gravity, so the step
-// is the CFL one and the comparison isolates the viscosity treatment). For each particle count and each treatment it runs the same simulated time and writes
-// bench_viscosity.csv and bench_viscosity.md: steps, mean dt, wall time per step and per simulated
-// second, the viscosity stage's share and the mean CG iterations. Numbers depend on the machine
-// and its load.
+// is the CFL one and the comparison isolates the viscosity treatment). For each particle count and
+// each treatment it runs the same simulated time and writes bench_viscosity.csv and
+// bench_viscosity.md: steps, mean dt, wall time per step and per simulated second, the viscosity
+// stage's share and the mean CG iterations. Numbers depend on the machine and its load.
 //
 // usage: sim_bench_viscosity [--particles 10000,30000] [--viscosity 1e-3] [--time 0.05]
 //                            [--scene settle|collapse|shear] [--out DIR]
@@ -36,12 +36,12 @@ struct BenchRow {
   std::size_t particles = 0;
   long steps = 0;
   long rejected = 0;
-  double meanDt = 0;           // [s]
-  double wallSeconds = 0;      // [s]
-  double viscositySeconds = 0; // [s] time in the viscosity stage
-  double cgIterations = 0;     // mean per solve (implicit only)
-  double simulated = 0;        // [s]
-  std::string failure;         // empty, or why the run stopped (an unstable run is a result too)
+  double meanDt = 0;            // [s]
+  double wallSeconds = 0;       // [s]
+  double viscositySeconds = 0;  // [s] time in the viscosity stage
+  double cgIterations = 0;      // mean per solve (implicit only)
+  double simulated = 0;         // [s]
+  std::string failure;          // empty, or why the run stopped (an unstable run is a result too)
 };
 
 // Builds the scene into `w` (see the file comment). Column sizes are whole numbers of spacings so
@@ -66,9 +66,11 @@ void buildScene(World& w, const std::string& scene, long targetParticles, Real n
       }
     addFluidBlock(w, Vec3(0, gap + 0.5 * d, 0), Vec3(length, height - gap - 0.5 * d, length), d, 0);
     for (Index i = 0; i < w.particles.size(); ++i)
-      w.particles.v[i] = Vec3(0.01 * std::sin(3.14159265358979 * w.particles.x[i].y() / height), 0, 0);
+      w.particles.v[i] =
+          Vec3(0.01 * std::sin(3.14159265358979 * w.particles.x[i].y() / height), 0, 0);
   } else {
-    const int columns = static_cast<int>(std::lround(std::cbrt(static_cast<Real>(targetParticles) / 1.5)));
+    const int columns =
+        static_cast<int>(std::lround(std::cbrt(static_cast<Real>(targetParticles) / 1.5)));
     const Real a = columns * d;  // column a x 1.5a x a
     TankSpec tank;
     tank.innerMax = Vec3((scene == "collapse" ? 2 * a : a) + 2 * gap, 2 * a, a + 2 * gap);
@@ -79,7 +81,7 @@ void buildScene(World& w, const std::string& scene, long targetParticles, Real n
 }
 
 WorldParameters sceneParameters(const std::string& scene, long targetParticles) {
-  const Real d = 0.002;  // [m]
+  const Real d = 0.002;                                                              // [m]
   const Real size = 2 * std::cbrt(static_cast<Real>(targetParticles)) * d + 20 * d;  // generous
   WorldParameters params;
   params.particleSpacing = d;
@@ -140,17 +142,24 @@ int main(int argc, char** argv) {
   try {
     for (int k = 1; k + 1 < argc; k += 2) {
       const std::string key = argv[k], value = argv[k + 1];
-      if (key == "--particles") particles = parseList(value);
-      else if (key == "--viscosity") nu = std::stod(value);
-      else if (key == "--time") simulatedTime = std::stod(value);
-      else if (key == "--out") out = value;
+      if (key == "--particles")
+        particles = parseList(value);
+      else if (key == "--viscosity")
+        nu = std::stod(value);
+      else if (key == "--time")
+        simulatedTime = std::stod(value);
+      else if (key == "--out")
+        out = value;
       else if (key == "--scene" && (value == "settle" || value == "collapse" || value == "shear"))
         scene = value;
-      else throw std::invalid_argument("unknown option " + key);
+      else
+        throw std::invalid_argument("unknown option " + key);
     }
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "sim_bench_viscosity: %s\nusage: sim_bench_viscosity [--particles N,M] "
-                         "[--viscosity M2_PER_S] [--time S] [--scene settle|collapse|shear] [--out DIR]\n", e.what());
+    std::fprintf(stderr,
+                 "sim_bench_viscosity: %s\nusage: sim_bench_viscosity [--particles N,M] "
+                 "[--viscosity M2_PER_S] [--time S] [--scene settle|collapse|shear] [--out DIR]\n",
+                 e.what());
     return 2;
   }
   std::vector<BenchRow> rows;
@@ -159,11 +168,11 @@ int main(int argc, char** argv) {
       for (bool implicitViscosity : {false, true}) {
         rows.push_back(runOne(scene, n, nu, simulatedTime, implicitViscosity));
         const BenchRow& r = rows.back();
-        std::printf("%-26s %7zu particles: %5ld steps (%ld rejected), dt %.2e s, %.3f s/step, "
-                    "viscosity %.0f %%, CG %.1f\n",
-                    r.treatment.c_str(), r.particles, r.steps, r.rejected, r.meanDt,
-                    r.wallSeconds / r.steps, 100 * r.viscositySeconds / r.wallSeconds,
-                    r.cgIterations);
+        std::printf(
+            "%-26s %7zu particles: %5ld steps (%ld rejected), dt %.2e s, %.3f s/step, "
+            "viscosity %.0f %%, CG %.1f\n",
+            r.treatment.c_str(), r.particles, r.steps, r.rejected, r.meanDt,
+            r.wallSeconds / r.steps, 100 * r.viscositySeconds / r.wallSeconds, r.cgIterations);
         if (!r.failure.empty()) std::printf("  FAILED %s\n", r.failure.c_str());
         std::fflush(stdout);
       }
@@ -178,10 +187,13 @@ int main(int argc, char** argv) {
   }
   csv << "treatment,particles,steps,rejected,mean_dt_s,wall_s,s_per_step,wall_s_per_simulated_s,"
          "viscosity_share,cg_iterations,failure\n";
-  md << "Viscosity benchmark, scene '" << scene << "': silicone oil (nu = " << nu << " m^2/s, d = 2 mm), DFSPH, "
-     << simulatedTime << " s simulated, " << omp_get_max_threads() << " thread(s).\n\n"
-     << "| treatment | particles | steps | rejected | mean dt [s] | s/step | wall s per simulated s "
-        "| viscosity share | CG iterations | failure |\n|---|---|---|---|---|---|---|---|---|---|\n";
+  md << "Viscosity benchmark, scene '" << scene << "': silicone oil (nu = " << nu
+     << " m^2/s, d = 2 mm), DFSPH, " << simulatedTime << " s simulated, " << omp_get_max_threads()
+     << " thread(s).\n\n"
+     << "| treatment | particles | steps | rejected | mean dt [s] | s/step | wall s per simulated "
+        "s "
+        "| viscosity share | CG iterations | failure "
+        "|\n|---|---|---|---|---|---|---|---|---|---|\n";
   for (const auto& r : rows) {
     const double perStep = r.wallSeconds / r.steps, perSimulated = r.wallSeconds / r.simulated;
     csv << r.treatment << ',' << r.particles << ',' << r.steps << ',' << r.rejected << ','

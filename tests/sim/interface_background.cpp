@@ -84,7 +84,8 @@ TEST_CASE("background_pressure stays off where a free surface exists", "[unit][i
   addTankWalls(w, tank, d);
   const Real gap = (testing::kWallGap - 0.5) * d;
   addFluidBlock(w, Vec3::Constant(gap), Vec3(gap + 9 * d, gap + 5 * d, gap + 9 * d), d, aqueous);
-  addFluidBlock(w, Vec3(gap, gap + 5 * d, gap), Vec3(gap + 9 * d, gap + 10 * d, gap + 9 * d), d, oil);
+  addFluidBlock(w, Vec3(gap, gap + 5 * d, gap), Vec3(gap + 9 * d, gap + 10 * d, gap + 9 * d), d,
+                oil);
   w.initialize();
   // The top layer has 0.85 of the rest number density (a half-space of the lattice), below the
   // rule's 0.9; its 6 x 6 particles without a side-wall neighbour are counted.
@@ -103,11 +104,13 @@ TEST_CASE("background_pressure stays off where a free surface exists", "[unit][i
   CHECK_FALSE(assemblePipeline(*closed.world, o).hasStage("background_pressure"));
 }
 
-TEST_CASE("background_pressure's time-step limit is 0.2 h / sqrt(p_bg / rho)", "[unit][interface]") {
+TEST_CASE("background_pressure's time-step limit is 0.2 h / sqrt(p_bg / rho)",
+          "[unit][interface]") {
   auto scene = closedDroplet();
   const BackgroundPressure stage(160.0, 985.0);
   CHECK(stage.maxTimeStep(*scene.world) ==
-        Approx(kBackgroundCourant * scene.world->supportRadius() / std::sqrt(160.0 / 985.0)).epsilon(1e-12));
+        Approx(kBackgroundCourant * scene.world->supportRadius() / std::sqrt(160.0 / 985.0))
+            .epsilon(1e-12));
   CHECK_THROWS_AS(BackgroundPressure(0.0, 985.0), SimError);
   CHECK_THROWS_AS(BackgroundPressure(-1.0, 985.0), SimError);
 }
@@ -120,7 +123,8 @@ constexpr Real kDt = 1e-4;  // [s]
 void applyStage(World& w, BackgroundPressure& stage) {
   std::vector<Real> delta;
   computeNumberDensities(w, delta);
-  for (Index i = 0; i < w.particles.size(); ++i) w.particles.density[i] = w.particles.mass[i] * delta[i];
+  for (Index i = 0; i < w.particles.size(); ++i)
+    w.particles.density[i] = w.particles.mass[i] * delta[i];
   stage.attach(w);
   stage.apply(w, StepContext{kDt});
   // The stage writes the transport correction dv = dt a_bg; the tests read a_bg = dv / dt.

@@ -115,7 +115,8 @@ int oscillation(testing::OscillationSpec o, const std::string& csv) {
   if (!csv.empty()) {
     FILE* f = std::fopen(csv.c_str(), "w");
     if (f == nullptr) {
-      std::fprintf(stderr, "oscillation: cannot write csv=%s (check the folder exists)\n", csv.c_str());
+      std::fprintf(stderr, "oscillation: cannot write csv=%s (check the folder exists)\n",
+                   csv.c_str());
       return 1;
     }
     std::fprintf(f, "t_s,Q_m2\n");
@@ -349,11 +350,11 @@ int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDe
   pipeline.attach(w);
   const Real expected = lens ? testing::lensCoverage(scene.oilVolumeFraction, theta).coverage
                              : testing::flatCoverage(scene.oilVolumeFraction);
-  std::printf("cavity %s: Rs %.1f mm, d = Rs/%.0f, %zu fluid + %zu wall particles, oil fraction "
-              "%.4f, closed-form coverage %.4f (flat start %.4f)\n",
-              lens ? "lens" : "flat", s.cavityRadius * 1e3, perR, w.particles.size(),
-              w.walls.size(), scene.oilVolumeFraction, expected,
-              testing::flatCoverage(scene.oilVolumeFraction));
+  std::printf(
+      "cavity %s: Rs %.1f mm, d = Rs/%.0f, %zu fluid + %zu wall particles, oil fraction "
+      "%.4f, closed-form coverage %.4f (flat start %.4f)\n",
+      lens ? "lens" : "flat", s.cavityRadius * 1e3, perR, w.particles.size(), w.walls.size(),
+      scene.oilVolumeFraction, expected, testing::flatCoverage(scene.oilVolumeFraction));
   const auto t0 = std::chrono::steady_clock::now();
   Real next = 0;
   while (w.time < tEnd) {
@@ -361,10 +362,11 @@ int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDe
     if (w.time >= next) {
       const auto m = testing::measureCavity(scene, s.cavityRadius);
       const Vec3 c = centreOfMaterial(w, scene.oil);
-      std::printf("  t = %.4f s  coverage %.4f (Shepard %.4f, dry %.4f)  angle %.1f deg  oil centre "
-                  "(%.2f %.2f %.2f) mm  wall %.1f s\n",
-                  w.time, m.coverage, m.shepardCoverage, m.dry, m.angle, c.x() * 1e3, c.y() * 1e3,
-                  c.z() * 1e3, seconds(t0));
+      std::printf(
+          "  t = %.4f s  coverage %.4f (Shepard %.4f, dry %.4f)  angle %.1f deg  oil centre "
+          "(%.2f %.2f %.2f) mm  wall %.1f s\n",
+          w.time, m.coverage, m.shepardCoverage, m.dry, m.angle, c.x() * 1e3, c.y() * 1e3,
+          c.z() * 1e3, seconds(t0));
       std::fflush(stdout);
       next += tEnd / 20;
     }
@@ -388,11 +390,12 @@ int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDe
     }
     centre /= volume;
     const Real rEff = std::cbrt(3 * volume / (4 * std::numbers::pi));
-    std::printf("bulk interface at y = %.3f mm (%d points), fluid centre y = %.3f mm, R_eff = %.3f "
-                "mm: (y - c) / R_eff = %.3f, hydrostatics %.3f\n",
-                count ? ySum / count * 1e3 : 0.0, count, centre.y() * 1e3, rEff * 1e3,
-                count ? (ySum / count - centre.y()) / rEff : 0.0,
-                1 - 2 * testing::flatCoverage(scene.oilVolumeFraction));
+    std::printf(
+        "bulk interface at y = %.3f mm (%d points), fluid centre y = %.3f mm, R_eff = %.3f "
+        "mm: (y - c) / R_eff = %.3f, hydrostatics %.3f\n",
+        count ? ySum / count * 1e3 : 0.0, count, centre.y() * 1e3, rEff * 1e3,
+        count ? (ySum / count - centre.y()) / rEff : 0.0,
+        1 - 2 * testing::flatCoverage(scene.oilVolumeFraction));
   }
   // Where the contact line lies on the wall: histogram of nearest-oil wall particles by height.
   {
@@ -400,8 +403,8 @@ int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDe
     const int bins = static_cast<int>(2 * perR);
     std::vector<int> oilWall(bins, 0), allWall(bins, 0);
     for (std::size_t b = 0; b < nearest.size(); ++b) {
-      const int k = std::clamp(
-          static_cast<int>((w.walls.x[b].y() + s.cavityRadius) / s.spacing), 0, bins - 1);
+      const int k = std::clamp(static_cast<int>((w.walls.x[b].y() + s.cavityRadius) / s.spacing), 0,
+                               bins - 1);
       ++allWall[k];
       if (nearest[b] == scene.oil) ++oilWall[k];
     }
@@ -413,8 +416,8 @@ int cavity(bool lens, Real theta, Real tEnd, Real perR, Real tiltDeg, Real oilDe
   const int slabs = static_cast<int>(2 * perR);
   std::vector<int> oilCount(slabs, 0), aqueousCount(slabs, 0);
   for (Index i = 0; i < w.particles.size(); ++i) {
-    const int k = std::clamp(
-        static_cast<int>((w.particles.x[i].y() + s.cavityRadius) / s.spacing), 0, slabs - 1);
+    const int k = std::clamp(static_cast<int>((w.particles.x[i].y() + s.cavityRadius) / s.spacing),
+                             0, slabs - 1);
     (w.particles.material[i] == scene.oil ? oilCount : aqueousCount)[k]++;
   }
   for (int k = slabs - 1; k >= 0; --k)
@@ -561,10 +564,11 @@ int main(int argc, char** argv) {
     if (argc > 6) c.jitter = std::atof(argv[6]);
     if (argc > 7) c.depthPerD = std::atof(argv[7]);
     const testing::MeniscusResult r = testing::runMeniscus(c);
-    std::printf("meniscus: requested %.1f deg, H = %.0f d: measured %.1f deg (mean of the last "
-                "fifth; %.1f at the end) after %.3f s; %zu particles, %ld steps, wall %.1f s%s\n",
-                c.theta, c.gapPerD, r.angle, r.finalAngle, c.tEnd, r.particles, r.steps,
-                r.seconds, r.finite ? "" : " (NOT FINITE)");
+    std::printf(
+        "meniscus: requested %.1f deg, H = %.0f d: measured %.1f deg (mean of the last "
+        "fifth; %.1f at the end) after %.3f s; %zu particles, %ld steps, wall %.1f s%s\n",
+        c.theta, c.gapPerD, r.angle, r.finalAngle, c.tEnd, r.particles, r.steps, r.seconds,
+        r.finite ? "" : " (NOT FINITE)");
     return r.finite ? 0 : 1;
   }
   if (argc >= 3 && std::strcmp(argv[1], "ridge") == 0) {

@@ -17,9 +17,9 @@ using namespace sim;
 
 namespace {
 
-constexpr Real kCavityRadius = 0.003;           // [m] Rs: a small sphere keeps the test cheap
-constexpr Real kSpacing = kCavityRadius / 8;    // [m] d = Rs / 8: 1631 fluid, 804 wall particles
-constexpr Real kStartFraction = 0.3;            // [1] nominal oil volume fraction of the start cut
+constexpr Real kCavityRadius = 0.003;         // [m] Rs: a small sphere keeps the test cheap
+constexpr Real kSpacing = kCavityRadius / 8;  // [m] d = Rs / 8: 1631 fluid, 804 wall particles
+constexpr Real kStartFraction = 0.3;          // [1] nominal oil volume fraction of the start cut
 
 // Resolution tolerance on the coverage. The nearest-fluid classification places the contact
 // line on the wall to within one wall-particle spacing d, and the interface itself is resolved
@@ -38,10 +38,10 @@ struct CavityResult {
 };
 
 struct CavityCase {
-  bool lens = true;     // (a) lens without gravity, else (b) flat without tension
-  Real theta = 90;      // [deg] through the oil, case (a)
-  Real tiltDeg = 0;     // [deg] the start cut's normal tilted from +y (the closed-form axis)
-  Real tEnd = 0.08;     // [s]
+  bool lens = true;        // (a) lens without gravity, else (b) flat without tension
+  Real theta = 90;         // [deg] through the oil, case (a)
+  Real tiltDeg = 0;        // [deg] the start cut's normal tilted from +y (the closed-form axis)
+  Real tEnd = 0.08;        // [s]
   Real sampleFrom = 0.05;  // [s]
   const char* solver = "wcsph";
   // [1] mass above rest density: WCSPH's Tait clamp at p = 0 then never acts; an incompressible
@@ -64,7 +64,7 @@ CavityResult runCavity(const CavityCase& c) {
   s.oilAxis = Vec3(std::sin(tilt), std::cos(tilt), 0);
   s.massExcess = c.massExcess;
   PipelineOptions options;
-  options.solver = c.solver;  // not DFSPH: its rest state is not calm yet (docs/interface.md)
+  options.solver = c.solver;     // not DFSPH: its rest state is not calm yet (docs/interface.md)
   options.wallFriction = false;  // free slip: a no-slip wall pins a contact line (Huh-Scriven)
   options.wcsph.artificialViscosity = 0.1;
   if (c.lens) {
@@ -178,9 +178,10 @@ TEST_CASE("Cavity without gravity under INDSPH: the oil settles to the 120 deg l
   checkLens120("indsph", 0.0, 0.1);
 }
 
-TEST_CASE("Cavity without tension: the oil layer holds the flat interface at the volume's height "
-          "(Bond number infinite)",
-          "[validation][interface][cavity]") {
+TEST_CASE(
+    "Cavity without tension: the oil layer holds the flat interface at the volume's height "
+    "(Bond number infinite)",
+    "[validation][interface][cavity]") {
   // The oil starts as the level layer of the closed form and must hold it: the check is that the
   // single-layer wall, the two-phase density and the coverage read-out keep the contact line
   // where hydrostatics puts it. (A dynamic approach does not fit a CI run: a layer tilted by
@@ -197,11 +198,13 @@ TEST_CASE("Cavity without tension: the oil layer holds the flat interface at the
   c.sampleFrom = 0.02;
   c.solver = "indsph";
   const CavityResult r = runCavity(c);
-  const Real tiltEnd = std::acos(std::clamp(r.axis.y(), Real(-1), Real(1))) * 180 / std::numbers::pi;
-  std::printf("cavity flat: coverage %.4f (Shepard %.4f, dry %.4f), closed form %.4f, start "
-              "%.4f; cap axis %.1f deg from vertical; %ld steps, %.1f s\n",
-              r.mean.coverage, r.mean.shepardCoverage, r.mean.dry, r.expected, r.start, tiltEnd,
-              r.steps, r.seconds);
+  const Real tiltEnd =
+      std::acos(std::clamp(r.axis.y(), Real(-1), Real(1))) * 180 / std::numbers::pi;
+  std::printf(
+      "cavity flat: coverage %.4f (Shepard %.4f, dry %.4f), closed form %.4f, start "
+      "%.4f; cap axis %.1f deg from vertical; %ld steps, %.1f s\n",
+      r.mean.coverage, r.mean.shepardCoverage, r.mean.dry, r.expected, r.start, tiltEnd, r.steps,
+      r.seconds);
   CHECK(r.mean.coverage == Approx(r.expected).margin(kCoverageTolerance));
   // Contact-line errors of +-d on opposite sides of the cap (polar radius alpha, cos alpha =
   // 1 - 2 x 0.35) tilt its axis by at most d / (Rs sin alpha) = 7.6 deg.

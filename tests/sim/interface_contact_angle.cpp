@@ -45,8 +45,9 @@ testing::SessileResult settle(Real theta, Real tEnd = 0.1, Real perR = 6) {
 // 16 at R0 = 8 d with the side walls clear of its contact line: 32.6 (see its test).
 void checkSessileAngle(Real requested, Real tEnd = 0.1, Real perR = 6) {
   const testing::SessileResult r = settle(requested, tEnd, perR);
-  std::printf("sessile %.0f deg requested: %.1f deg measured (%.1f at the end), %ld steps, %.1f s\n",
-              requested, r.angle, r.finalAngle, r.steps, r.seconds);
+  std::printf(
+      "sessile %.0f deg requested: %.1f deg measured (%.1f at the end), %ld steps, %.1f s\n",
+      requested, r.angle, r.finalAngle, r.steps, r.seconds);
   REQUIRE(r.adhesion);
   REQUIRE(r.finite);
   CHECK(r.angle == Approx(requested).margin(5.0));

@@ -45,13 +45,13 @@ struct DropletScene {
 };
 
 struct DropletSpec {
-  Real radius = 0;            // [m] droplet radius R
-  Real spacing = 0;           // [m] particle spacing d
-  Real halfWidth = 0;         // [m] half the inner width of the cubic box (fluid part)
-  Real sigma = 0;             // [N/m]
-  Real oilDensity = 970;      // [kg/m^3] silicone oil (reference-data.md section 1.1)
-  Real aqueousDensity = 1000; // [kg/m^3]
-  Real oilViscosity = 1e-3;   // [Pa s]
+  Real radius = 0;               // [m] droplet radius R
+  Real spacing = 0;              // [m] particle spacing d
+  Real halfWidth = 0;            // [m] half the inner width of the cubic box (fluid part)
+  Real sigma = 0;                // [N/m]
+  Real oilDensity = 970;         // [kg/m^3] silicone oil (reference-data.md section 1.1)
+  Real aqueousDensity = 1000;    // [kg/m^3]
+  Real oilViscosity = 1e-3;      // [Pa s]
   Real aqueousViscosity = 1e-3;  // [Pa s]
   // [1] particle masses are rho0 d^3 (1 + excess): a small uniform compression gives the closed
   // box a positive background pressure, so the Tait equation's clamp at p = 0 (free-surface
@@ -60,7 +60,7 @@ struct DropletSpec {
   // Sessile: the droplet centre sits at height (cos of the start angle) R above the floor, i.e.
   // a cap cut by the floor; <= -1 means a free droplet centred in the box.
   Real sessileStartCos = -2;
-  Real boxHeight = 0;         // [m] inner height for sessile scenes (0: same as the width)
+  Real boxHeight = 0;  // [m] inner height for sessile scenes (0: same as the width)
   // [1] shape perturbation of a free droplet, r(theta) = R (1 + eps P2(cos theta)) with theta
   // from the +y axis (the l = 2 mode of the oscillation benchmark)
   Real p2Amplitude = 0;
@@ -71,7 +71,7 @@ struct DropletSpec {
   // [d] each lattice position moved by up to this much per axis (std::mt19937, seed 7: the same
   // sequence on every platform); the phase is decided at the lattice site.
   Real jitter = 0;
-  Real maxTimeStep = 0;       // [s] WorldParameters::maxTimeStep when > 0
+  Real maxTimeStep = 0;  // [s] WorldParameters::maxTimeStep when > 0
   // n >= 1 (layered walls only): the lowest n lattice layers are an elastic tissue on the
   // floor's wall, unjittered, its top layer the floor tag's wetted surface
   // (sim/boundary/wetted_surface.h); all but the top `tissueFreeLayers` layers are anchored.
@@ -97,8 +97,8 @@ void fillJitteredLattice(World& w, const Vec3& origin, int nx, int ny, int nz, R
         const Vec3 x = origin + d * Vec3(i + 0.5, j + 0.5, k + 0.5);
         const int m = materialAt(x);
         const Vec3 moved = jitter > 0 ? Vec3(x + Vec3(offset(), offset(), offset())) : x;
-        w.particles.add(moved, Vec3::Zero(), w.materials[m].restDensity * d * d * d * (1 + massExcess),
-                        m);
+        w.particles.add(moved, Vec3::Zero(),
+                        w.materials[m].restDensity * d * d * d * (1 + massExcess), m);
       }
 }
 
@@ -161,16 +161,15 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   const int nx = static_cast<int>(std::lround(width / d));
   const int ny = static_cast<int>(std::lround(height / d));
   int oilCount = 0;
-  fillJitteredLattice(w, Vec3::Constant(gap), nx, ny, nx, d, s.jitter, s.massExcess,
-                      [&](const Vec3& x) {
-                        if (x.y() < out.floorHeight) return out.tissue;
-                        const Vec3 r = x - out.centre;
-                        const Real c = r.norm() > 0 ? r.y() / r.norm() : 0;
-                        const bool isOil =
-                            r.norm() < s.radius * (1 + s.p2Amplitude * 0.5 * (3 * c * c - 1));
-                        oilCount += isOil;
-                        return isOil ? out.oil : out.aqueous;
-                      });
+  fillJitteredLattice(
+      w, Vec3::Constant(gap), nx, ny, nx, d, s.jitter, s.massExcess, [&](const Vec3& x) {
+        if (x.y() < out.floorHeight) return out.tissue;
+        const Vec3 r = x - out.centre;
+        const Real c = r.norm() > 0 ? r.y() / r.norm() : 0;
+        const bool isOil = r.norm() < s.radius * (1 + s.p2Amplitude * 0.5 * (3 * c * c - 1));
+        oilCount += isOil;
+        return isOil ? out.oil : out.aqueous;
+      });
   out.radius = std::cbrt(3.0 * oilCount * d * d * d / (4.0 * std::numbers::pi));
   for (Index i = 0; i < static_cast<Index>(w.particles.size()); ++i) {
     if (w.particles.material[i] != out.tissue) continue;
@@ -183,22 +182,21 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   return out;
 }
 
-
 // A closed spherical cavity (validation 5): one layer of wall particles on a sphere of radius
 // Rs about the origin (a Fibonacci point set, about one point per d^2 of area, outward normals,
 // Akinci volumes computed by the World), filled with aqueous up to kWallGap d from the wall; the
 // particles beyond the plane x.axis > offset are oil.
 struct CavitySpec {
-  Real cavityRadius = 0;       // [m] Rs, the fluid side of the wall
-  Real spacing = 0;            // [m] d
-  Real sigma = 0;              // [N/m]
-  Real oilDensity = 970;       // [kg/m^3]
-  Real aqueousDensity = 1000;  // [kg/m^3]
-  Real viscosity = 1e-3;       // [Pa s] both phases
-  Real massExcess = 0.01;      // [1] as DropletSpec::massExcess
-  Vec3 gravity = Vec3::Zero(); // [m/s^2]
-  Vec3 oilAxis = Vec3::UnitY();// the oil starts beyond a plane normal to this axis...
-  Real oilOffset = 0;          // [m] ...at this signed distance from the centre
+  Real cavityRadius = 0;         // [m] Rs, the fluid side of the wall
+  Real spacing = 0;              // [m] d
+  Real sigma = 0;                // [N/m]
+  Real oilDensity = 970;         // [kg/m^3]
+  Real aqueousDensity = 1000;    // [kg/m^3]
+  Real viscosity = 1e-3;         // [Pa s] both phases
+  Real massExcess = 0.01;        // [1] as DropletSpec::massExcess
+  Vec3 gravity = Vec3::Zero();   // [m/s^2]
+  Vec3 oilAxis = Vec3::UnitY();  // the oil starts beyond a plane normal to this axis...
+  Real oilOffset = 0;            // [m] ...at this signed distance from the centre
   // [m] > 0: the oil starts instead as the column of this radius about oilAxis (it touches the
   // wall at both poles; under gravity it must rise and spread into a layer)
   Real oilColumnRadius = 0;
@@ -213,7 +211,8 @@ struct CavitySpec {
 struct CavityScene {
   std::unique_ptr<World> world;
   int oil = 0, aqueous = 1;
-  Real oilVolumeFraction = 0;  // [1] oil particles' rest volume over all fluid particles' rest volume
+  Real oilVolumeFraction =
+      0;  // [1] oil particles' rest volume over all fluid particles' rest volume
   std::vector<Real> wallArea;  // [m^2] per wall particle (equal areas: 4 pi Rs^2 / N)
 };
 
@@ -284,9 +283,10 @@ inline CavityScene cavityScene(const CavitySpec& s) {
   Real oilVolume = 0, volume = 0;
   for (Real r = rs - kWallGap * d; r > 0.25 * d; r -= d) {
     const Real outer = r + 0.5 * d, inner = std::max(r - 0.5 * d, Real(0));
-    const Real shellVolume = 4 * std::numbers::pi / 3 * (outer * outer * outer - inner * inner * inner);
-    const auto count = std::max<std::size_t>(
-        1, static_cast<std::size_t>(std::lround(shellVolume / (d * d * d))));
+    const Real shellVolume =
+        4 * std::numbers::pi / 3 * (outer * outer * outer - inner * inner * inner);
+    const auto count =
+        std::max<std::size_t>(1, static_cast<std::size_t>(std::lround(shellVolume / (d * d * d))));
     const Real v = shellVolume / static_cast<Real>(count);  // [m^3]
     for (std::size_t k = 0; k < count; ++k) {
       const Real y = 1 - 2 * (k + 0.5) / static_cast<Real>(count);
@@ -302,7 +302,6 @@ inline CavityScene cavityScene(const CavitySpec& s) {
   w.initialize();
   return out;
 }
-
 
 // Closed forms of validation 5, for a cavity of radius 1 (every length over Rs) and an oil
 // volume fraction v of the cavity; coverage = oil-wetted share of the wall area.

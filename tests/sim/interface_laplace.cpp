@@ -17,7 +17,7 @@ struct LaplaceResult {
   Real measured = 0;  // [Pa] time-averaged inside - outside
   Real expected = 0;  // [Pa] 2 sigma / R
   long steps = 0;
-  Real drift = 0;     // [d] distance the droplet's centre moved over the run
+  Real drift = 0;  // [d] distance the droplet's centre moved over the run
 };
 
 struct LaplaceOptions {
@@ -29,8 +29,8 @@ struct LaplaceOptions {
 constexpr Real kRunTaus = 1.5;  // [1] run length in capillary times
 
 // Runs the droplet for 1.5 capillary times tau = sqrt(rho R^3 / sigma) and averages the jump
-// from 0.5 tau on (the first half capillary time lets the lattice sphere relax and the start-up acoustic
-// wave decay).
+// from 0.5 tau on (the first half capillary time lets the lattice sphere relax and the start-up
+// acoustic wave decay).
 //
 // WCSPH: DFSPH's rest state is not yet calm (engine-notes KNOWN PROBLEM). INDSPH: the eye
 // scenes' solver, with the background_pressure stage (on by its rule: closed scene, tension) or
@@ -92,10 +92,11 @@ LaplaceResult runLaplace(Real radius, Real sigma, const std::string& solver = "w
 void checkLaplace(Real radius, Real sigma) {
   const std::string solver = "wcsph";
   const LaplaceResult r = runLaplace(radius, sigma, solver);
-  std::printf("Laplace (%s) R = %.1f mm, sigma = %.3f N/m: dp = %.2f Pa, 2 sigma / R = %.2f Pa "
-              "(%+.1f %%), %ld steps\n",
-              solver.c_str(), radius * 1e3, sigma, r.measured, r.expected,
-              100 * (r.measured / r.expected - 1), r.steps);
+  std::printf(
+      "Laplace (%s) R = %.1f mm, sigma = %.3f N/m: dp = %.2f Pa, 2 sigma / R = %.2f Pa "
+      "(%+.1f %%), %ld steps\n",
+      solver.c_str(), radius * 1e3, sigma, r.measured, r.expected,
+      100 * (r.measured / r.expected - 1), r.steps);
   // 10 %: the issue's acceptance. The sources of error are the diffuse interface (width 2h =
   // 2R/3 at this resolution: the jump is the stress integral weighted by 1/r over the layer,
   // about 3 % above 2 sigma / R here, see docs/interface.md) and the residual parasitic
@@ -130,17 +131,17 @@ TEST_CASE("Laplace pressure under INDSPH: 3 mm at 40 mN/m and 2 mm at 20 mN/m",
           "[validation][interface][laplace][indsph]") {
   for (const auto& [radius, sigma] : {std::pair{0.003, 0.040}, std::pair{0.002, 0.020}}) {
     const LaplaceResult r = runLaplace(radius, sigma, "indsph");
-    std::printf("Laplace (indsph) R = %.1f mm, sigma = %.3f N/m: dp = %.2f Pa, 2 sigma / R = %.2f Pa "
-                "(%+.1f %%), %ld steps\n",
-                radius * 1e3, sigma, r.measured, r.expected, 100 * (r.measured / r.expected - 1),
-                r.steps);
+    std::printf(
+        "Laplace (indsph) R = %.1f mm, sigma = %.3f N/m: dp = %.2f Pa, 2 sigma / R = %.2f Pa "
+        "(%+.1f %%), %ld steps\n",
+        radius * 1e3, sigma, r.measured, r.expected, 100 * (r.measured / r.expected - 1), r.steps);
     CHECK(r.measured == Approx(r.expected).epsilon(0.10));
   }
   const LaplaceResult symmetric =
       runLaplace(0.003, 0.040, "indsph", {.form = SurfaceStressForm::kSymmetric});
-  std::printf("Laplace (indsph, symmetric surface stress) R = 3 mm: dp = %.2f Pa of %.2f (%+.1f %%)\n",
-              symmetric.measured, symmetric.expected,
-              100 * (symmetric.measured / symmetric.expected - 1));
+  std::printf(
+      "Laplace (indsph, symmetric surface stress) R = 3 mm: dp = %.2f Pa of %.2f (%+.1f %%)\n",
+      symmetric.measured, symmetric.expected, 100 * (symmetric.measured / symmetric.expected - 1));
   CHECK(symmetric.measured < 0.92 * symmetric.expected);
 }
 
@@ -155,9 +156,10 @@ TEST_CASE("Laplace pressure under INDSPH: 3 mm at 40 mN/m and 2 mm at 20 mN/m",
 TEST_CASE("A jittered INDSPH droplet at rest does not propel itself under the corrected stress",
           "[validation][interface][laplace][indsph]") {
   const LaplaceResult r = runLaplace(0.003, 0.040, "indsph", {.jitter = 0.2});
-  std::printf("Laplace (indsph, 0.2 d jittered start) R = 3 mm: dp = %.2f Pa of %.2f (%+.1f %%), "
-              "centre moved %.4f d\n",
-              r.measured, r.expected, 100 * (r.measured / r.expected - 1), r.drift);
+  std::printf(
+      "Laplace (indsph, 0.2 d jittered start) R = 3 mm: dp = %.2f Pa of %.2f (%+.1f %%), "
+      "centre moved %.4f d\n",
+      r.measured, r.expected, 100 * (r.measured / r.expected - 1), r.drift);
   CHECK(r.drift < 0.1);
   CHECK(r.measured == Approx(r.expected).epsilon(0.10));
 }

@@ -82,37 +82,61 @@ int main(int argc, char** argv) {
   for (int k = 1; k < argc; ++k) {
     const char* eq = std::strchr(argv[k], '=');
     if (!eq) {
-      std::fprintf(stderr,
-                   "usage: sim_laplace_bench [solver=indsph] [R=mm] [perR=6] [sigma=0.04] [taus=1.5] "
-                   "[excess=0] [layers=0] [analytic=0|1] [bg=auto|off|PA] [bgk=K] [dtmax=S] [warm=] "
-                   "[tol=] [miniter=] [maxiter=] [expansion=0|1] [divergence=0|1] [omega=] [xsph=]\n");
+      std::fprintf(
+          stderr,
+          "usage: sim_laplace_bench [solver=indsph] [R=mm] [perR=6] [sigma=0.04] [taus=1.5] "
+          "[excess=0] [layers=0] [analytic=0|1] [bg=auto|off|PA] [bgk=K] [dtmax=S] [warm=] "
+          "[tol=] [miniter=] [maxiter=] [expansion=0|1] [divergence=0|1] [omega=] [xsph=]\n");
       return 2;
     }
     const std::string key(static_cast<const char*>(argv[k]), eq), v(eq + 1);
-    if (key == "solver") solver = v;
-    else if (key == "perR") perR = std::atof(v.c_str());
-    else if (key == "taus") taus = std::atof(v.c_str());
-    else if (key == "excess") excess = std::atof(v.c_str());
-    else if (key == "layers") layers = std::atoi(v.c_str());
-    else if (key == "analytic") analytic = v != "0";
-    else if (key == "warm") options.indsph.warmStartFactor = std::atof(v.c_str());
-    else if (key == "tol") options.indsph.tolerance = std::atof(v.c_str());
-    else if (key == "miniter") options.indsph.minIterations = std::atoi(v.c_str());
-    else if (key == "maxiter") options.indsph.maxIterations = std::atoi(v.c_str());
-    else if (key == "expansion") options.indsph.correctBulkExpansion = v != "0";
-    else if (key == "divergence") options.indsph.divergenceSolve = v != "0";
-    else if (key == "omega") options.indsph.relaxation = std::atof(v.c_str());
-    else if (key == "xsph") options.velocitySmoothing = std::atof(v.c_str());
-    else if (key == "bg") background = v;
-    else if (key == "bgk") bgk = std::atof(v.c_str());
-    else if (key == "sigma") sigma = std::atof(v.c_str());
-    else if (key == "R") radius = std::atof(v.c_str()) * 1e-3;
-    else if (key == "dtmax") dtmax = std::atof(v.c_str());
-    else if (key == "jitter") jitter = std::atof(v.c_str());
+    if (key == "solver")
+      solver = v;
+    else if (key == "perR")
+      perR = std::atof(v.c_str());
+    else if (key == "taus")
+      taus = std::atof(v.c_str());
+    else if (key == "excess")
+      excess = std::atof(v.c_str());
+    else if (key == "layers")
+      layers = std::atoi(v.c_str());
+    else if (key == "analytic")
+      analytic = v != "0";
+    else if (key == "warm")
+      options.indsph.warmStartFactor = std::atof(v.c_str());
+    else if (key == "tol")
+      options.indsph.tolerance = std::atof(v.c_str());
+    else if (key == "miniter")
+      options.indsph.minIterations = std::atoi(v.c_str());
+    else if (key == "maxiter")
+      options.indsph.maxIterations = std::atoi(v.c_str());
+    else if (key == "expansion")
+      options.indsph.correctBulkExpansion = v != "0";
+    else if (key == "divergence")
+      options.indsph.divergenceSolve = v != "0";
+    else if (key == "omega")
+      options.indsph.relaxation = std::atof(v.c_str());
+    else if (key == "xsph")
+      options.velocitySmoothing = std::atof(v.c_str());
+    else if (key == "bg")
+      background = v;
+    else if (key == "bgk")
+      bgk = std::atof(v.c_str());
+    else if (key == "sigma")
+      sigma = std::atof(v.c_str());
+    else if (key == "R")
+      radius = std::atof(v.c_str()) * 1e-3;
+    else if (key == "dtmax")
+      dtmax = std::atof(v.c_str());
+    else if (key == "jitter")
+      jitter = std::atof(v.c_str());
     else if (key == "form")
       options.surfaceStress = surfaceStressFormFromName(v);
     else {
-      std::fprintf(stderr, "unknown option '%s' (see the comment at the top of interface_laplace_bench.cpp)\n", argv[k]);
+      std::fprintf(
+          stderr,
+          "unknown option '%s' (see the comment at the top of interface_laplace_bench.cpp)\n",
+          argv[k]);
       return 2;
     }
   }
@@ -130,8 +154,10 @@ int main(int argc, char** argv) {
   // The box is full: a jittered start reads as a free surface to the automatic rule.
   if (jitter > 0) options.closedDomain = Force::kOn;
   if (bgk > 0) options.backgroundPressure = bgk * sigma / s.spacing;
-  if (background == "off") options.backgroundPressure = 0;
-  else if (background != "auto") options.backgroundPressure = std::atof(background.c_str());
+  if (background == "off")
+    options.backgroundPressure = 0;
+  else if (background != "auto")
+    options.backgroundPressure = std::atof(background.c_str());
   auto scene = testing::dropletScene(s);
   World& w = *scene.world;
   const Real expected = 2 * sigma / scene.radius;
@@ -150,12 +176,14 @@ int main(int argc, char** argv) {
     if (w.stepCount < next) continue;
     next = w.stepCount + 5;
     const Vec3 centre = analytic ? boxCentre : centreOfMaterial(w, scene.oil);
-    const auto jump = measureDropletPressureJump(w, pressure, {centre, scene.radius, h, scene.oil, scene.radius + 2 * h});
+    const auto jump = measureDropletPressureJump(
+        w, pressure, {centre, scene.radius, h, scene.oil, scene.radius + 2 * h});
     // The jump the explicit forces of this step ask for: sum over shells of -m a.e_r / (4 pi r^2).
     Real demanded = 0;
     for (Index i = 0; i < w.particles.size(); ++i) {
       const Vec3 r = w.particles.x[i] - centre;
-      demanded -= w.particles.mass[i] * w.particles.a[i].dot(r.normalized()) / (4 * std::numbers::pi * r.squaredNorm());
+      demanded -= w.particles.mass[i] * w.particles.a[i].dot(r.normalized()) /
+                  (4 * std::numbers::pi * r.squaredNorm());
     }
     // sum V |gradC|: the interface's area for a well-formed diffuse layer.
     Real area = 0;
@@ -182,12 +210,13 @@ int main(int argc, char** argv) {
     std::printf("  net force / sum |force| %.2e, droplet centre drift %.3g d\n",
                 net.norm() / std::max(magnitude, Real(1e-300)),
                 (centreOfMaterial(w, scene.oil) - boxCentre).norm() / w.particleSpacing());
-    std::printf("step %4ld t %.4f dt %.2e in %.2f out %.2f jump/expected %.3f vmax %.3g iters %d "
-                "demanded %.3f area/4piR2 %.3f stray oil %d aqueous %d\n",
-                w.stepCount, w.time, pipeline.lastTimeStep().dt, jump.inside, jump.outside,
-                jump.jump / expected, vmax, pipeline.solver().stats().densityIterations,
-                demanded / expected, area / (4 * std::numbers::pi * scene.radius * scene.radius),
-                strayOil, strayAq);
+    std::printf(
+        "step %4ld t %.4f dt %.2e in %.2f out %.2f jump/expected %.3f vmax %.3g iters %d "
+        "demanded %.3f area/4piR2 %.3f stray oil %d aqueous %d\n",
+        w.stepCount, w.time, pipeline.lastTimeStep().dt, jump.inside, jump.outside,
+        jump.jump / expected, vmax, pipeline.solver().stats().densityIterations,
+        demanded / expected, area / (4 * std::numbers::pi * scene.radius * scene.radius), strayOil,
+        strayAq);
   }
   return 0;
 }

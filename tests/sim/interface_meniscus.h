@@ -32,9 +32,9 @@ struct MeniscusCase {
 };
 
 struct MeniscusFit {
-  Real angle = 90;    // [deg] through the oil, where the fitted circle meets the walls
-  Real radius = 0;    // [m]
-  Real rms = 0;       // [m]
+  Real angle = 90;  // [deg] through the oil, where the fitted circle meets the walls
+  Real radius = 0;  // [m]
+  Real rms = 0;     // [m]
   std::size_t points = 0;
 };
 

@@ -77,9 +77,9 @@ struct OscillationSpec {
   Real maxTimeStep = 0;             // [s] cap on the step (0: the pipeline's limits only)
   Real backgroundPressure = -1;     // [Pa] PipelineOptions::backgroundPressure (< 0 automatic)
   SurfaceStressForm surfaceStress = SurfaceStressForm::kAuto;  // PipelineOptions::surfaceStress
-  Real massExcess = -1;             // [1] DropletSpec::massExcess; < 0: 0.05 for WCSPH, 0 otherwise
-  Real jitter = 0;  // [1] lattice positions moved by up to +-jitter d per axis before
-                    // the relaxation (fixed seed): a disordered start
+  Real massExcess = -1;  // [1] DropletSpec::massExcess; < 0: 0.05 for WCSPH, 0 otherwise
+  Real jitter = 0;       // [1] lattice positions moved by up to +-jitter d per axis before
+                         // the relaxation (fixed seed): a disordered start
 };
 
 struct OscillationRun {

@@ -29,12 +29,12 @@ struct SessileCase {
   Real perR = 6;           // [1] R0 / d
   Real halfWidthPerR = 2;  // [1] least half box width over R0 (sessileScene widens flat caps' box)
   std::string solver = "wcsph";
-  int wallLayers = 0;      // [1] 0: one Akinci layer (WCSPH scenes); >= 1 layered walls
-  Real viscosity = 0.005;  // [Pa s] both phases
-  bool print = false;      // print the angle ten times during the run
-  Real jitter = 0;         // [d] DropletSpec::jitter of the start lattice
-  int relaxSteps = 0;      // steps with the velocities reset after each, before the run
-  Real r0 = 0.003;         // [m] radius of the hemisphere whose volume the droplet has
+  int wallLayers = 0;        // [1] 0: one Akinci layer (WCSPH scenes); >= 1 layered walls
+  Real viscosity = 0.005;    // [Pa s] both phases
+  bool print = false;        // print the angle ten times during the run
+  Real jitter = 0;           // [d] DropletSpec::jitter of the start lattice
+  int relaxSteps = 0;        // steps with the velocities reset after each, before the run
+  Real r0 = 0.003;           // [m] radius of the hemisphere whose volume the droplet has
   Real boxHeightPerR = 1.6;  // [1] least inner box height over R0 (raised to clear the caps by 2 h)
   // Measure the angle from the footprint (the first layer's oil disc, capAngleOfFootprint)
   // instead of the cap fit: above 150 deg the cap fit cannot tell the angle (footprintAngle).
@@ -69,9 +69,7 @@ inline Real sessileCapRadius(Real r0, Real u) {
 }
 
 // [m] Height above the floor of that cap's top, R (1 - u).
-inline Real sessileCapTop(Real r0, Real u) {
-  return sessileCapRadius(r0, u) * (1 - u);
-}
+inline Real sessileCapTop(Real r0, Real u) { return sessileCapRadius(r0, u) * (1 - u); }
 
 // [m] Radius of that cap's base (its contact radius), R sin(theta).
 inline Real sessileCapBase(Real r0, Real u) {

@@ -99,7 +99,8 @@ TEST_CASE("Capillary time-step limit is Brackbill's sqrt(rho_avg d^3 / (2 pi sig
   InterfacialTensionHuAdams2006 tension;
   tension.attach(w);
   const Real d = w.particleSpacing();
-  const Real expected = std::sqrt(0.5 * (970.0 + 1000.0) * d * d * d / (2 * std::numbers::pi * 0.04));
+  const Real expected =
+      std::sqrt(0.5 * (970.0 + 1000.0) * d * d * d / (2 * std::numbers::pi * 0.04));
   CHECK(tension.maxTimeStep(w) == Approx(expected).epsilon(1e-12));
 }
 
@@ -107,9 +108,9 @@ namespace {
 
 struct StressSums {
   Real expected = 0;  // [Pa] 2 sigma / R of the lattice droplet's radius
-  Real jump = 0;   // [Pa] sum_i -m_i a_i.e_r / (4 pi r_i^2): the jump the force field asks for
-  Real net = 0;    // [N] |sum m a|
-  Real scale = 0;  // [N] sum |m a|
+  Real jump = 0;      // [Pa] sum_i -m_i a_i.e_r / (4 pi r_i^2): the jump the force field asks for
+  Real net = 0;       // [N] |sum m a|
+  Real scale = 0;     // [N] sum |m a|
 };
 
 // The tension alone on a free droplet: pressure jump the force field asks for, dp = -int f_r dr =
@@ -136,9 +137,10 @@ StressSums tensionSums(Real perR, SurfaceStressForm form) {
 
 }  // namespace
 
-TEST_CASE("Interfacial stress on a lattice droplet integrates to 2 sigma / R, and the symmetric form "
-          "conserves momentum exactly",
-          "[unit][interface]") {
+TEST_CASE(
+    "Interfacial stress on a lattice droplet integrates to 2 sigma / R, and the symmetric form "
+    "conserves momentum exactly",
+    "[unit][interface]") {
   for (const Real perR : {6.0, 8.0}) {
     const StressSums symmetric = tensionSums(perR, SurfaceStressForm::kSymmetric);
     const StressSums corrected = tensionSums(perR, SurfaceStressForm::kCorrected);
@@ -146,7 +148,8 @@ TEST_CASE("Interfacial stress on a lattice droplet integrates to 2 sigma / R, an
     INFO("d = R/" << perR << ": jump symmetric " << symmetric.jump << " Pa, corrected "
                   << corrected.jump << " Pa, 2 sigma / R " << expected);
     // Symmetric: measured 0.03 % (R/6) and 0.45 % (R/8) off; 2 % allows the lattice's departure
-    // from a sphere, while a wrong factor in the stress (1/D, sign, |gradC|) is off by 30 % or more.
+    // from a sphere, while a wrong factor in the stress (1/D, sign, |gradC|) is off by 30 % or
+    // more.
     CHECK(symmetric.jump == Approx(expected).epsilon(0.02));
     // Corrected: measured -5.1 % (R/6) and -6.1 % (R/8). On the lattice the kernel's gradient
     // moment sum_j V_j gradW_ij (x_j - x_i)^T is ~1.02 I, not I; the symmetric form keeps that
@@ -292,14 +295,14 @@ TEST_CASE("A contact angle through aqueous is 180 deg minus the angle through oi
   auto throughAqueous = hemisphere();
   throughOil.world->materials.setContactAngle(throughOil.oil, testing::kFloorTag, 60.0);
   throughAqueous.world->materials.setContactAngle(throughAqueous.aqueous, testing::kFloorTag,
-                                                   120.0);
+                                                  120.0);
   WallAdhesionYoung a, b;
   applyAlone(*throughOil.world, a);
   applyAlone(*throughAqueous.world, b);
   Real maxDiff = 0, maxA = 0;
   for (Index i = 0; i < throughOil.world->particles.size(); ++i) {
-    maxDiff = std::max(maxDiff,
-                       (throughOil.world->particles.a[i] - throughAqueous.world->particles.a[i]).norm());
+    maxDiff = std::max(
+        maxDiff, (throughOil.world->particles.a[i] - throughAqueous.world->particles.a[i]).norm());
     maxA = std::max(maxA, throughOil.world->particles.a[i].norm());
   }
   CHECK(maxA > 0);
@@ -407,8 +410,7 @@ TEST_CASE("The footprint angle inverts a cap's section radius at a height", "[un
   CHECK_THROWS_AS(capAngleOfFootprint(0.0, 1e-3, y), SimError);
 }
 
-TEST_CASE("Sphere fit recovers a sphere and the cap angle from points on it",
-          "[unit][interface]") {
+TEST_CASE("Sphere fit recovers a sphere and the cap angle from points on it", "[unit][interface]") {
   // Points on a cap of a sphere of radius 2 centred 1 below the plane y = 0: the cap meets the
   // plane at acos(-(-1)/2)... theta = acos(-z_c / R) with z_c = -1: 60 deg.
   std::vector<Vec3> points;

@@ -10,8 +10,8 @@ namespace sim::testing {
 inline Material water() {
   Material m;
   m.name = "water";
-  m.restDensity = 1000.0;      // [kg/m^3]
-  m.dynamicViscosity = 1e-3;   // [Pa s] water at 20 C
+  m.restDensity = 1000.0;     // [kg/m^3]
+  m.dynamicViscosity = 1e-3;  // [Pa s] water at 20 C
   return m;
 }
 
@@ -33,7 +33,8 @@ inline Tank hydrostaticTank(Real width, Real height, Real d, Real tankHeight = 0
   const Real gap = (kWallGap - 0.5) * d;  // lattice cells are centred: the first particle is d/2 in
   t.spec.innerMin = Vec3::Zero();
   // Walls reach 1.5x above the fluid: a splash at the start must not fall over the rim.
-  t.spec.innerMax = Vec3(width + 2 * gap, tankHeight > 0 ? tankHeight : 1.5 * height, width + 2 * gap);
+  t.spec.innerMax =
+      Vec3(width + 2 * gap, tankHeight > 0 ? tankHeight : 1.5 * height, width + 2 * gap);
   WorldParameters params;
   params.particleSpacing = d;
   params.domain = tankDomain(t.spec, d);

@@ -53,8 +53,10 @@ Waterline measure(const World& world, int block, const Vec3& centre, Real halfWi
     const auto key = std::make_pair(static_cast<int>(std::floor(x.x() / d)),
                                     static_cast<int>(std::floor(x.z() / d)));
     const auto it = columnTop.find(key);
-    if (it == columnTop.end()) columnTop[key] = x.y();
-    else it->second = std::max(it->second, x.y());
+    if (it == columnTop.end())
+      columnTop[key] = x.y();
+    else
+      it->second = std::max(it->second, x.y());
   }
   Real bottom = 0, top = 0;
   int nBottom = 0, nTop = 0;
@@ -127,10 +129,10 @@ int main(int argc, char** argv) {
   const std::string solver = argc > 2 ? argv[2] : "indsph";
   const Real duration = argc > 3 ? std::atof(argv[3]) : 1.0;  // [s]
   const int layers = argc > 4 ? std::atoi(argv[4]) : 6;
-  const int width = argc > 5 ? std::atoi(argv[5]) : 20;       // [d]
+  const int width = argc > 5 ? std::atoi(argv[5]) : 20;  // [d]
   const bool layered = argc > 6 ? std::string(argv[6]) != "akinci" : true;
-  const Real d = 0.005;                                          // [m]
-  const int depth = 10, blockWidth = 8;                          // [d]
+  const Real d = 0.005;                  // [m]
+  const int depth = 10, blockWidth = 8;  // [d]
   // Layered walls: the tank's inner faces are the fluid lattice's cell faces (first particle d/2
   // from a face, as in the bulk). Akinci walls: the lattice starts kWallGap d from the walls.
   const Real gap = layered ? 0.0 : (testing::kWallGap - 0.5) * d;
@@ -144,8 +146,10 @@ int main(int argc, char** argv) {
   world.materials.add(testing::water());
   const int block = world.materials.add(
       testing::elasticMaterial("block", 1000 * gravityRatio, 1e5, 0.3));  // E [Pa], nu
-  if (layered) addTankWalls(world, spec, d, 0, WallLayers{});
-  else addTankWalls(world, spec, d);
+  if (layered)
+    addTankWalls(world, spec, d, 0, WallLayers{});
+  else
+    addTankWalls(world, spec, d);
   // The block starts at its Archimedes draft; the water it displaces is left out.
   const Real height = layers * d;
   const Vec3 blockMin(gap + (width - blockWidth) * d / 2, gap + depth * d - gravityRatio * height,
@@ -177,7 +181,8 @@ int main(int argc, char** argv) {
     const Real fraction = (last.surface - last.bottom) / (last.top - last.bottom);
     if (world.time > duration / 2) {
       sum += fraction, sum2 += fraction * fraction, ++samples;
-      const Probe q = probe(world, block, centre, 0.5 * blockWidth * d, d, last.bottom, last.surface);
+      const Probe q =
+          probe(world, block, centre, 0.5 * blockWidth * d, d, last.bottom, last.surface);
       probes.volumeLevel += q.volumeLevel, probes.pressureLevel += q.pressureLevel;
       probes.pressureSlope += q.pressureSlope, probes.underPressure += q.underPressure;
       probes.underDepth += q.underDepth;
@@ -189,7 +194,8 @@ int main(int argc, char** argv) {
   }
   const Real mean = sum / samples;
   std::printf("| %.2f | %s | %s | %d | %d | %.3f | %.3f | %.2f | %.2g |\n", gravityRatio,
-              solver.c_str(), layered ? "layered" : "akinci", width, layers, mean, std::sqrt(std::max(0.0, sum2 / samples - mean * mean)),
+              solver.c_str(), layered ? "layered" : "akinci", width, layers, mean,
+              std::sqrt(std::max(0.0, sum2 / samples - mean * mean)),
               (mean - gravityRatio) * layers, kineticEnergy(world));
   // Diagnostics (stderr): all in d from the tank floor, averaged over the window. The draft the
   // block's weight needs is s.g. x H; the bottom-face pressure it needs is s.g. rho g H.
@@ -221,7 +227,8 @@ int main(int argc, char** argv) {
     std::vector<int> n(40, 0);
     for (auto& [key, c] : columns) {
       std::sort(c.begin(), c.end());
-      for (std::size_t r = 0; r < c.size() && r < 40; ++r) y[r] += c[r].first, pk[r] += c[r].second, ++n[r];
+      for (std::size_t r = 0; r < c.size() && r < 40; ++r)
+        y[r] += c[r].first, pk[r] += c[r].second, ++n[r];
     }
     for (int r = 0; r < 40 && n[r]; ++r)
       std::fprintf(stderr, "# layer %d: y %.3f d, p %.1f Pa, columns %d\n", r, y[r] / n[r] / d,

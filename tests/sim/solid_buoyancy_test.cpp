@@ -33,8 +33,7 @@ struct Floating {
 // Block of `side` x `layers` x `side` cells and specific gravity `ratio` in a tank `width` d
 // wide filled `depth` d deep (layered walls, INDSPH), started at its Archimedes draft; fractions
 // averaged over [duration / 2, duration] sampled every 0.01 s.
-Floating floatBlock(Real ratio, Real d, int width, int depth, int side, int layers,
-                    Real duration) {
+Floating floatBlock(Real ratio, Real d, int width, int depth, int side, int layers, Real duration) {
   TankSpec spec;
   spec.innerMax = Vec3(width * d, (depth + layers + 4) * d, width * d);
   WorldParameters params;
@@ -43,8 +42,8 @@ Floating floatBlock(Real ratio, Real d, int width, int depth, int side, int laye
   params.domain.extend(spec.innerMin - Vec3::Constant(4 * d));
   World world(params);
   world.materials.add(testing::water());
-  const int block = world.materials.add(
-      testing::elasticMaterial("block", 1000 * ratio, 1e5, 0.3));  // E [Pa], nu
+  const int block =
+      world.materials.add(testing::elasticMaterial("block", 1000 * ratio, 1e5, 0.3));  // E [Pa], nu
   addTankWalls(world, spec, d, 0, WallLayers{});
   const Real height = layers * d;  // [m]
   const Vec3 blockMin((width - side) * d / 2, depth * d - ratio * height, (width - side) * d / 2);
@@ -80,8 +79,8 @@ Floating floatBlock(Real ratio, Real d, int width, int depth, int side, int laye
         centre += p.x[i], ++n;
       }
     centre /= n;
-    r.sidewaysDrift = std::max(r.sidewaysDrift, std::hypot(centre.x() - start.x(),
-                                                            centre.z() - start.z()));
+    r.sidewaysDrift =
+        std::max(r.sidewaysDrift, std::hypot(centre.x() - start.x(), centre.z() - start.z()));
     if (world.time <= duration / 2) continue;
     // Faces: mean of the lowest / highest particle layer -/+ d/2 (exact for the lattice block).
     Real bottom = 0, top = 0;
@@ -105,7 +104,7 @@ Floating floatBlock(Real ratio, Real d, int width, int depth, int side, int laye
     bottom = bottom / nBottom - 0.5 * d, top = top / nTop + 0.5 * d;
     Real count = 0, tops = 0;
     for (const auto& [key, c] : columns) count += c.first, tops += c.second;
-    const Real volumeLevel = d * count / columns.size();         // [m]
+    const Real volumeLevel = d * count / columns.size();        // [m]
     const Real visibleLevel = tops / columns.size() + 0.5 * d;  // [m]
     r.volumeFraction += (volumeLevel - bottom) / (top - bottom);
     r.visibleFraction += (visibleLevel - bottom) / (top - bottom);

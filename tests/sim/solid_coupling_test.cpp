@@ -159,7 +159,7 @@ TEST_CASE("elastic cuboid dropped on another at density ratio 1:60 settles",
   // 6 x 4 x 6, lower 8 x 4 x 8 particles. The other order is the next test (it needs an anchored
   // pad and the coupling time-step limit, docs/elasticity.md "Heavy onto light").
   const Real d = 0.01, E = 5e5, nu = 0.3, drop = 3 * d;  // [m], [Pa], [1], [m]
-  const Real gap = (kWallGap - 0.5) * d;                // [m] lattice start from a wall
+  const Real gap = (kWallGap - 0.5) * d;                 // [m] lattice start from a wall
   {
     const Real rhoTop = 1000, rhoBottom = 60000;  // [kg/m^3]
     auto world = emptyTank(Vec3(14 * d, 20 * d, 14 * d), d);
@@ -233,8 +233,10 @@ TEST_CASE("a dam break does not push water through an anchored elastic plate",
     Real face = -1e30, waterFront = -1e30;
     const auto& p = world->particles;
     for (std::size_t i = 0; i < p.size(); ++i) {
-      if (p.material[i] == plate) face = std::max(face, p.x[i].x());
-      else waterFront = std::max(waterFront, p.x[i].x());
+      if (p.material[i] == plate)
+        face = std::max(face, p.x[i].x());
+      else
+        waterFront = std::max(waterFront, p.x[i].x());
     }
     maxPlateX = std::max(maxPlateX, face);
     maxWaterBeyond = std::max(maxWaterBeyond, waterFront - face);
@@ -309,8 +311,9 @@ TEST_CASE("a neutrally buoyant elastic block stays put in water", "[stability][e
   CHECK(std::hypot(centre.x() - centre0.x(), centre.z() - centre0.z()) < 0.5 * d);
 }
 
-TEST_CASE("a stiff anchored pad under a water column moves less than the suddenly loaded static bound",
-          "[validation][elasticity]") {
+TEST_CASE(
+    "a stiff anchored pad under a water column moves less than the suddenly loaded static bound",
+    "[validation][elasticity]") {
   // A pad of tissue (6 x 3 x 6 particles, E = 500 kPa, nu = 0.45, the water's density) bonded to
   // the floor of a tank (its lowest layer anchored) under 9 d of water, INDSPH with the coupling
   // limit (couplingStepFactor 0.3), 0.15 s, d = 1 cm. Upper bound: the pad's top face moves at
@@ -338,7 +341,8 @@ TEST_CASE("a stiff anchored pad under a water column moves less than the suddenl
   for (int j = 0; j < depth; ++j)
     for (int k = 0; k < width; ++k)
       for (int i = 0; i < width; ++i) {
-        const bool inPad = i >= lo && i < lo + padSide && k >= lo && k < lo + padSide && j < padLayers;
+        const bool inPad =
+            i >= lo && i < lo + padSide && k >= lo && k < lo + padSide && j < padLayers;
         world.particles.add(Vec3::Constant(gap) + d * Vec3(i + 0.5, j + 0.5, k + 0.5), Vec3::Zero(),
                             1000 * d * d * d, inPad ? pad : 0);
       }
@@ -358,7 +362,8 @@ TEST_CASE("a stiff anchored pad under a water column moves less than the suddenl
     REQUIRE(allFinite(world));
     for (std::size_t i = 0; i < world.particles.size(); ++i)
       if (world.particles.material[i] == pad)
-        maxDisplacement = std::max(maxDisplacement, (world.particles.x[i] - rest.at(world.particles.id[i])).norm());
+        maxDisplacement = std::max(maxDisplacement,
+                                   (world.particles.x[i] - rest.at(world.particles.id[i])).norm());
   }
   const Real p = 1000 * g * (depth - padLayers) * d;  // [Pa] water on the pad's top face
   const Real bound = 2 * p * padLayers * d / E;       // [m]
@@ -389,7 +394,8 @@ TEST_CASE("heavy elastic cuboid dropped on an anchored light one at 1:60 settles
   const int top = world->materials.add(elasticMaterial("heavy", rhoTop, E, nu));
   addLattice(*world, Vec3(3 * d, gap, 3 * d), Eigen::Vector3i(6, padLayers, 6), d, pad);
   const Real padTop0 = gap + (padLayers - 0.5) * d;  // [m] the pad's highest particle layer
-  addLattice(*world, Vec3(4 * d, padTop0 + 0.5 * d + drop, 4 * d), Eigen::Vector3i(4, 4, 4), d, top);
+  addLattice(*world, Vec3(4 * d, padTop0 + 0.5 * d + drop, 4 * d), Eigen::Vector3i(4, 4, 4), d,
+             top);
   world->initialize();
   for (std::size_t i = 0; i < world->particles.size(); ++i)
     if (world->particles.material[i] == pad && world->particles.x[i].y() < gap + d)
@@ -401,10 +407,10 @@ TEST_CASE("heavy elastic cuboid dropped on an anchored light one at 1:60 settles
   pipeline.attach(*world);
   const BodyState top0 = bodyState(*world, top), pad0 = bodyState(*world, pad);
   const Real restCentre = padTop0 + d + 1.5 * d;  // [m] heavy centre touching the unloaded pad
-  const Real fallEnergy = top0.mass * g * drop;    // [J]
+  const Real fallEnergy = top0.mass * g * drop;   // [J]
   Real maxEnergyRatio = 0, minOverlap = 1e30, maxEarlyEnergy = 0, maxLateEnergy = 0;
-  Real sagSum = 0;  // [m s]
-  Real sagTime = 0;  // [s]
+  Real sagSum = 0;                      // [m s]
+  Real sagTime = 0;                     // [s]
   const Real end = 0.8, window = 0.25;  // [s]
   const auto& p = world->particles;
   while (world->time < end) {
@@ -436,8 +442,8 @@ TEST_CASE("heavy elastic cuboid dropped on an anchored light one at 1:60 settles
   // Static 1-D estimate: the heavy body's weight over its footprint, sigma = rho g H, compresses
   // the pad's height L by sigma L / E' with E' = 3 mu (the pressure solve keeps every dynamic
   // particle at its rest number density, so the pad deforms at constant volume: nu_eff = 1/2).
-  const Real mu = E / (2 * (1 + nu));          // [Pa]
-  const Real sigma = rhoTop * g * 4 * d;       // [Pa]
+  const Real mu = E / (2 * (1 + nu));                      // [Pa]
+  const Real sigma = rhoTop * g * 4 * d;                   // [Pa]
   const Real estimate = sigma * padLayers * d / (3 * mu);  // [m]
   CAPTURE(maxEnergyRatio, minOverlap / d, sag / d, estimate / d, maxEarlyEnergy, maxLateEnergy,
           pipeline.lastTimeStep().dt, world->stepCount);

@@ -42,8 +42,7 @@ TEST_CASE("physiological sclera is rigid, the paper's soft sclera and fat are el
           "[unit][elasticity]") {
   const Real p = 235.0, R = 0.012, d = 5e-4;  // [Pa], [m], [m] a 0.5 mm particle spacing
   // Human sclera, 1.8 MPa, 1 mm: u ~ 9.4e-6 m = 0.019 d -> rigid.
-  const TissueDecision sclera =
-      decideElastic(estimateTissueDeformation(p, R, 0.001, 1.8e6), d);
+  const TissueDecision sclera = decideElastic(estimateTissueDeformation(p, R, 0.001, 1.8e6), d);
   CHECK_FALSE(sclera.elastic);
   CHECK_FALSE(sclera.forced);
   CHECK_THAT(sclera.reason, Catch::Contains("rigid"));

@@ -106,14 +106,14 @@ TEST_CASE("affine deformations give the exact linear-elastic energy, rotations n
 }
 
 TEST_CASE("cantilever under gravity matches Euler-Bernoulli", "[validation][elasticity]") {
-  // Beam 48 x 6 x 3 particles (d = 25/6 mm: L = 0.2 m, thickness t = 25 mm, width 12.5 mm) clamped by
-  // 3 layers of fixed particles at x < 0, loaded by its own weight. Static tip deflection of a
+  // Beam 48 x 6 x 3 particles (d = 25/6 mm: L = 0.2 m, thickness t = 25 mm, width 12.5 mm) clamped
+  // by 3 layers of fixed particles at x < 0, loaded by its own weight. Static tip deflection of a
   // uniformly loaded cantilever w(x) = q x^2 (6 L^2 - 4 L x + x^2) / (24 E I), evaluated at the
   // tip particles' centres x = L - d/2. E = 1e7 Pa gives w = 1.9 % of L (small deflection).
   const int n = 48, thick = 6, wide = 3, clamp = 3;
   const Real d = 0.025 / thick, E = 1e7, nu = 0.3, rho = 1000, g = 9.81;
-  WorldParameters params = solidWorldParameters(
-      d, Box(Vec3(-0.05, -0.1, -0.05), Vec3(0.25, 0.1, 0.05)), Vec3(0, -g, 0));
+  WorldParameters params =
+      solidWorldParameters(d, Box(Vec3(-0.05, -0.1, -0.05), Vec3(0.25, 0.1, 0.05)), Vec3(0, -g, 0));
   // Quasi-static: steps of 20 ms (omega_1 dt ~ 1.3 for the 10 Hz first mode) make backward
   // Euler a damped iteration to the equilibrium, which does not depend on dt; the CFL and
   // displacement guards are for fluids and are opened so that they do not shorten these steps.
@@ -183,12 +183,13 @@ TEST_CASE("free elastic body at rest stays at rest, noise decays without drift",
   Real maxTotal = 0;
   while (world.time < 0.5) {  // [s] ~ 25 periods of the block's lowest mode (c_p / 6 d ~ 200 Hz)
     pipeline.step(world);
-    maxTotal = std::max(maxTotal, kineticEnergy(world) + elasticStage(pipeline).stats().elasticEnergy);
+    maxTotal =
+        std::max(maxTotal, kineticEnergy(world) + elasticStage(pipeline).stats().elasticEnergy);
   }
   REQUIRE(allFinite(world));
   INFO("initial elastic energy " << initialEnergy << " J, final elastic "
-                                  << elasticStage(pipeline).stats().elasticEnergy
-                                  << " J, final kinetic " << kineticEnergy(world) << " J");
+                                 << elasticStage(pipeline).stats().elasticEnergy
+                                 << " J, final kinetic " << kineticEnergy(world) << " J");
   CHECK(maxTotal <= initialEnergy * (1 + 1e-9));
   // The noise (all modes at once) decays by backward-Euler damping; 1e-3 of its energy left
   // after 0.5 s is a loose bound (measured below 1e-6).

@@ -27,9 +27,9 @@ inline Material elasticMaterial(const char* name, Real density, Real youngsModul
   Material m;
   m.name = name;
   m.kind = MaterialKind::kElastic;
-  m.restDensity = density;         // [kg/m^3]
-  m.youngsModulus = youngsModulus; // [Pa]
-  m.poissonRatio = poissonRatio;   // [1]
+  m.restDensity = density;          // [kg/m^3]
+  m.youngsModulus = youngsModulus;  // [Pa]
+  m.poissonRatio = poissonRatio;    // [1]
   return m;
 }
 

@@ -24,12 +24,13 @@ int main(int argc, char** argv) {
   const Real d = H / thick;
   const int n = static_cast<int>(std::lround(L / d)), wide = 3, clamp = 3;
   const Real kL = 1.875, k = kL / L;
-  const Real omega = k * k * std::sqrt(E * H * H / (12 * rho));               // [rad/s] narrow beam
-  const Real omegaPlate = k * k * std::sqrt(E * H * H / (12 * rho * (1 - nu * nu)));  // plane strain
+  const Real omega = k * k * std::sqrt(E * H * H / (12 * rho));  // [rad/s] narrow beam
+  const Real omegaPlate =
+      k * k * std::sqrt(E * H * H / (12 * rho * (1 - nu * nu)));  // plane strain
   const Real period = 2 * M_PI / omega;
 
-  WorldParameters params = solidWorldParameters(
-      d, Box(Vec3(-0.05, -0.1, -0.05), Vec3(0.3, 0.1, 0.05)), Vec3::Zero());
+  WorldParameters params =
+      solidWorldParameters(d, Box(Vec3(-0.05, -0.1, -0.05), Vec3(0.3, 0.1, 0.05)), Vec3::Zero());
   params.maxTimeStep = period / stepsPerPeriod;
   World world(params);
   const int mat = world.materials.add(elasticMaterial("plate", rho, E, nu));
@@ -85,8 +86,9 @@ int main(int argc, char** argv) {
   const Real simulatedPeriod =
       2 * (crossings.back() - crossings.front()) / static_cast<Real>(crossings.size() - 1);
   const Real f = 1 / simulatedPeriod, f0 = omega / (2 * M_PI);
-  std::printf("| particles | thickness | dt [s] | f SPH [Hz] | f beam [Hz] | error | f plane strain "
-              "[Hz] | CG iterations/step | wall [s] |\n|---|---|---|---|---|---|---|---|---|\n");
+  std::printf(
+      "| particles | thickness | dt [s] | f SPH [Hz] | f beam [Hz] | error | f plane strain "
+      "[Hz] | CG iterations/step | wall [s] |\n|---|---|---|---|---|---|---|---|---|\n");
   std::printf("| %zu | %d d | %.3g | %.4f | %.4f | %+.2f %% | %.4f | %.0f | %.1f |\n",
               world.particles.size(), thick, params.maxTimeStep, f, f0, 100 * (f / f0 - 1),
               omegaPlate / (2 * M_PI), static_cast<double>(iterations) / world.stepCount, wall);

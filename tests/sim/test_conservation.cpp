@@ -16,8 +16,8 @@
 #include <random>
 
 #include "scene_fixtures.h"
-#include "solid_fixtures.h"
 #include "sim/scenes/dam_break.h"
+#include "solid_fixtures.h"
 
 using namespace sim;
 using Catch::Matchers::Contains;
@@ -48,7 +48,8 @@ std::unique_ptr<World> randomBlob(Real dynamicViscosity = 1e-3) {
 
 Real sumMassSpeed(const World& w) {  // [kg m/s] sum m|v|
   Real s = 0;
-  for (std::size_t i = 0; i < w.particles.size(); ++i) s += w.particles.mass[i] * w.particles.v[i].norm();
+  for (std::size_t i = 0; i < w.particles.size(); ++i)
+    s += w.particles.mass[i] * w.particles.v[i].norm();
   return s;
 }
 
@@ -179,11 +180,13 @@ TEST_CASE("particles outside the domain are rejected at initialize", "[unit][bad
     try {
       w.initialize();
     } catch (const SimError& e) {
-      CHECK_THAT(e.what(), Contains("water particle (id 1)") && Contains("outside the simulation domain") &&
+      CHECK_THAT(e.what(), Contains("water particle (id 1)") &&
+                               Contains("outside the simulation domain") &&
                                Contains("at the start"));
     }
   }
-  SECTION("a dynamic particle that leaves during the run names its material, time and likely cause") {
+  SECTION(
+      "a dynamic particle that leaves during the run names its material, time and likely cause") {
     p.gravity = Vec3::Zero();
     World w(p);
     w.materials.add(testing::water());
@@ -203,9 +206,10 @@ TEST_CASE("particles outside the domain are rejected at initialize", "[unit][bad
         FAIL("no error for a particle outside the domain");
       } catch (const SimError& e) {
         INFO(e.what());
-        CHECK_THAT(e.what(), Contains(material == 0 ? "water particle (id 0)" : "fat particle (id 1)") &&
-                                 Contains("left the simulation domain at t = 0.25 s (step 7)") &&
-                                 Contains(material == 0 ? "through a wall" : "too soft for its load"));
+        CHECK_THAT(e.what(),
+                   Contains(material == 0 ? "water particle (id 0)" : "fat particle (id 1)") &&
+                       Contains("left the simulation domain at t = 0.25 s (step 7)") &&
+                       Contains(material == 0 ? "through a wall" : "too soft for its load"));
       }
       w.particles.x[i] = inside;
     }

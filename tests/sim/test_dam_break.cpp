@@ -43,7 +43,8 @@ struct Point {
   Real T, Z;
 };
 
-// Rows of one dataset of the reference CSV (tests run in the source root, see TamponadeTests.cmake).
+// Rows of one dataset of the reference CSV (tests run in the source root, see
+// TamponadeTests.cmake).
 std::vector<Point> loadMartinMoyce(const std::string& datasetId) {
   const std::string path = "data/reference/martin_moyce_1952.csv";
   std::ifstream in(path);

@@ -18,7 +18,7 @@ using namespace sim;
 namespace {
 
 constexpr Real kSpacing = 0.005, kWidth = 0.04, kHeight = 0.08;  // [m]
-constexpr Real kSettle = 0.6, kWindow = 0.4;                    // [s]
+constexpr Real kSettle = 0.6, kWindow = 0.4;                     // [s]
 constexpr Real kRho = 1000.0, kG = 9.81;
 
 struct ProfileResult {
@@ -93,10 +93,11 @@ ProfileResult runProfile(const PipelineOptions& options) {
     ++r.layers;
   }
   r.meanError = r.layers > 0 ? sum / r.layers : 1.0;
-  std::printf("%s hydrostatic: %d layers, mean error %.4f, max %.4f; KE %.3g J after impact, %.3g J "
-              "in window; %ld steps in window, %ld rejected in all\n",
-              std::string(pipeline.solver().name()).c_str(), r.layers, r.meanError, r.maxError,
-              r.kineticAfterImpact, r.kineticWindow, r.steps, r.rejected);
+  std::printf(
+      "%s hydrostatic: %d layers, mean error %.4f, max %.4f; KE %.3g J after impact, %.3g J "
+      "in window; %ld steps in window, %ld rejected in all\n",
+      std::string(pipeline.solver().name()).c_str(), r.layers, r.meanError, r.maxError,
+      r.kineticAfterImpact, r.kineticWindow, r.steps, r.rejected);
   return r;
 }
 

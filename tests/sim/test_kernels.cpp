@@ -59,8 +59,8 @@ TEST_CASE("kernel gradients match finite differences of W", "[unit][kernel]") {
     const Real h = 0.01;
     const Kernel k(kind, h);
     const Real eps = 1e-8;
-    for (const Vec3& x : {Vec3(0.001, 0.002, -0.0015), Vec3(0.004, 0.003, 0.002),
-                         Vec3(-0.006, 0.001, 0.0045)}) {
+    for (const Vec3& x :
+         {Vec3(0.001, 0.002, -0.0015), Vec3(0.004, 0.003, 0.002), Vec3(-0.006, 0.001, 0.0045)}) {
       Vec3 fd;
       for (int d = 0; d < 3; ++d) {
         Vec3 e = Vec3::Zero();

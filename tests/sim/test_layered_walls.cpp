@@ -185,13 +185,13 @@ LayeredProfile runLayeredProfile(const PipelineOptions& options, Real settle, Re
     ++wallCount;
   }
   r.wallPressure = wallCount > 0 ? wallSum / wallCount : 0.0;
-  std::printf("layered %s hydrostatic: %d layers, mean error %.4f, max %.4f, near-wall mean %.4f; "
-              "floor gap %.3f d; floor wall pressure %.1f Pa (rho g (H + d/2) = %.1f Pa); KE %.3g J "
-              "after impact, %.3g J in window; %ld steps, %ld rejected\n",
-              std::string(pipeline.solver().name()).c_str(), r.layers, r.meanError, r.maxError,
-              r.nearWallError, r.floorGap / kSpacing, r.wallPressure,
-              kRho * kG * (r.H + 0.5 * kSpacing), r.kineticAfterImpact, r.kineticWindow, r.steps,
-              r.rejected);
+  std::printf(
+      "layered %s hydrostatic: %d layers, mean error %.4f, max %.4f, near-wall mean %.4f; "
+      "floor gap %.3f d; floor wall pressure %.1f Pa (rho g (H + d/2) = %.1f Pa); KE %.3g J "
+      "after impact, %.3g J in window; %ld steps, %ld rejected\n",
+      std::string(pipeline.solver().name()).c_str(), r.layers, r.meanError, r.maxError,
+      r.nearWallError, r.floorGap / kSpacing, r.wallPressure, kRho * kG * (r.H + 0.5 * kSpacing),
+      r.kineticAfterImpact, r.kineticWindow, r.steps, r.rejected);
   return r;
 }
 
@@ -274,17 +274,19 @@ TEST_CASE("INDSPH with layered walls: 1:75 two-phase dam break stays out of the 
     pipeline.step(w);
     finite = allFinite(w);
     for (const Vec3& x : w.particles.x)
-      deepest = std::max({deepest, (spec.innerMin - x).maxCoeff() / d, (x - spec.innerMax).maxCoeff() / d});
+      deepest = std::max(
+          {deepest, (spec.innerMin - x).maxCoeff() / d, (x - spec.innerMax).maxCoeff() / d});
     maxKinetic = std::max(maxKinetic, kineticEnergy(w));
     worstCompression = std::max(worstCompression, pipeline.solver().stats().maxCompression);
     const auto& pb = w.walls.fields.get<Real>("wall_pressure");
     for (Real p : pb) worstWall = std::max(worstWall, p);
   }
-  std::printf("layered 1:%g dam break: t %.3f s, KE max %.3g J (bound %.3g), max compression "
-              "%.2e, deepest %.3f d beyond a face, largest wall pressure %.0f Pa, %ld rejected "
-              "steps\n",
-              ratio, w.time, maxKinetic, energyBound, worstCompression, deepest, worstWall,
-              pipeline.rejectedSteps());
+  std::printf(
+      "layered 1:%g dam break: t %.3f s, KE max %.3g J (bound %.3g), max compression "
+      "%.2e, deepest %.3f d beyond a face, largest wall pressure %.0f Pa, %ld rejected "
+      "steps\n",
+      ratio, w.time, maxKinetic, energyBound, worstCompression, deepest, worstWall,
+      pipeline.rejectedSteps());
   CHECK(finite);
   // No particle in the wall slab. The fluid rests d/2 from a face, a particle that got between the
   // wall particles (the "permeable lattice" failure) sits at or beyond their centre plane d/2

@@ -45,12 +45,15 @@ TEST_CASE("grid neighbour search equals brute force", "[unit][neighbors]") {
   search.update(dynamicX);
   std::size_t pairs = 0;
   for (Index i = 0; i < dynamicX.size(); ++i) {
-    REQUIRE(sortedNeighbors(search.dynamicDynamic(), i) == bruteForce(dynamicX[i], dynamicX, radius, i));
-    REQUIRE(sortedNeighbors(search.dynamicStatic(), i) == bruteForce(dynamicX[i], staticX, radius, -1));
+    REQUIRE(sortedNeighbors(search.dynamicDynamic(), i) ==
+            bruteForce(dynamicX[i], dynamicX, radius, i));
+    REQUIRE(sortedNeighbors(search.dynamicStatic(), i) ==
+            bruteForce(dynamicX[i], staticX, radius, -1));
     pairs += search.dynamicDynamic().count(i);
   }
   for (Index b = 0; b < staticX.size(); ++b)
-    REQUIRE(sortedNeighbors(search.staticStatic(), b) == bruteForce(staticX[b], staticX, radius, b));
+    REQUIRE(sortedNeighbors(search.staticStatic(), b) ==
+            bruteForce(staticX[b], staticX, radius, b));
   CHECK(pairs > 3000);  // the cloud is dense enough that the comparison is not vacuous
 }
 

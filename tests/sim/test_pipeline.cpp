@@ -25,7 +25,8 @@ TEST_CASE("cached kernel gradients equal the kernel's gradient of each pair", "[
   REQUIRE(nw.totalPairs() > 0);
   for (Index i = 0; i < w.particles.size(); ++i) {
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
-      REQUIRE(w.fluidGradients()[k] == w.kernel.gradW(w.particles.x[i] - w.particles.x[nf.indices[k]]));
+      REQUIRE(w.fluidGradients()[k] ==
+              w.kernel.gradW(w.particles.x[i] - w.particles.x[nf.indices[k]]));
     for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
       REQUIRE(w.wallGradients()[k] == w.kernel.gradW(w.particles.x[i] - w.walls.x[nw.indices[k]]));
   }
@@ -42,7 +43,8 @@ TEST_CASE("Z-order sorting keeps every field with its particle", "[unit][world]"
   }
   // Scramble the order, then let the periodic sort restore locality.
   std::vector<Index> reverse(w.particles.size());
-  for (Index k = 0; k < reverse.size(); ++k) reverse[k] = static_cast<Index>(reverse.size() - 1 - k);
+  for (Index k = 0; k < reverse.size(); ++k)
+    reverse[k] = static_cast<Index>(reverse.size() - 1 - k);
   w.particles.fields.permute(reverse);
   for (int k = 0; k < w.parameters().zSortInterval; ++k) w.updateNeighbors();
   for (Index i = 0; i < w.particles.size(); ++i) {

@@ -20,8 +20,8 @@ namespace {
 Material fluid(const char* name, Real rho) {
   Material m;
   m.name = name;
-  m.restDensity = rho;       // [kg/m^3]
-  m.dynamicViscosity = 1e-3; // [Pa s]
+  m.restDensity = rho;        // [kg/m^3]
+  m.dynamicViscosity = 1e-3;  // [Pa s]
   return m;
 }
 
@@ -82,9 +82,12 @@ TwoPhaseTank blobInWater(Real blobDensity) {
     addFluidBlock(w, Vec3::Constant(gap), Vec3(gap + 0.04, gap + 0.02, gap + 0.04), d, 0);
     addFluidBlock(w, Vec3(gap, gap + 0.04, gap), Vec3(gap + 0.04, gap + 0.06, gap + 0.04), d, 0);
     addFluidBlock(w, Vec3(gap, gap + 0.02, gap), Vec3(blobMin.x(), gap + 0.04, gap + 0.04), d, 0);
-    addFluidBlock(w, Vec3(blobMax.x(), gap + 0.02, gap), Vec3(gap + 0.04, gap + 0.04, gap + 0.04), d, 0);
-    addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, gap), Vec3(blobMax.x(), gap + 0.04, blobMin.z()), d, 0);
-    addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, blobMax.z()), Vec3(blobMax.x(), gap + 0.04, gap + 0.04), d, 0);
+    addFluidBlock(w, Vec3(blobMax.x(), gap + 0.02, gap), Vec3(gap + 0.04, gap + 0.04, gap + 0.04),
+                  d, 0);
+    addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, gap), Vec3(blobMax.x(), gap + 0.04, blobMin.z()),
+                  d, 0);
+    addFluidBlock(w, Vec3(blobMin.x(), gap + 0.02, blobMax.z()),
+                  Vec3(blobMax.x(), gap + 0.04, gap + 0.04), d, 0);
     addFluidBlock(w, blobMin, blobMax, d, 1);
   });
 }
@@ -133,10 +136,14 @@ TEST_CASE("INDSPH two-phase dam break stays bounded at density ratios 1:2, 1:10,
   const Real d = 0.005, gap = (testing::kWallGap - 0.5) * d;
   const Vec3 inner(0.06 + 2 * gap, 0.06, 0.02 + 2 * gap);
   // Heavy column on the left, light column of the same height on the right, released at once.
-  auto t = makeTank(inner, d, 1000.0, 1000.0 / ratio, [&](World& w) {
-    addFluidBlock(w, Vec3::Constant(gap), Vec3(gap + 0.03, gap + 0.03, gap + 0.02), d, 0);
-    addFluidBlock(w, Vec3(gap + 0.03, gap, gap), Vec3(gap + 0.06, gap + 0.03, gap + 0.02), d, 1);
-  }, /*closed=*/true);
+  auto t = makeTank(
+      inner, d, 1000.0, 1000.0 / ratio,
+      [&](World& w) {
+        addFluidBlock(w, Vec3::Constant(gap), Vec3(gap + 0.03, gap + 0.03, gap + 0.02), d, 0);
+        addFluidBlock(w, Vec3(gap + 0.03, gap, gap), Vec3(gap + 0.06, gap + 0.03, gap + 0.02), d,
+                      1);
+      },
+      /*closed=*/true);
   World& w = *t.world;
   PipelineOptions options;
   options.solver = "indsph";
@@ -160,10 +167,11 @@ TEST_CASE("INDSPH two-phase dam break stays bounded at density ratios 1:2, 1:10,
     worstMaxCompression = std::max(worstMaxCompression, pipeline.solver().stats().maxCompression);
   }
   const auto gapInfo = interfaceGap(w, 1, 0);
-  std::printf("INDSPH 1:%g dam break: t %.3f s, KE max %.3g J (bound %.3g), max compression %.2e, "
-              "mean compression %.2e, interface gap %.2f d\n",
-              ratio, w.time, maxKinetic, energyBound, worstMaxCompression,
-              pipeline.solver().stats().averageCompression, gapInfo.meanNearestDistance);
+  std::printf(
+      "INDSPH 1:%g dam break: t %.3f s, KE max %.3g J (bound %.3g), max compression %.2e, "
+      "mean compression %.2e, interface gap %.2f d\n",
+      ratio, w.time, maxKinetic, energyBound, worstMaxCompression,
+      pipeline.solver().stats().averageCompression, gapInfo.meanNearestDistance);
   CHECK(finite);
   CHECK(inside);
   CHECK(maxKinetic < energyBound);
@@ -174,7 +182,8 @@ TEST_CASE("INDSPH two-phase dam break stays bounded at density ratios 1:2, 1:10,
   CHECK(pipeline.solver().stats().averageCompression <= options.indsph.tolerance);
 }
 
-TEST_CASE("INDSPH buoyancy: a light blob rises and a heavy blob sinks", "[validation][solvers][indsph]") {
+TEST_CASE("INDSPH buoyancy: a light blob rises and a heavy blob sinks",
+          "[validation][solvers][indsph]") {
   const Real blobDensity = GENERATE(500.0, 2000.0);
   const Real d = kBlobSpacing;
   auto t = blobInWater(blobDensity);
@@ -268,13 +277,15 @@ TEST_CASE("INDSPH neutral buoyancy: a blob of the water's density moves with its
           "[validation][solvers][indsph][buoyancy]") {
   const Real d = kBlobSpacing;
   const BlobRun r = runBlob(1000.0, 0.3);
-  std::printf("INDSPH neutral blob: %.3f d, its column %.3f d, max |blob - column| %.3f d in 0.3 s\n",
-              r.blob / d, r.column / d, r.maxRelative / d);
+  std::printf(
+      "INDSPH neutral blob: %.3f d, its column %.3f d, max |blob - column| %.3f d in 0.3 s\n",
+      r.blob / d, r.column / d, r.maxRelative / d);
   // A blob with the water's properties is water: nothing but the flow around it moves it, so it
   // must follow the water above and below it (the settling circulation moves both alike). Bound
   // 0.3 d over 0.3 s: a sixth of the 1.8 d that a 3 % density difference moves it without drag
   // (0.5 a t^2, a = 0.03 g / 1.5 with the added mass of a sphere), so that a buoyancy signal
-  // would stand clear of it; measured 0.13 d. The bound holds for the whole run, not only at its end.
+  // would stand clear of it; measured 0.13 d. The bound holds for the whole run, not only at its
+  // end.
   CHECK(r.maxRelative < 0.3 * d);
 }
 
@@ -287,13 +298,15 @@ TEST_CASE("INDSPH neutral buoyancy: a blob of the water's density moves with its
 // blob moves): the particle arrangement under hydrostatic pressure has a shear yield, because the
 // symmetric pressure force is not zero for a uniform pressure on an imperfect arrangement. A
 // solver defect, analysed in docs/interface.md (validation 6); this test is its acceptance test.
-// In a closed, filled domain the background can be removed exactly (World::gravityReferenceDensity):
-// the closed-box test below passes that way; with a free surface, as here, it cannot.
+// In a closed, filled domain the background can be removed exactly
+// (World::gravityReferenceDensity): the closed-box test below passes that way; with a free surface,
+// as here, it cannot.
 TEST_CASE("INDSPH near-neutral buoyancy: 970 rises and 1060 sinks against the neutral blob",
           "[validation][solvers][indsph][buoyancy][!mayfail]") {
   const Real d = kBlobSpacing;
   const Real neutral = runBlob(1000.0, 0.3).blob;
-  const Real light = runBlob(970.0, 0.3).blob - neutral, heavy = runBlob(1060.0, 0.3).blob - neutral;
+  const Real light = runBlob(970.0, 0.3).blob - neutral,
+             heavy = runBlob(1060.0, 0.3).blob - neutral;
   std::printf("INDSPH 3 %% buoyancy against the neutral blob: 970 %+.3f d, 1060 %+.3f d in 0.3 s\n",
               light / d, heavy / d);
   // The signal must stand clear of the neutral bound above (0.3 d).
@@ -326,17 +339,22 @@ Real closedBoxBlobShift(Real blobDensity, Real duration) {
   w.materials.add(fluid("water", 1000.0));
   w.materials.add(fluid("blob", blobDensity));
   addTankWalls(w, spec, d, 0, WallLayers{});
-  const Vec3 blobMin(0.5 * (width - blob), 0.02, 0.5 * (width - blob)), blobMax = blobMin + Vec3::Constant(blob);
+  const Vec3 blobMin(0.5 * (width - blob), 0.02, 0.5 * (width - blob)),
+      blobMax = blobMin + Vec3::Constant(blob);
   // std::mt19937's sequence is fixed by the standard (unlike the distributions'): the same
   // jitter on every platform.
   std::mt19937 random(7);
-  const auto jitter = [&] { return 0.2 * d * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0); };
-  const int n = static_cast<int>(std::lround(width / d)), ny = static_cast<int>(std::lround(height / d));
+  const auto jitter = [&] {
+    return 0.2 * d * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0);
+  };
+  const int n = static_cast<int>(std::lround(width / d)),
+            ny = static_cast<int>(std::lround(height / d));
   for (int j = 0; j < ny; ++j)
     for (int k = 0; k < n; ++k)
       for (int i = 0; i < n; ++i) {
         const Vec3 site = Vec3(i + 0.5, j + 0.5, k + 0.5) * d;
-        const int material = (site.array() > blobMin.array()).all() && (site.array() < blobMax.array()).all();
+        const int material =
+            (site.array() > blobMin.array()).all() && (site.array() < blobMax.array()).all();
         const Vec3 x = site + Vec3(jitter(), jitter(), jitter());
         w.particles.add(x, Vec3::Zero(), w.materials[material].restDensity * d * d * d, material);
       }
@@ -370,9 +388,12 @@ TEST_CASE("INDSPH near-neutral buoyancy in a closed filled box without the hydro
   const Real d = kBlobSpacing, t = 0.3;
   const Real neutral = closedBoxBlobShift(1000.0, t), light = closedBoxBlobShift(970.0, t),
              heavy = closedBoxBlobShift(1060.0, t);
-  const Real cLight = impliedAddedMass(970.0, light, t), cHeavy = impliedAddedMass(1060.0, heavy, t);
-  std::printf("closed box, background removed, relaxed start, 0.3 s: neutral %+.3f d, 970 %+.3f d "
-              "(C_m %.2f), 1060 %+.3f d (C_m %.2f)\n", neutral / d, light / d, cLight, heavy / d, cHeavy);
+  const Real cLight = impliedAddedMass(970.0, light, t),
+             cHeavy = impliedAddedMass(1060.0, heavy, t);
+  std::printf(
+      "closed box, background removed, relaxed start, 0.3 s: neutral %+.3f d, 970 %+.3f d "
+      "(C_m %.2f), 1060 %+.3f d (C_m %.2f)\n",
+      neutral / d, light / d, cLight, heavy / d, cHeavy);
   // A blob of the water's density feels no net force (g (1 - 1000/1000) = 0): it stays put.
   // Bound 0.1 d over 0.3 s, a tenth of the 970 blob's expected shift (measured, driver, seeds
   // 7-9: within 0.017 d).

@@ -24,8 +24,10 @@ TEST_CASE("Unknown solver names are rejected with the list of known ones", "[uni
   }
 }
 
-TEST_CASE("Each solver keeps a settling water column finite, inside the tank and compressed "
-          "less than its tolerance", "[stability][solvers]") {
+TEST_CASE(
+    "Each solver keeps a settling water column finite, inside the tank and compressed "
+    "less than its tolerance",
+    "[stability][solvers]") {
   const std::string solver = GENERATE("dfsph", "indsph", "iisph", "number_density", "wcsph");
   const Real d = 0.005, height = 0.06;
   auto tank = testing::hydrostaticTank(0.03, height, d);
@@ -43,10 +45,11 @@ TEST_CASE("Each solver keeps a settling water column finite, inside the tank and
                (x.array() <= tank.spec.innerMax.array()).all();
   }
   const auto& stats = pipeline.solver().stats();
-  std::printf("%s: %ld steps, %ld rejected, KE %.3g J, mean compression %.2e, max %.2e, "
-              "iterations %d\n",
-              solver.c_str(), w.stepCount, pipeline.rejectedSteps(), kineticEnergy(w),
-              stats.averageCompression, stats.maxCompression, stats.densityIterations);
+  std::printf(
+      "%s: %ld steps, %ld rejected, KE %.3g J, mean compression %.2e, max %.2e, "
+      "iterations %d\n",
+      solver.c_str(), w.stepCount, pipeline.rejectedSteps(), kineticEnergy(w),
+      stats.averageCompression, stats.maxCompression, stats.densityIterations);
   CHECK(allFinite(w));
   CHECK(inside);
   // The implicit solvers iterate until their mean compression is below their tolerance (or hit

@@ -189,10 +189,11 @@ TwoLayerResult runTwoLayer(const char* solver, Real heavy, Real light) {
   REQUIRE(interfaceCount > 0);
   REQUIRE(bulkCount > 0);
   r.gapRatio = (interfaceDelta / interfaceCount) / (bulkDelta / bulkCount);
-  std::printf("%s two-layer %g over %g: %d layers, mean error %.4f, max %.4f (of p_bottom %.0f Pa); "
-              "interface at %.4f m, tilt %.2f d, separation %.2f d; interface/bulk number density %.4f\n",
-              solver, light, heavy, r.layers, r.meanError, r.maxError, pBottom, yI,
-              r.interfaceTilt / kD, r.separation / kD, r.gapRatio);
+  std::printf(
+      "%s two-layer %g over %g: %d layers, mean error %.4f, max %.4f (of p_bottom %.0f Pa); "
+      "interface at %.4f m, tilt %.2f d, separation %.2f d; interface/bulk number density %.4f\n",
+      solver, light, heavy, r.layers, r.meanError, r.maxError, pBottom, yI, r.interfaceTilt / kD,
+      r.separation / kD, r.gapRatio);
   return r;
 }
 

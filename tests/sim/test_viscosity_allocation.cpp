@@ -19,8 +19,8 @@ TEST_CASE("implicit viscosity allocates nothing after attach()", "[unit][viscosi
   World w(params);
   Material oil;
   oil.name = "oil";
-  oil.restDensity = 970;       // [kg/m^3]
-  oil.dynamicViscosity = 0.97; // [Pa s] 1000 cSt
+  oil.restDensity = 970;        // [kg/m^3]
+  oil.dynamicViscosity = 0.97;  // [Pa s] 1000 cSt
   w.materials.add(oil);
   // a plate under the blob, so that the wall term runs too
   for (int a = -2; a < 10; ++a)

@@ -1,4 +1,5 @@
-// Implicit viscosity (Weiler et al. 2018, sim/effects/viscosity_weiler2018.h; issue 6, validation 4).
+// Implicit viscosity (Weiler et al. 2018, sim/effects/viscosity_weiler2018.h; issue 6, validation
+// 4).
 //
 // - start-up plane Couette flow at 1000 cSt between two wall plates, the top one sliding in its own
 //   plane: transient and steady profile against the closed form;
@@ -30,7 +31,7 @@ constexpr Real kPi = 3.14159265358979323846;
 Material siliconeOil(Real kinematicViscosity) {
   Material m;
   m.name = "silicone_oil";
-  m.restDensity = 970.0;                                 // [kg/m^3]
+  m.restDensity = 970.0;                                    // [kg/m^3]
   m.dynamicViscosity = kinematicViscosity * m.restDensity;  // [Pa s]
   return m;
 }
@@ -52,16 +53,17 @@ struct CouetteScene {
   Real height = 0;  // [m] H, plate to plate
 };
 
-constexpr Real kCouetteSpacing = 1e-3;          // [m] d
-constexpr Real kCouetteViscosity = 1e-3;        // [m^2/s] 1000 cSt
-constexpr Real kPlateSpeed = 0.01;              // [m/s] U; Re = U H / nu = 0.14, laminar
+constexpr Real kCouetteSpacing = 1e-3;                  // [m] d
+constexpr Real kCouetteViscosity = 1e-3;                // [m^2/s] 1000 cSt
+constexpr Real kPlateSpeed = 0.01;                      // [m/s] U; Re = U H / nu = 0.14, laminar
 constexpr int kCouetteLayers = 12, kCouetteWidth = 16;  // fluid layers (y) and columns (x, z)
 
 // `lowerViscosity` [m^2/s]: if > 0, the lower half of the layers is a second oil of that viscosity
 // (same density), for the two-layer test.
 CouetteScene couetteScene(Real maxTimeStep, Real lowerViscosity = 0) {
   const Real d = kCouetteSpacing;
-  const Real gap = testing::kWallGap * d;  // first fluid layer 1.2 d from a plate (scene_fixtures.h)
+  const Real gap =
+      testing::kWallGap * d;  // first fluid layer 1.2 d from a plate (scene_fixtures.h)
   CouetteScene s;
   s.height = 2 * gap + (kCouetteLayers - 1) * d;
   const Real margin = 4 * d, length = kCouetteWidth * d;
@@ -143,7 +145,8 @@ std::vector<LayerMean> couetteLayers(const World& w) {
   std::vector<int> count(kCouetteLayers, 0);
   for (Index i = 0; i < w.particles.size(); ++i) {
     const Vec3& x = w.particles.x[i];
-    if (std::abs(x.x() - 0.5 * length) > 0.25 * length || std::abs(x.z() - 0.5 * length) > 0.25 * length)
+    if (std::abs(x.x() - 0.5 * length) > 0.25 * length ||
+        std::abs(x.z() - 0.5 * length) > 0.25 * length)
       continue;
     const int k = static_cast<int>(std::lround((x.y() - testing::kWallGap * d) / d));
     if (k < 0 || k >= kCouetteLayers) continue;
@@ -217,12 +220,12 @@ TEST_CASE("implicit viscosity: start-up Couette flow at 1000 cSt matches the clo
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   const auto& stage = implicitStage(pipeline);
-  std::printf("Couette 1000 cSt: %zu particles, %ld steps, lattice shear factor %.3f, max layer "
-              "error at t = 0.1 H^2/nu %.2f %% (lattice nu) / %.2f %% (physical nu), steady "
-              "%.2f %%, CG %.1f iterations/step, %.1f s\n",
-              w.particles.size(), w.stepCount, shearFactor, 100 * transient,
-              100 * transientPhysical, 100 * steady,
-              static_cast<double>(stage.totalIterations()) / stage.solves(), seconds);
+  std::printf(
+      "Couette 1000 cSt: %zu particles, %ld steps, lattice shear factor %.3f, max layer "
+      "error at t = 0.1 H^2/nu %.2f %% (lattice nu) / %.2f %% (physical nu), steady "
+      "%.2f %%, CG %.1f iterations/step, %.1f s\n",
+      w.particles.size(), w.stepCount, shearFactor, 100 * transient, 100 * transientPhysical,
+      100 * steady, static_cast<double>(stage.totalIterations()) / stage.solves(), seconds);
   CHECK(steady < 0.05);
   CHECK(transient < 0.05);
 }
@@ -289,14 +292,14 @@ TEST_CASE("implicit viscosity: a 5000 cSt oil column is stable at the CFL step",
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart).count();
   const Real meanDt = w.time / static_cast<Real>(w.stepCount);
-  std::printf("5000 cSt column: %zu particles, %ld steps, dt mean %.2e s min %.2e s (explicit "
-              "limit %.2e s: %.0fx, %.0fx), %d steps shortened by the displacement guard (%ld "
-              "rejections), max KE %.3e J, max energy gain %.2e of PE0, CG %.1f iterations/step, "
-              "%.1f s\n",
-              w.particles.size(), w.stepCount, meanDt, minDt, explicitLimit,
-              meanDt / explicitLimit, minDt / explicitLimit, notCfl, pipeline.rejectedSteps(),
-              maxKinetic, worstEnergy, static_cast<double>(visc.totalIterations()) / visc.solves(),
-              seconds);
+  std::printf(
+      "5000 cSt column: %zu particles, %ld steps, dt mean %.2e s min %.2e s (explicit "
+      "limit %.2e s: %.0fx, %.0fx), %d steps shortened by the displacement guard (%ld "
+      "rejections), max KE %.3e J, max energy gain %.2e of PE0, CG %.1f iterations/step, "
+      "%.1f s\n",
+      w.particles.size(), w.stepCount, meanDt, minDt, explicitLimit, meanDt / explicitLimit,
+      minDt / explicitLimit, notCfl, pipeline.rejectedSteps(), maxKinetic, worstEnergy,
+      static_cast<double>(visc.totalIterations()) / visc.solves(), seconds);
   CHECK(byViscosity == 0);
   CHECK(notCfl == 0);
   // The scene's CFL step is 21.4x the explicit limit (comment above); every step at the CFL step
@@ -385,9 +388,10 @@ TEST_CASE("implicit viscosity conserves linear momentum to round-off without wal
     b->stage.apply(w, StepContext{kBlobStep});
     const Real drift = (linearMomentum(w) - p0).norm() / scale;
     const Real e1 = kineticEnergy(w);
-    std::printf("momentum, %d phase(s): drift %.2e of sum m|v|, KE %.3e -> %.3e J, CG %d "
-                "iterations, residual %.1e\n",
-                phases, drift, e0, e1, b->stage.lastIterations(), b->stage.lastResidual());
+    std::printf(
+        "momentum, %d phase(s): drift %.2e of sum m|v|, KE %.3e -> %.3e J, CG %d "
+        "iterations, residual %.1e\n",
+        phases, drift, e0, e1, b->stage.lastIterations(), b->stage.lastResidual());
     INFO(phases << " phase(s)");
     CHECK(drift < 1e-12);
     // Backward Euler with a symmetric positive semi-definite viscous operator only dissipates.
@@ -418,12 +422,13 @@ TEST_CASE("implicit viscosity leaves translation and rigid rotation unchanged",
   rotating->stage.apply(w, StepContext{kBlobStep});
   Real worstRotation = 0;
   for (Index i = 0; i < w.particles.size(); ++i)
-    worstRotation = std::max(
-        worstRotation, (w.particles.v[i] - omega.cross(w.particles.x[i])).norm() /
-                           (omega.norm() * 0.02));
-  std::printf("rigid motion: translation changed by %.1e, rotation by %.1e, angular momentum by "
-              "%.1e (relative)\n",
-              worst, worstRotation, (angularMomentum(w) - l0).norm() / l0.norm());
+    worstRotation =
+        std::max(worstRotation,
+                 (w.particles.v[i] - omega.cross(w.particles.x[i])).norm() / (omega.norm() * 0.02));
+  std::printf(
+      "rigid motion: translation changed by %.1e, rotation by %.1e, angular momentum by "
+      "%.1e (relative)\n",
+      worst, worstRotation, (angularMomentum(w) - l0).norm() / l0.norm());
   CHECK(worstRotation < 1e-12);
   CHECK((angularMomentum(w) - l0).norm() < 1e-12 * l0.norm());
 }
@@ -480,7 +485,8 @@ TEST_CASE("viscosity stage rule: explicit for water, implicit for silicone oil",
     const Pipeline p = assemblePipeline(*w, PipelineOptions{});
     CHECK(p.hasStage("implicit_viscosity"));
     CHECK_FALSE(p.hasStage("viscosity"));
-    CHECK_THAT(reasonOf(p, "implicit_viscosity"), Catch::Contains("18.9x more steps"));  // 1.51 ms / 0.08 ms
+    CHECK_THAT(reasonOf(p, "implicit_viscosity"),
+               Catch::Contains("18.9x more steps"));  // 1.51 ms / 0.08 ms
   }
   SECTION("an acoustic solver step below the explicit limit keeps viscosity explicit") {
     auto w = make(1e-3, 0.001);
@@ -537,14 +543,16 @@ TEST_CASE("implicit viscosity: two-layer Couette flow matches the piecewise-line
   Real worst = 0;
   for (std::size_t k = 0; k < layers.size(); ++k) {
     const Real y = layers[k].y, u = layers[k].u;
-    const Real expected = y < 0.5 * H ? uInterface * y / (0.5 * H)
-                                      : uInterface + (kPlateSpeed - uInterface) * (y - 0.5 * H) / (0.5 * H);
+    const Real expected = y < 0.5 * H
+                              ? uInterface * y / (0.5 * H)
+                              : uInterface + (kPlateSpeed - uInterface) * (y - 0.5 * H) / (0.5 * H);
     worst = std::max(worst, std::abs(u - expected) / kPlateSpeed);
-    std::printf("  two layers t=%.3f s layer %2zu y/H %.3f: u/U %.4f, closed form %.4f\n", w.time, k,
-                y / H, u / kPlateSpeed, expected / kPlateSpeed);
+    std::printf("  two layers t=%.3f s layer %2zu y/H %.3f: u/U %.4f, closed form %.4f\n", w.time,
+                k, y / H, u / kPlateSpeed, expected / kPlateSpeed);
   }
-  std::printf("two-layer Couette (10000 cSt under 1000 cSt): %ld steps, max layer error %.2f %% of U\n",
-              w.stepCount, 100 * worst);
+  std::printf(
+      "two-layer Couette (10000 cSt under 1000 cSt): %ld steps, max layer error %.2f %% of U\n",
+      w.stepCount, 100 * worst);
   CHECK(worst < 0.05);
 }
 
@@ -564,11 +572,11 @@ TEST_CASE("implicit viscosity does not act on the step's own body-force incremen
   computeDensities(w, w.particles.density);
   ViscosityWeiler2018 stage;
   stage.attach(w);
-  const Real dt = 2e-3;                 // [s] 16 x the explicit viscous limit 0.125 d^2 / nu
-  const Vec3 g(0.0, -9.81, 0.0);        // [m/s^2]
+  const Real dt = 2e-3;           // [s] 16 x the explicit viscous limit 0.125 d^2 / nu
+  const Vec3 g(0.0, -9.81, 0.0);  // [m/s^2]
   for (Index i = 0; i < w.particles.size(); ++i) {
     w.particles.a[i] = g;
-    w.particles.v[i] = dt * g;          // v* = v^n + dt a with v^n = 0
+    w.particles.v[i] = dt * g;  // v* = v^n + dt a with v^n = 0
   }
   stage.apply(w, StepContext{dt});
   Real worst = 0;  // [1] largest |v - g dt| / |g dt|
@@ -583,6 +591,8 @@ TEST_CASE("implicit viscosity does not act on the step's own body-force incremen
   }
   stage.apply(w, StepContext{dt});
   Real slowest = 1;
-  for (Index i = 0; i < w.particles.size(); ++i) slowest = std::min(slowest, w.particles.v[i].x() / 0.01);
-  CHECK(slowest < 0.9);  // the first layer loses > 10 % of its speed to the no-slip plates in one step
+  for (Index i = 0; i < w.particles.size(); ++i)
+    slowest = std::min(slowest, w.particles.v[i].x() / 0.01);
+  CHECK(slowest <
+        0.9);  // the first layer loses > 10 % of its speed to the no-slip plates in one step
 }
