@@ -1,10 +1,8 @@
 // `tamponade run PROTOCOL [--out DIR] [--accuracy draft|standard|fine] [--threads N]`: assembles
 // and runs a protocol, writing frames, the coverage series and the report into the output folder.
 // The protocol is validated and the scene assembled before the folder is created.
-#include <unistd.h>
 
 #include <atomic>
-#include <chrono>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -17,11 +15,11 @@
 
 #include "protocols/format/parse_protocol.h"
 #include "protocols/report/report_format.h"
-#include "protocols/scenario/progress_text.h"
 #include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/run_scenario.h"
 #include "tools/accuracy_option.h"
 #include "tools/commands.h"
+#include "tools/progress_printer.h"
 #include "tools/protocol_error_print.h"
 
 namespace tools {
@@ -125,9 +123,7 @@ int runRun(Args args) {
     std::filesystem::create_directories(folder);
     for (const auto& note : scenario.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
 
-    const bool terminal = isatty(fileno(stderr)) != 0;
-    const auto start = std::chrono::steady_clock::now();
-    protocols::PlainProgressThrottle throttle;
+    ProgressPrinter printer;
     protocols::RunOptions run;
     run.outputFolder = folder;
     run.resume = !resume.empty();
@@ -138,21 +134,9 @@ int runRun(Args args) {
     if (options.accuracy)
       run.accuracyOverride =
           std::string(protocols::kAccuracyPresetNames[static_cast<std::size_t>(*options.accuracy)]);
-    double lastBar = -1.0;  // [s] wall time of the last bar redraw (at most 10 per second)
-    run.progress = [&](const protocols::RunProgress& p) {
-      const double elapsed =
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      if (terminal) {
-        if (elapsed - lastBar < 0.1) return;
-        lastBar = elapsed;
-        std::fputs(protocols::renderProgressBar(p, elapsed).c_str(), stderr);
-      } else if (throttle.due(protocols::progressFraction(p), elapsed)) {
-        std::fputs(protocols::renderProgressLine(p, elapsed).c_str(), stderr);
-        std::fflush(stderr);
-      }
-    };
+    run.progress = [&](const protocols::RunProgress& p) { printer(p); };
     const protocols::RunSummary summary = protocols::runScenario(protocol, scenario, run);
-    if (terminal) std::fputc('\n', stderr);
+    printer.finish();
     if (summary.stopped) {
       std::printf(
           "run stopped at t = %.6g s (step %ld) with a checkpoint; continue with\n"
