@@ -170,6 +170,9 @@ struct Scenario {
 // outputs.fields name that is not a particle field of the assembled pipeline (with "did you mean").
 Scenario assembleScenario(const Protocol& protocol, const ScenarioOptions& options = {});
 
+// INDSPH's Jacobi relaxation in eye scenes (the engine's default is 0.5; why: scenario.cpp).
+inline constexpr double kEyeIndsphRelaxation = 0.8;
+
 // Whether the named pressure solver iterates to accuracy.solver_tolerance (DFSPH, INDSPH, IISPH);
 // the explicit solvers (WCSPH, number_density) have no solve to stop.
 bool isImplicitSolver(const std::string& solver);
