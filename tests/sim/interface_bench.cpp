@@ -3,7 +3,9 @@
 //   sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] [R_per_d]
 //                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm]
 //                               [box_height_per_R] [cap|footprint] [tissue=N] [free=N] [E=Pa]
-//                               [shift=auto|on|off]   (tissue: an elastic floor of N layers)
+//                               [shift=auto|on|off] [density=KG_M3] [g=M_S2]
+//                                   (tissue: an elastic floor of N layers; density: the droplet's,
+//                                   g: gravity towards the floor, read against Young-Laplace)
 //                                                      sessile droplet contact angle
 //   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R] [layers]
 //                                      the cap fit on a static cap of exactly THETA
@@ -527,13 +529,18 @@ int main(int argc, char** argv) {
         c.tissueFreeLayers = std::atoi(value.c_str());
       else if (key == "E")
         c.tissueYoungsModulus = std::atof(value.c_str());
+      else if (key == "density")
+        c.dropletDensity = std::atof(value.c_str());
+      else if (key == "g")
+        c.gravity = std::atof(value.c_str());
       else if (key == "shift")
         c.backgroundPressure = value == "off"  ? Force::kOff
                                : value == "on" ? Force::kOn
                                                : Force::kAuto;
       else {
         std::fprintf(stderr,
-                     "sessile: unknown option '%s' (tissue=N free=N E=Pa shift=auto|on|off)\n",
+                     "sessile: unknown option '%s' (tissue=N free=N E=Pa shift=auto|on|off "
+                     "density=KG_M3 g=M_S2)\n",
                      a.c_str());
         return 2;
       }

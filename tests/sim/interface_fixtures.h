@@ -78,6 +78,7 @@ struct DropletSpec {
   int tissueFloorLayers = 0;
   int tissueFreeLayers = 0;
   Real tissueYoungsModulus = 5e4;  // [Pa]
+  Vec3 gravity = Vec3::Zero();     // [m/s^2]
 };
 
 // Fills the box from `origin` with nx x ny x nz lattice sites of spacing d, one particle at each
@@ -122,7 +123,7 @@ inline DropletScene dropletScene(const DropletSpec& s) {
   out.spec.closedTop = true;
   WorldParameters params;
   params.particleSpacing = d;
-  params.gravity = Vec3::Zero();
+  params.gravity = s.gravity;
   params.domain = tankDomain(out.spec, d);
   if (layered) {  // room for the layers behind the faces
     params.domain.extend(out.spec.innerMin - Vec3::Constant((s.wallLayers + 1) * d));

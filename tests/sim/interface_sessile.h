@@ -18,6 +18,7 @@
 #include "interface_fixtures.h"
 #include "interface_settle.h"
 #include "sim/measure/sessile_contact_angle.h"
+#include "sim/measure/sessile_young_laplace.h"
 
 namespace sim::testing {
 
@@ -43,6 +44,11 @@ struct SessileCase {
   int tissueFreeLayers = 0;                 // DropletSpec::tissueFreeLayers
   Real tissueYoungsModulus = 5e4;           // [Pa]
   Force backgroundPressure = Force::kAuto;  // the background_pressure stage (auto: the rule)
+  // Under gravity (towards the floor) a droplet heavier than the aqueous is pressed onto the
+  // floor and is no spherical cap: the footprint is then read against the Young-Laplace droplet
+  // (sim/measure/sessile_young_laplace.h) and the cap fit is printed for comparison only.
+  Real dropletDensity = 970;  // [kg/m^3] the droplet's (the aqueous is 1000)
+  Real gravity = 0;           // [m/s^2]
 };
 
 // The elastic tissue floor of the [contact_angle] tissue test and of `sim_contact_angle_bench
@@ -105,6 +111,8 @@ inline DropletScene sessileScene(const SessileCase& c) {
       std::max(c.boxHeightPerR * r0,
                std::max(sessileCapTop(r0, -c.startCos), sessileCapTop(r0, requestedCos)) + 2 * h);
   s.sigma = 0.04;
+  s.oilDensity = c.dropletDensity;
+  s.gravity = Vec3(0, -c.gravity, 0);
   s.oilViscosity = s.aqueousViscosity = c.viscosity;
   s.wallLayers = c.wallLayers;
   s.tissueFloorLayers = c.tissueFloorLayers;
@@ -180,29 +188,70 @@ inline SessileResult runSessile(const SessileCase& c) {
   r.adhesion = pipeline.hasStage("wall_adhesion");
   const WallPlane floor{Vec3(0, scene.floorHeight, 0), Vec3::UnitY()};
   // Interface points closer than d to the floor are left out: the wall layer distorts them.
-  const auto footprintAngle = [](const CapFit& fit, const FloorContact& contact) {
-    return contact.oil == 0 ? Real(180)
-                            : capAngleOfFootprint(fit.volume, contact.radius, contact.height);
+  // [1/m^2] delta rho g / sigma of the Young-Laplace droplet (0: the spherical cap).
+  const Real capillaryConstant = (c.dropletDensity - w.materials[scene.aqueous].restDensity) *
+                                 c.gravity / w.materials.interfacialTensions().front().sigma;
+  require(
+      capillaryConstant >= 0,
+      "sessile droplet under gravity: it must be heavier than the aqueous to stay on the floor");
+  const auto sectionAngle = [&](Real volume, Real radius, Real height) {
+    return capillaryConstant > 0
+               ? youngLaplaceAngleOfFootprint(volume, capillaryConstant, radius, height)
+               : capAngleOfFootprint(volume, radius, height);
+  };
+  const auto footprintAngle = [&](const CapFit& fit, const FloorContact& contact) {
+    return contact.oil == 0 ? Real(180) : sectionAngle(fit.volume, contact.radius, contact.height);
+  };
+  // Under gravity the cap fit's place is taken by the Young-Laplace outline fit, which costs about
+  // a second: it is read every 10th step (the mean over the last fifth then has 20+ samples).
+  int calls = 0;
+  Real lastOutlineAngle = 0;
+  const auto outlineAngle = [&](const World& world, const CapFit& fit) {
+    std::vector<Vec3> points = interfacePairMidpoints(world, scene.oil);
+    std::erase_if(points, [&](const Vec3& x) { return x.y() - scene.floorHeight < spacing; });
+    Vec3 centroid = Vec3::Zero();
+    Real volume = 0;
+    const auto& p = world.particles;
+    for (Index i = 0; i < p.size(); ++i)
+      if (p.material[i] == scene.oil) {
+        const Real v = p.mass[i] / p.density[i];
+        centroid += v * p.x[i];
+        volume += v;
+      }
+    return youngLaplaceAngleOfPoints(points, floor.point, floor.normal, centroid / volume,
+                                     fit.volume, capillaryConstant);
   };
   const auto measure = [&](const World& world) {
     const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
-    return c.footprint
-               ? footprintAngle(fit, floorContact(world, scene.oil, spacing, scene.floorHeight))
-               : fit.contactAngle;
+    if (c.footprint)
+      return footprintAngle(fit, floorContact(world, scene.oil, spacing, scene.floorHeight));
+    if (capillaryConstant > 0) {
+      if (calls++ % 10 == 0) lastOutlineAngle = outlineAngle(world, fit);
+      return lastOutlineAngle;
+    }
+    return fit.contactAngle;
   };
   const auto describe = [&](const World& world) {
     const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
     const FloorContact contact = floorContact(world, scene.oil, spacing, scene.floorHeight);
-    char line[320];
+    // The layer's oil as a disc of its area (one particle per d^2): a second footprint reading
+    // that does not hang on the outermost particle.
+    const Real areaRadius = std::sqrt(contact.oil / std::numbers::pi) * spacing;  // [m]
+    char line[480];
+    const int used = capillaryConstant > 0
+                         ? std::snprintf(line, sizeof line, "Young-Laplace outline fit %.1f deg; ",
+                                         outlineAngle(world, fit))
+                         : 0;
     std::snprintf(
-        line, sizeof line,
+        line + used, sizeof line - used,
         "theta = %.1f deg (through oil; centroid %.1f deg; free sphere %.1f deg, R = %.2f mm, "
         "rms %.3f mm)  "
         "floor layer: %d oil, %d aqueous under it, contact radius %.2f d, footprint angle "
-        "%.1f deg",
+        "%.1f deg (by its area %.1f deg)",
         fit.contactAngle, fit.centroidAngle, fit.sphereAngle, fit.sphere.radius * 1e3,
         fit.sphere.rmsResidual * 1e3, contact.oil, contact.aqueousUnder, contact.radius / spacing,
-        footprintAngle(fit, contact));
+        footprintAngle(fit, contact),
+        contact.oil == 0 ? 180.0 : sectionAngle(fit.volume, areaRadius, contact.height));
     return std::string(line);
   };
   for (int k = 0; k < c.relaxSteps; ++k) {
