@@ -22,6 +22,10 @@ out=$("$bench" --time 2>&1); rc=$?
 [ "$rc" -eq 2 ] || fail "--time without a value exited $rc, expected 2"
 grep -q "needs a value" <<<"$out" || fail "no missing-value message: $out"
 
+out=$("$bench" --gravity 9.81 --out /nonexistent/folder 2>&1); rc=$?
+[ "$rc" -eq 2 ] || fail "--gravity with the default (light) droplet exited $rc, expected 2"
+grep -q "needs a droplet heavier than the aqueous" <<<"$out" || fail "no --gravity message: $out"
+
 out=$("$bench" --out /nonexistent/folder 2>&1); rc=$?
 [ "$rc" -eq 1 ] || fail "an unwritable --out exited $rc, expected 1"
 grep -q "cannot write to '/nonexistent/folder'" <<<"$out" || fail "no folder message: $out"

@@ -2,19 +2,22 @@
 // angle is worth at each resolution, and what it costs. For each requested angle, each resolution
 // R0 / d and each start (the requested cap, or the hemisphere so the contact line has to travel)
 // it runs the sessile droplet of interface_sessile.h (INDSPH, 0.2 d jitter, R0 = 3 mm, sigma
-// 0.04 N/m, no gravity) on a floor of three wall layers (the tests' wall) or of one Akinci layer
-// (the eye wall next to elastic tissue, --walls single) or of elastic tissue (--walls tissue), and
-// writes one row: the angle measured (window mean over the last fifth), at the end, its error, the
-// issue's tolerance (+-5 deg for 30-150, +-10 outside), particles, steps and wall time. The cap fit
-// measures up to 150 deg; above, it cannot tell 165 from 180 and the footprint measure
-// (capAngleOfFootprint) is used; the table names which.
+// 0.04 N/m, no gravity unless --gravity) on a floor of three wall layers (the tests' wall) or of
+// one Akinci layer (the eye wall next to elastic tissue, --walls single) or of elastic tissue
+// (--walls tissue), and writes one row: the angle measured (window mean over the last fifth), at
+// the end, its error, the tolerance (+-5 deg for 30-150, +-10 outside), particles, steps
+// and wall time. The cap fit measures up to 150 deg; above, it cannot tell 165 from 180 and the
+// footprint measure (capAngleOfFootprint) is used; the table names which.
 //
 // Files: DIR/contact_angle_bench.csv and DIR/contact_angle_bench.md, rewritten after every run,
 // so an interrupted sweep keeps the rows it finished (the markdown says how many of how many).
 //
 // usage: sim_contact_angle_bench [--angles 60,120,150,165] [--resolutions 6,8] [--time 0.3]
 //                                [--start cap|hemisphere|both] [--viscosity 0.005]
-//                                [--walls layered|single|tissue|both|all] [--out DIR]
+//                                [--walls layered|single|tissue|both|all] [--gravity G]
+//                                [--droplet-density RHO] [--out DIR]
+// With --gravity the droplet (heavier than the aqueous) is pressed onto the floor and the angle
+// is the Young-Laplace outline fit's (sim/measure/sessile_young_laplace.h) at every angle.
 // Threads: OMP_NUM_THREADS. Numbers depend on the machine and its load.
 #include <omp.h>
 
@@ -37,7 +40,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: sim_contact_angle_bench [--angles 60,120,150,165] [--resolutions 6,8] [--time 0.3]\n"
     "                               [--start cap|hemisphere|both] [--viscosity 0.005]\n"
-    "                               [--walls layered|single|tissue|both|all] [--out DIR]\n"
+    "                               [--walls layered|single|tissue|both|all] [--gravity G]\n"
+    "                               [--droplet-density RHO] [--out DIR]\n"
     "  --angles       requested contact angles through the oil [deg], each in [1, 179]\n"
     "  --resolutions  R0 / d, droplet radius over particle spacing, each in [4, 24]\n"
     "  --time         simulated time per run [s] (a capillary time is 26 ms)\n"
@@ -53,6 +57,10 @@ constexpr const char* kUsage =
     "free)\n"
     "                 on the layered wall, its top layer wetted, as the retina over an elastic\n"
     "                 sclera (session 15); both: layered and single; all: the three\n"
+    "  --gravity      [m/s^2] towards the floor (default 0); the droplet must then be heavier\n"
+    "                 than the aqueous (1000 kg/m^3), and the angle is read by fitting the\n"
+    "                 Young-Laplace outline of its volume (docs/interface.md, session 20)\n"
+    "  --droplet-density  [kg/m^3] default 970 (silicone oil); 1760 is perfluoro-n-octane\n"
     "  --out          folder for contact_angle_bench.csv and .md (default: .)\n";
 
 struct Options {
@@ -62,6 +70,8 @@ struct Options {
   std::vector<std::string> starts{"cap"};
   double viscosity = 0.005;
   std::vector<std::string> walls{"layered"};
+  double gravity = 0;           // [m/s^2]
+  double dropletDensity = 970;  // [kg/m^3]
   std::string out = ".";
 };
 
@@ -130,6 +140,10 @@ Options parse(int argc, char** argv) {
       o.starts = parseChoice(flag, value, {"cap", "hemisphere"});
     else if (flag == "--walls")
       o.walls = parseChoice(flag, value, {"layered", "single", "tissue"});
+    else if (flag == "--gravity")
+      o.gravity = parseList(flag, value, 0, 1000).front();
+    else if (flag == "--droplet-density")
+      o.dropletDensity = parseList(flag, value, 100, 30000).front();
     else if (flag == "--out")
       o.out = value;
     else
@@ -146,8 +160,9 @@ bool writeTables(const Options& o, const std::vector<Row>& rows, std::size_t pla
          "tolerance_deg,within,particles,steps,wall_s,finite\n";
   md << "Contact angle benchmark (validation 3): sessile droplet, INDSPH, R0 = 3 mm, sigma = 0.04 "
         "N/m, viscosity "
-     << o.viscosity << " Pa s, " << o.time << " s simulated, " << omp_get_max_threads()
-     << " thread(s). " << rows.size() << " of " << planned << " runs done.\n\n"
+     << o.viscosity << " Pa s, droplet " << o.dropletDensity << " kg/m^3, gravity " << o.gravity
+     << " m/s^2, " << o.time << " s simulated, " << omp_get_max_threads() << " thread(s). "
+     << rows.size() << " of " << planned << " runs done.\n\n"
      << "| requested [deg] | start | walls | R0/d | measure | measured [deg] | at the end | "
         "error | tolerance | within | particles | steps | wall [s] |\n"
         "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
@@ -182,6 +197,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "sim_contact_angle_bench: %s\n\n%s", e.what(), kUsage);
     return 2;
   }
+  if (o.gravity > 0 && o.dropletDensity <= 1000) {
+    std::fprintf(stderr,
+                 "sim_contact_angle_bench: --gravity needs a droplet heavier than the aqueous "
+                 "(1000 kg/m^3) or it floats off the floor: give --droplet-density, e.g. 1760\n");
+    return 2;
+  }
   const std::size_t planned =
       o.walls.size() * o.angles.size() * o.resolutions.size() * o.starts.size();
   std::vector<Row> rows;
@@ -207,7 +228,11 @@ int main(int argc, char** argv) {
           c.halfWidthPerR = angle < 90 ? 2.0 : 1.5;
           c.viscosity = o.viscosity;
           c.tEnd = o.time;
-          c.footprint = angle > 150;  // the cap fit cannot resolve steeper caps
+          c.gravity = o.gravity;
+          c.dropletDensity = o.dropletDensity;
+          // Without gravity the cap fit cannot resolve steeper caps; the outline fit under
+          // gravity is read at every angle.
+          c.footprint = angle > 150 && o.gravity == 0;
           std::printf("run %zu of %zu: %g deg from the %s, %s walls, R0 = %g d ...\n",
                       rows.size() + 1, planned, angle, start.c_str(), walls.c_str(), resolution);
           std::fflush(stdout);
@@ -215,7 +240,7 @@ int main(int argc, char** argv) {
                   resolution,
                   start,
                   walls,
-                  c.footprint ? "footprint" : "cap fit",
+                  c.footprint ? "footprint" : (o.gravity > 0 ? "outline fit" : "cap fit"),
                   testing::runSessile(c)};
           std::printf("  %.1f deg (%.1f at the end), %zu particles, %ld steps, %.0f s\n",
                       row.result.angle, row.result.finalAngle, row.result.particles,
