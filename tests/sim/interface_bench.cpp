@@ -152,8 +152,9 @@ int sessile(const testing::SessileCase& c) {
       "measured %.1f deg by the %s (mean of the last fifth; %.1f at the end) after %.3f s; %zu "
       "particles, %ld steps, wall %.1f s%s\n",
       c.theta, std::acos(-c.startCos) * 180 / std::numbers::pi, c.solver.c_str(), c.wallLayers,
-      c.perR, r.angle, c.footprint ? "footprint" : "cap fit", r.finalAngle, c.tEnd, r.particles,
-      r.steps, r.seconds, r.finite ? "" : " (NOT FINITE)");
+      c.perR, r.angle,
+      c.footprint ? "footprint" : (c.gravity > 0 ? "Young-Laplace outline fit" : "cap fit"),
+      r.finalAngle, c.tEnd, r.particles, r.steps, r.seconds, r.finite ? "" : " (NOT FINITE)");
   return r.finite ? 0 : 1;
 }
 
