@@ -137,10 +137,10 @@ std::vector<std::pair<Real, Real>> youngLaplaceOutline(Real volume, Real capilla
   require(samples >= 1, "Young-Laplace outline needs at least one sample");
   const Real theta = thetaDeg * std::numbers::pi / 180;
   const Real b = apexCurvature(volume, capillaryConstant, theta);
-  const Profile whole = integrate(b, capillaryConstant, theta, -1);
-  // Arc length by the step count of a second pass: a sample every (steps / samples) steps.
+  // Arc length by the step count: a sample every (steps / samples) steps.
   std::vector<std::pair<Real, Real>> all;  // (depth below the apex, radius) per step end
-  integrate(b, capillaryConstant, theta, -1, [&](Real z, Real x) { all.emplace_back(z, x); });
+  const Profile whole =
+      integrate(b, capillaryConstant, theta, -1, [&](Real z, Real x) { all.emplace_back(z, x); });
   std::vector<std::pair<Real, Real>> out;
   out.emplace_back(whole.shape.height, 0.0);
   for (int k = 1; k <= samples; ++k) {
