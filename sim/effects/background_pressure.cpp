@@ -51,7 +51,10 @@ void BackgroundPressure::apply(World& world, const StepContext& context) {
     for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
       wall += walls.volume[nw.indices[k]] * gradB[k];
     bracket += (2.0 * vi2 / world.restVolumeOf(i)) * wall;
-    shift[i] = (-dt * pressure_ / p.mass[i]) * bracket;
+    // rho_ref V_i instead of m_i: the shift is a displacement that depends only on the particle
+    // arrangement, the same in every phase (see the header: with m_i a heavy droplet was shifted
+    // less than the liquid around it and settled at another contact angle).
+    shift[i] = (-dt * pressure_ / (referenceDensity_ * vi)) * bracket;
     // Contact-line particles (a wall and the other liquid in reach) are not shifted: there the
     // shift moves the contact line itself. Measured on the cavity's 120 deg lens (closed form
     // 0.225 of the wall): 0.208 with them shifted, 0.228-0.234 without (docs/interface.md,

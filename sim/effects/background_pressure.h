@@ -14,20 +14,27 @@
 //
 // What: the background pressure of the transport-velocity formulation (Adami, Hu & Adams 2013,
 // J. Comput. Phys. 241:292, eq. 14): particles are advected with v + dv instead of v,
-//   dv_i = -(dt p_bg / m_i) [ sum_j (V_i^2 + V_j^2) gradW_ij + 2 V_i^2 sum_b (V_b / V0_i) gradW_ib
-//   ],
+//   dv_i = -(dt p_bg / (rho_ref V_i)) [ sum_j (V_i^2 + V_j^2) gradW_ij
+//                                       + 2 V_i^2 sum_b (V_b / V0_i) gradW_ib ],
 // V = m / rho (= 1 / delta under INDSPH), walls mirrored at p_bg as the Akinci pressure mirror
-// does. The bracket is the kernel's consistency error, zero on a complete regular
-// neighbourhood, so dv only moves particles towards a uniform arrangement, against the clumping;
-// the momentum equation does not see it (the formulation's extra stress rho v (v~ - v) is of
-// second order in dv and left out). Why not in the momentum equation: tried first, the same
-// bracket as a force. It held the jump as well, but it resists every rearrangement of the
-// particles like an elastic lattice: the l = 2 droplet ran 22 % fast and damped at 45 1/s
-// (physical 4), and in the eye (default_eye.toml, upright) the oil rose to the superior
-// quadrant 4x slower (coverage 0.66 -> 0.675 instead of -> 0.805 in 0.6 s): the pinning of
-// slow buoyant motion that the gravity reference removed (docs/interface.md, validation 1b).
-// Contact-line particles (a wall neighbour and a colour gradient of the first tension pair) are
-// not shifted: there the shift moved the contact line itself (the cavity's 120 deg lens covered
+// does, rho_ref the mean rest density of the tension pair. Adami et al. divide by m_i, i.e. by
+// the particle's own density (they had one phase): then the shift of a phase scales with 1 /
+// rho, which is no physics (the shift is not a force) and made the contact angle depend on the
+// droplet's density. A 150 deg droplet at zero gravity (R0/8, from its cap, 0.6 s, mean of the
+// last fifth) read 146.9 at 970 kg/m^3 and 164.0 at 1760 (swinging 158-167) with m_i; with
+// rho_ref V_i, 147.2 and 148.9 (docs/interface.md, validation 3, session 21). rho_ref is also
+// the density of the time-step limit below, which therefore now holds for every phase (with m_i
+// a phase lighter than the mean was shifted faster than the limit assumed). The bracket is the
+// kernel's consistency error, zero on a complete regular neighbourhood, so dv only moves particles
+// towards a uniform arrangement, against the clumping; the momentum equation does not see it (the
+// formulation's extra stress rho v (v~ - v) is of second order in dv and left out). Why not in the
+// momentum equation: tried first, the same bracket as a force. It held the jump as well, but it
+// resists every rearrangement of the particles like an elastic lattice: the l = 2 droplet ran 22 %
+// fast and damped at 45 1/s (physical 4), and in the eye (default_eye.toml, upright) the oil rose
+// to the superior quadrant 4x slower (coverage 0.66 -> 0.675 instead of -> 0.805 in 0.6 s): the
+// pinning of slow buoyant motion that the gravity reference removed (docs/interface.md, validation
+// 1b). Contact-line particles (a wall neighbour and a colour gradient of the first tension pair)
+// are not shifted: there the shift moved the contact line itself (the cavity's 120 deg lens covered
 // 0.208 of the wall instead of 0.225; unshifted 0.228-0.234; docs/interface.md, validation 3,
 // session 12).
 // At a free surface the shift would pull the surface in, so the stage runs only in closed
@@ -64,7 +71,7 @@ inline constexpr Real kBackgroundCourant = 0.2;
 
 class BackgroundPressure final : public Effect {
  public:
-  // pressure [Pa] > 0; referenceDensity [kg/m^3] > 0 for the time-step limit.
+  // pressure [Pa] > 0; referenceDensity [kg/m^3] > 0: rho_ref of the shift and the time-step limit.
   BackgroundPressure(Real pressure, Real referenceDensity);
   std::string_view name() const override { return "background_pressure"; }
   void attach(World& world) override;
