@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 
 namespace sim {
 
@@ -233,6 +234,8 @@ CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& w
   out.centroidAngle = capAngleOfCentroid(volume, (centroid - wall.point).dot(n));
   const Real u = std::cos(out.contactAngle * std::numbers::pi / 180.0);
   out.capRadius = capRadius(volume, u);
+  out.points = std::move(points);
+  out.centroid = centroid;
   return out;
 }
 

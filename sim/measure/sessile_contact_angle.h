@@ -68,6 +68,11 @@ struct CapFit {
   Real centroidAngle = 0.0;  // [deg] the cap of that volume with the droplet's centroid height
                              //       (capAngleOfCentroid), a check without interface points
   int pointCount = 0;
+  // What the fit was made of, for further fits of the same droplet (the Young-Laplace outline
+  // fit under gravity, sessile_young_laplace.h): the interface points left after the exclusion
+  // near the wall, and the droplet's volume-weighted centroid.
+  std::vector<Vec3> points;      // [m]
+  Vec3 centroid = Vec3::Zero();  // [m]
 };
 
 // The contact angle of a droplet of `dropletMaterial` sitting on the wall plane: the interface

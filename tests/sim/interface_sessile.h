@@ -206,19 +206,8 @@ inline SessileResult runSessile(const SessileCase& c) {
   // a second: it is read every 10th step (the mean over the last fifth then has 20+ samples).
   int calls = 0;
   Real lastOutlineAngle = 0;
-  const auto outlineAngle = [&](const World& world, const CapFit& fit) {
-    std::vector<Vec3> points = interfacePairMidpoints(world, scene.oil);
-    std::erase_if(points, [&](const Vec3& x) { return x.y() - scene.floorHeight < spacing; });
-    Vec3 centroid = Vec3::Zero();
-    Real volume = 0;
-    const auto& p = world.particles;
-    for (Index i = 0; i < p.size(); ++i)
-      if (p.material[i] == scene.oil) {
-        const Real v = p.mass[i] / p.density[i];
-        centroid += v * p.x[i];
-        volume += v;
-      }
-    return youngLaplaceAngleOfPoints(points, floor.point, floor.normal, centroid / volume,
+  const auto outlineAngle = [&](const CapFit& fit) {
+    return youngLaplaceAngleOfPoints(fit.points, floor.point, floor.normal, fit.centroid,
                                      fit.volume, capillaryConstant);
   };
   const auto measure = [&](const World& world) {
@@ -226,7 +215,7 @@ inline SessileResult runSessile(const SessileCase& c) {
     if (c.footprint)
       return footprintAngle(fit, floorContact(world, scene.oil, spacing, scene.floorHeight));
     if (capillaryConstant > 0) {
-      if (calls++ % 10 == 0) lastOutlineAngle = outlineAngle(world, fit);
+      if (calls++ % 10 == 0) lastOutlineAngle = outlineAngle(fit);
       return lastOutlineAngle;
     }
     return fit.contactAngle;
@@ -240,7 +229,7 @@ inline SessileResult runSessile(const SessileCase& c) {
     char line[480];
     const int used = capillaryConstant > 0
                          ? std::snprintf(line, sizeof line, "Young-Laplace outline fit %.1f deg; ",
-                                         outlineAngle(world, fit))
+                                         outlineAngle(fit))
                          : 0;
     std::snprintf(
         line + used, sizeof line - used,
