@@ -6,6 +6,8 @@
 #include <numbers>
 #include <utility>
 
+#include "sim/measure/scan_golden_minimum.h"
+
 namespace sim {
 
 SphereFit fitSphere(const std::vector<Vec3>& points) {
@@ -158,36 +160,10 @@ Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, co
     }
     return sum;
   };
-  // Coarse scan in 1 deg steps, then golden-section search in the bracket of the best sample.
+  // 1 deg samples over 1-179 deg, then golden-section search in the best sample's bracket.
   const Real degree = std::numbers::pi / 180;
-  Real best = 1 * degree, bestCost = cost(best);
-  for (int k = 2; k <= 179; ++k) {
-    const Real c = cost(k * degree);
-    if (c < bestCost) {
-      bestCost = c;
-      best = k * degree;
-    }
-  }
-  Real lo = best - degree, hi = best + degree;
-  const Real g = 0.5 * (std::sqrt(5.0) - 1);
-  Real a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-  Real ca = cost(a), cb = cost(b);
-  for (int k = 0; k < 60; ++k) {
-    if (ca < cb) {
-      hi = b;
-      b = a;
-      cb = ca;
-      a = hi - g * (hi - lo);
-      ca = cost(a);
-    } else {
-      lo = a;
-      a = b;
-      ca = cb;
-      b = lo + g * (hi - lo);
-      cb = cost(b);
-    }
-  }
-  return 0.5 * (lo + hi) / degree;
+  return scanGoldenMinimum([&](Real thetaDeg) { return cost(thetaDeg * degree); },
+                           ScanGoldenSearch{1, 179, 1, 0, 180, 60});
 }
 
 std::vector<Vec3> interfacePairMidpoints(const World& world, int material) {

@@ -8,6 +8,7 @@
 #include <numbers>
 
 #include "sim/core/error.h"
+#include "sim/measure/scan_golden_minimum.h"
 
 namespace sim {
 namespace {
@@ -201,23 +202,9 @@ Real youngLaplaceAngleOfPoints(const std::vector<Vec3>& points, const Vec3& wall
     }
     return sum;
   };
-  Real best = 90, bestCost = cost(best);
-  for (Real theta = 92; theta <= 178; theta += 2) {
-    const Real c = cost(theta);
-    if (c < bestCost) bestCost = c, best = theta;
-  }
-  Real lo = std::max<Real>(90, best - 2), hi = std::min<Real>(179, best + 2);
-  const Real g = 0.5 * (std::sqrt(5.0) - 1);
-  Real a = hi - g * (hi - lo), b = lo + g * (hi - lo);
-  Real ca = cost(a), cb = cost(b);
-  for (int k = 0; k < 20; ++k) {
-    if (ca < cb) {
-      hi = b, b = a, cb = ca, a = hi - g * (hi - lo), ca = cost(a);
-    } else {
-      lo = a, a = b, ca = cb, b = lo + g * (hi - lo), cb = cost(b);
-    }
-  }
-  return 0.5 * (lo + hi);
+  // 2 deg samples over 90-178 deg (the outline fit serves non-wetting droplets), then 20
+  // golden-section steps (the 4 deg bracket shrinks to 3e-4 deg).
+  return scanGoldenMinimum(cost, ScanGoldenSearch{90, 178, 2, 90, 179, 20});
 }
 
 }  // namespace sim
