@@ -14,6 +14,7 @@
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/effects/wall_adhesion_young.h"
 #include "sim/fluid/density.h"
+#include "sim/measure/scan_golden_minimum.h"
 #include "sim/measure/sessile_contact_angle.h"
 
 using namespace sim;
@@ -408,6 +409,28 @@ TEST_CASE("The footprint angle inverts a cap's section radius at a height", "[un
   CHECK(capAngleOfFootprint(volume, 2 * r0, y) == 90.0);  // wider than the hemisphere
   CHECK(capAngleOfFootprint(volume, 0.0, y) == 180.0);    // narrower than the touching sphere
   CHECK_THROWS_AS(capAngleOfFootprint(0.0, 1e-3, y), SimError);
+}
+
+TEST_CASE("The fits' minimiser finds the global minimum among local ones", "[unit][interface]") {
+  // A parabola with a ripple of period 5: local minima every 5 units, the global one near 37.3
+  // (the ripple's cos has its trough at 37.5, the parabola pulls it towards 37.3). A pure golden
+  // search over [1, 179] would stop in whichever ripple its first bracket holds.
+  const auto cost = [](Real x) {
+    return 0.01 * (x - 37.3) * (x - 37.3) - std::cos(2 * std::numbers::pi * (x - 37.5) / 5);
+  };
+  const Real found = scanGoldenMinimum(cost, ScanGoldenSearch{1, 179, 1, 0, 180, 60});
+  // Its exact place: where the derivative vanishes, by bisection near 37.4.
+  Real lo = 36.5, hi = 38.5;
+  const auto slope = [](Real x) {
+    return 0.02 * (x - 37.3) +
+           2 * std::numbers::pi / 5 * std::sin(2 * std::numbers::pi * (x - 37.5) / 5);
+  };
+  for (int k = 0; k < 100; ++k) (slope(0.5 * (lo + hi)) > 0 ? hi : lo) = 0.5 * (lo + hi);
+  CHECK(found == Approx(0.5 * (lo + hi)).margin(1e-6));
+  // A minimum beyond the allowed range ends at its bound (the outline fit's 179 deg).
+  const Real bounded = scanGoldenMinimum([](Real x) { return (x - 200) * (x - 200); },
+                                         ScanGoldenSearch{90, 178, 2, 90, 179, 20});
+  CHECK(bounded == Approx(179).margin(1e-3));
 }
 
 TEST_CASE("Sphere fit recovers a sphere and the cap angle from points on it", "[unit][interface]") {
