@@ -201,7 +201,6 @@ CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& w
   centroid /= volume;
   CapFit out;
   out.sphere = fitSphere(points);
-  out.pointCount = static_cast<int>(points.size());
   const Real zc = (out.sphere.centre - wall.point).dot(n);
   out.sphereAngle =
       std::acos(std::clamp(-zc / out.sphere.radius, Real(-1), Real(1))) * 180.0 / std::numbers::pi;

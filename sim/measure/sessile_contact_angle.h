@@ -67,7 +67,6 @@ struct CapFit {
   Real volume = 0.0;         // [m^3] the droplet's volume, sum of m_i / rho_i
   Real centroidAngle = 0.0;  // [deg] the cap of that volume with the droplet's centroid height
                              //       (capAngleOfCentroid), a check without interface points
-  int pointCount = 0;
   // What the fit was made of, for further fits of the same droplet (the Young-Laplace outline
   // fit under gravity, sessile_young_laplace.h): the interface points left after the exclusion
   // near the wall, and the droplet's volume-weighted centroid.

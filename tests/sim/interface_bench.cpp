@@ -186,10 +186,10 @@ int sessileStatic(const testing::SessileCase& c) {
                           180 / std::numbers::pi;
     std::printf(
         "  exclude %.1f d: volume cap %.2f deg (R = %.3f mm); free sphere: algebraic "
-        "%.2f deg (R = %.3f mm, rms %.3f mm), geometric %.2f deg (R = %.3f mm); %d "
+        "%.2f deg (R = %.3f mm, rms %.3f mm), geometric %.2f deg (R = %.3f mm); %zu "
         "points\n",
         exclude, fit.contactAngle, fit.capRadius * 1e3, fit.sphereAngle, fit.sphere.radius * 1e3,
-        fit.sphere.rmsResidual * 1e3, geoAngle, geo.radius * 1e3, fit.pointCount);
+        fit.sphere.rmsResidual * 1e3, geoAngle, geo.radius * 1e3, fit.points.size());
   }
   // Static forces on the cap as built (densities by summation), each stage alone: the radial
   // sums sum_i m_i a_i.e_r over the particles within `reach` of the axis. Exact cap of radius R,
