@@ -36,6 +36,8 @@ SessileShape youngLaplaceSessile(Real volume, Real capillaryConstant, Real theta
 // The same droplet's outline as (height above the wall, radius) pairs [m] from the apex down to
 // the wall, `samples` + 1 of them evenly along the profile. The height falls monotonically along
 // it (the tangent turns from 0 to theta < 180 deg), so the radius is a function of the height.
+// The samples are the integration's step ends (steps of 1e-2 of the apex radius or capillary
+// length, whichever is smaller): asked for more samples than steps, consecutive ones repeat.
 std::vector<std::pair<Real, Real>> youngLaplaceOutline(Real volume, Real capillaryConstant,
                                                        Real thetaDeg, int samples = 400);
 
@@ -46,6 +48,14 @@ std::vector<std::pair<Real, Real>> youngLaplaceOutline(Real volume, Real capilla
 Real youngLaplaceAngleOfFootprint(Real volume, Real capillaryConstant, Real sectionRadius,
                                   Real height);
 
+// [m] Root-mean-square distance of the interface `points` from the outline of the Young-Laplace
+// droplet of `volume` [m^3], c and `thetaDeg`, in the meridian plane of the droplet sitting on the
+// wall plane through `wallPoint` (unit normal `wallNormal` into the fluid) with its axis through
+// `axisPoint`: the cost of the outline fits below.
+Real youngLaplaceOutlineResidual(const std::vector<Vec3>& points, const Vec3& wallPoint,
+                                 const Vec3& wallNormal, const Vec3& axisPoint, Real volume,
+                                 Real capillaryConstant, Real thetaDeg);
+
 // The angle [deg] through the droplet, in [90, 179], of the Young-Laplace droplet of `volume`
 // [m^3] (c as above) sitting on the wall plane through `wallPoint` with unit normal `wallNormal`
 // (into the fluid), its axis through `axisPoint`, whose outline fits the interface `points` best
@@ -54,5 +64,24 @@ Real youngLaplaceAngleOfFootprint(Real volume, Real capillaryConstant, Real sect
 Real youngLaplaceAngleOfPoints(const std::vector<Vec3>& points, const Vec3& wallPoint,
                                const Vec3& wallNormal, const Vec3& axisPoint, Real volume,
                                Real capillaryConstant);
+
+// The Young-Laplace droplet fitted with its capillary constant free as well as its angle:
+// axisymmetric drop shape analysis (Rotenberg, Boruvka & Neumann 1983), which reads the contact
+// angle and the interfacial tension of a real droplet from its outline alone. Here the tension is
+// known, so the fitted c says how the simulated droplet's balance of gravity against tension
+// departs from the nominal one, and the angle is read without assuming that balance.
+struct YoungLaplaceShapeFit {
+  Real angle = 0;              // [deg] through the droplet, in [90, 179]
+  Real capillaryConstant = 0;  // [1/m^2] the fitted c
+  Real nominalRatio = 0;       // [1] nominal c / fitted c: sigma_eff / sigma if delta rho g holds
+  Real rmsResidual = 0;        // [m] of the points from the fitted outline
+};
+
+// youngLaplaceAngleOfPoints with c free: nominal c / c is searched over [0.5, 1.5] (0.05 steps,
+// then a golden-section search), the angle fitted for each. `nominalCapillaryConstant` > 0.
+YoungLaplaceShapeFit youngLaplaceShapeOfPoints(const std::vector<Vec3>& points,
+                                               const Vec3& wallPoint, const Vec3& wallNormal,
+                                               const Vec3& axisPoint, Real volume,
+                                               Real nominalCapillaryConstant);
 
 }  // namespace sim

@@ -155,6 +155,10 @@ int sessile(const testing::SessileCase& c) {
       c.perR, r.angle,
       c.footprint ? "footprint" : (c.gravity > 0 ? "Young-Laplace outline fit" : "cap fit"),
       r.finalAngle, c.tEnd, r.particles, r.steps, r.seconds, r.finite ? "" : " (NOT FINITE)");
+  if (c.gravity > 0)
+    std::printf(
+        "  shape fit with c free (mean of the last fifth): %.1f deg, sigma_eff / sigma %.3f\n",
+        r.shapeAngle, r.shapeSigmaRatio);
   return r.finite ? 0 : 1;
 }
 

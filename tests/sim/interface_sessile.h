@@ -65,6 +65,10 @@ struct SessileResult : AngleRunResult {
   // At the end, in units of d: how far the lowest fluid particle is below the floor (negative:
   // all above it), and the largest displacement of a tissue particle (tissue floors only).
   Real deepestFluidBelowFloor = 0;
+  // Under gravity: the Young-Laplace shape fit with c free (youngLaplaceShapeOfPoints), means
+  // over the last fifth of the run: its angle [deg] and nominal c / fitted c [1]. 0 without.
+  Real shapeAngle = 0;
+  Real shapeSigmaRatio = 0;
   Real maxTissueDisplacement = 0;
 };
 
@@ -210,11 +214,18 @@ inline SessileResult runSessile(const SessileCase& c) {
     return youngLaplaceAngleOfPoints(fit.points, floor.point, floor.normal, fit.centroid,
                                      fit.volume, capillaryConstant);
   };
+  // The shape fit frees c as well (a few tens of outline fits): every 50th measurement.
+  const auto shapeFit = [&](const CapFit& fit) {
+    return youngLaplaceShapeOfPoints(fit.points, floor.point, floor.normal, fit.centroid,
+                                     fit.volume, capillaryConstant);
+  };
+  std::vector<YoungLaplaceShapeFit> shapeFits;
   const auto measure = [&](const World& world) {
     const CapFit fit = fitSessileCap(world, scene.oil, floor, spacing);
     if (c.footprint)
       return footprintAngle(fit, floorContact(world, scene.oil, spacing, scene.floorHeight));
     if (capillaryConstant > 0) {
+      if (calls % 50 == 0) shapeFits.push_back(shapeFit(fit));
       if (calls++ % 10 == 0) lastOutlineAngle = outlineAngle(fit);
       return lastOutlineAngle;
     }
@@ -241,7 +252,16 @@ inline SessileResult runSessile(const SessileCase& c) {
         fit.sphere.rmsResidual * 1e3, contact.oil, contact.aqueousUnder, contact.radius / spacing,
         footprintAngle(fit, contact),
         contact.oil == 0 ? 180.0 : sectionAngle(fit.volume, areaRadius, contact.height));
-    return std::string(line);
+    std::string out(line);
+    if (capillaryConstant > 0) {
+      const YoungLaplaceShapeFit shape = shapeFit(fit);
+      char more[160];
+      std::snprintf(more, sizeof more,
+                    "; shape fit (c free) %.1f deg, sigma_eff / sigma %.3f, rms %.3f d",
+                    shape.angle, shape.nominalRatio, shape.rmsResidual / spacing);
+      out += more;
+    }
+    return out;
   };
   for (int k = 0; k < c.relaxSteps; ++k) {
     pipeline.step(w);
@@ -252,6 +272,10 @@ inline SessileResult runSessile(const SessileCase& c) {
     if (w.particles.material[i] == scene.tissue) tissueStart[w.particles.id[i]] = w.particles.x[i];
   static_cast<AngleRunResult&>(r) =
       stepAndMeasureAngle(w, pipeline, c.tEnd, c.print, measure, describe);
+  for (const YoungLaplaceShapeFit& f : shapeFits) {
+    r.shapeAngle += f.angle / static_cast<Real>(shapeFits.size());
+    r.shapeSigmaRatio += f.nominalRatio / static_cast<Real>(shapeFits.size());
+  }
   r.deepestFluidBelowFloor = -std::numeric_limits<Real>::infinity();
   for (Index i = 0; i < w.particles.size(); ++i) {
     if (w.particles.material[i] == scene.tissue) {

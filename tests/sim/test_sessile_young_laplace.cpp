@@ -73,65 +73,118 @@ TEST_CASE("The Young-Laplace footprint angle inverts the droplet's section under
   CHECK_THROWS_AS(youngLaplaceSessile(volume, c, 180), SimError);
 }
 
+namespace {
+
+// A static lattice droplet of a known Young-Laplace shape, as the measurement sees it.
+struct LatticeDroplet {
+  std::vector<Vec3> points;  // [m] interface points more than d above the floor
+  Vec3 centroid;             // [m] of the oil sites
+  Real volume = 0;           // [m^3] of the oil sites (d^3 each)
+  Real floorHeight = 0;      // [m]
+};
+
+// The 0.2 d jittered lattice sites of the [contact_angle] box (three wall layers, R0 = 3 mm,
+// R0 / perR spacing) inside the Young-Laplace droplet of exactly theta and the hemisphere's
+// volume are oil: perfluoro-n-octane's 1760 kg/m^3 in water, g = 9.81, sigma 0.04 N/m (Bond 1.7)
+// times `sigmaRatio` (the droplet a tension sigmaRatio sigma would shape).
+LatticeDroplet latticeDroplet(Real theta, Real perR, Real sigmaRatio) {
+  testing::SessileCase c;
+  c.theta = theta;
+  c.startCos = -std::cos(theta * std::numbers::pi / 180);
+  c.wallLayers = 3;
+  c.jitter = 0.2;
+  c.solver = "indsph";
+  c.perR = perR;
+  c.halfWidthPerR = 1.5;
+  c.dropletDensity = 1760;
+  c.gravity = 9.81;
+  auto scene = testing::sessileScene(c);
+  World& w = *scene.world;
+  const Real d = w.particleSpacing();
+  const Real volume = 2.0 / 3.0 * std::numbers::pi * std::pow(c.r0, 3);
+  const Real capillary = (1760.0 - 1000.0) * 9.81 / (0.04 * sigmaRatio);  // [1/m^2]
+  const auto outline = youngLaplaceOutline(volume, capillary, theta, 2000);
+  const auto radiusAt = [&](Real height) {  // the outline's radius at a height, 0 above it
+    for (std::size_t k = 1; k < outline.size(); ++k)
+      if (outline[k].first <= height) {
+        const auto& [h0, r0] = outline[k - 1];
+        const auto& [h1, r1] = outline[k];
+        return h0 == h1 ? r1 : r0 + (height - h0) / (h1 - h0) * (r1 - r0);
+      }
+    return Real(0);
+  };
+  auto& p = w.particles;
+  Vec3 axis = Vec3::Zero();  // the box's vertical centre line
+  for (Index i = 0; i < p.size(); ++i) axis += p.x[i];
+  axis /= static_cast<Real>(p.size());
+  LatticeDroplet droplet;
+  droplet.centroid = Vec3::Zero();
+  droplet.floorHeight = scene.floorHeight;
+  for (Index i = 0; i < p.size(); ++i) {
+    const Real height = p.x[i].y() - scene.floorHeight;
+    const Real radial = std::hypot(p.x[i].x() - axis.x(), p.x[i].z() - axis.z());
+    const bool oil = height > 0 && radial < radiusAt(height);
+    p.material[i] = oil ? scene.oil : scene.aqueous;
+    p.mass[i] = w.materials[p.material[i]].restDensity * d * d * d;
+    if (!oil) continue;
+    droplet.volume += d * d * d;
+    droplet.centroid += d * d * d * p.x[i];
+  }
+  droplet.centroid /= droplet.volume;
+  droplet.points = interfacePairMidpoints(w, scene.oil);
+  std::erase_if(droplet.points, [&](const Vec3& x) { return x.y() - scene.floorHeight < d; });
+  return droplet;
+}
+
+constexpr Real kBond17Capillary = (1760.0 - 1000.0) * 9.81 / 0.04;  // [1/m^2] the nominal c
+
+}  // namespace
+
 TEST_CASE("The Young-Laplace outline fit reads static lattice droplets under gravity",
           "[unit][interface]") {
-  // The measurement of the sessile droplet under gravity on the droplet as built, no step: the
-  // 0.2 d jittered lattice sites of the [contact_angle] box (R0 / 8, three wall layers) inside the
-  // Young-Laplace droplet of exactly theta are oil: perfluoro-n-octane's 1760 kg/m^3 in water,
-  // g = 9.81, sigma 0.04 N/m (Bond 1.7). As for the zero-gravity cap fit (interface_units.cpp),
-  // the lattice defines the surface to about 0.1 d, 1-2 deg up to 150 deg; steeper, the outline
-  // changes less with the angle (sin theta), so 5 deg at 165. Measured 120.9, 135.0, 151.4,
-  // 169.3 (session 20); the footprint alone read 120.0, 132.0, 144.8, 167.4 (by the outermost
-  // particle) and 121.7, 132.8, 152.0, 176.4 (by the layer's area): no measure at this resolution.
+  // The measurement of the sessile droplet under gravity on the droplet as built, no step (R0 / 8).
+  // As for the zero-gravity cap fit (interface_units.cpp), the lattice defines the surface to
+  // about 0.1 d, 1-2 deg up to 150 deg; steeper, the outline changes less with the angle
+  // (sin theta), so 5 deg at 165. Measured 120.9, 135.0, 151.4, 169.3 (session 20); the footprint
+  // alone read 120.0, 132.0, 144.8, 167.4 (by the outermost particle) and 121.7, 132.8, 152.0,
+  // 176.4 (by the layer's area): no measure at this resolution.
   for (const Real theta : {120.0, 135.0, 150.0, 165.0}) {
-    testing::SessileCase c;
-    c.theta = theta;
-    c.startCos = -std::cos(theta * std::numbers::pi / 180);
-    c.wallLayers = 3;
-    c.jitter = 0.2;
-    c.solver = "indsph";
-    c.perR = 8;
-    c.halfWidthPerR = 1.5;
-    c.dropletDensity = 1760;
-    c.gravity = 9.81;
-    auto scene = testing::sessileScene(c);
-    World& w = *scene.world;
-    const Real d = w.particleSpacing();
-    const Real volume = 2.0 / 3.0 * std::numbers::pi * std::pow(c.r0, 3);
-    const Real capillary = (1760.0 - 1000.0) * 9.81 / 0.04;  // [1/m^2]
-    const auto outline = youngLaplaceOutline(volume, capillary, theta, 2000);
-    const auto radiusAt = [&](Real height) {  // the outline's radius at a height, 0 above it
-      for (std::size_t k = 1; k < outline.size(); ++k)
-        if (outline[k].first <= height) {
-          const auto& [h0, r0] = outline[k - 1];
-          const auto& [h1, r1] = outline[k];
-          return h0 == h1 ? r1 : r0 + (height - h0) / (h1 - h0) * (r1 - r0);
-        }
-      return Real(0);
-    };
-    auto& p = w.particles;
-    Vec3 axis = Vec3::Zero();  // the box's vertical centre line
-    for (Index i = 0; i < p.size(); ++i) axis += p.x[i];
-    axis /= static_cast<Real>(p.size());
-    Vec3 centroid = Vec3::Zero();
-    Real oilVolume = 0;  // [m^3]
-    for (Index i = 0; i < p.size(); ++i) {
-      const Real height = p.x[i].y() - scene.floorHeight;
-      const Real radial = std::hypot(p.x[i].x() - axis.x(), p.x[i].z() - axis.z());
-      const bool oil = height > 0 && radial < radiusAt(height);
-      p.material[i] = oil ? scene.oil : scene.aqueous;
-      p.mass[i] = w.materials[p.material[i]].restDensity * d * d * d;
-      if (!oil) continue;
-      oilVolume += d * d * d;
-      centroid += d * d * d * p.x[i];
-    }
-    centroid /= oilVolume;
-    std::vector<Vec3> points = interfacePairMidpoints(w, scene.oil);
-    std::erase_if(points, [&](const Vec3& x) { return x.y() - scene.floorHeight < d; });
-    const Real read = youngLaplaceAngleOfPoints(points, Vec3(0, scene.floorHeight, 0),
-                                                Vec3::UnitY(), centroid, oilVolume, capillary);
-    INFO(theta << " deg reads " << read << " (lattice volume / exact " << oilVolume / volume
+    const LatticeDroplet droplet = latticeDroplet(theta, 8, 1.0);
+    const Real read = youngLaplaceAngleOfPoints(droplet.points, Vec3(0, droplet.floorHeight, 0),
+                                                Vec3::UnitY(), droplet.centroid, droplet.volume,
+                                                kBond17Capillary);
+    const Real exact = 2.0 / 3.0 * std::numbers::pi * std::pow(0.003, 3);
+    INFO(theta << " deg reads " << read << " (lattice volume / exact " << droplet.volume / exact
                << ")");
     CHECK(read == Approx(theta).margin(theta > 150 ? 5.0 : 2.0));
+  }
+}
+
+TEST_CASE("The Young-Laplace shape fit reads angle and tension apart on static droplets",
+          "[unit][interface]") {
+  // At Bond 1.7 the outline of a steep droplet hardly changes with the angle (from 150 to 160 deg
+  // the apex rises 0.33 d at R0 / 16) but clearly with the capillary constant (a 15 % weaker
+  // tension lowers it 0.3 d and widens it): a droplet whose tension is off reads a wrong angle when
+  // c is held at its nominal value. Built at R0 / 16, 150 deg: with the nominal tension the outline
+  // fit reads 150.3, with 0.85 of it 140.6 (session 22); the shape fit, c free, reads 150.3 / 1.00
+  // and 150.2 / 0.85. The tolerances: 2 deg, the outline fit's own on these droplets (above), and
+  // 0.04 in sigma_eff / sigma, less than a third of the 0.15 it must tell apart.
+  for (const Real sigmaRatio : {1.0, 0.85}) {
+    const LatticeDroplet droplet = latticeDroplet(150, 16, sigmaRatio);
+    const Vec3 floorPoint(0, droplet.floorHeight, 0);
+    const Real held = youngLaplaceAngleOfPoints(droplet.points, floorPoint, Vec3::UnitY(),
+                                                droplet.centroid, droplet.volume, kBond17Capillary);
+    const YoungLaplaceShapeFit shape =
+        youngLaplaceShapeOfPoints(droplet.points, floorPoint, Vec3::UnitY(), droplet.centroid,
+                                  droplet.volume, kBond17Capillary);
+    INFO("sigma_eff / sigma " << sigmaRatio << ": c held reads " << held << " deg; c free reads "
+                              << shape.angle << " deg, " << shape.nominalRatio << ", rms "
+                              << shape.rmsResidual / (0.003 / 16) << " d");
+    CHECK(shape.angle == Approx(150).margin(2.0));
+    CHECK(shape.nominalRatio == Approx(sigmaRatio).margin(0.04));
+    CHECK(shape.capillaryConstant == Approx(kBond17Capillary / shape.nominalRatio));
+    // Holding c at its nominal value misreads the weaker tension as a flatter angle (by 8-10 deg).
+    if (sigmaRatio < 1) CHECK(held < 145);
+    if (sigmaRatio == 1) CHECK(held == Approx(150).margin(2.0));
   }
 }
