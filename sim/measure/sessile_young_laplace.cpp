@@ -181,7 +181,7 @@ std::vector<std::pair<Real, Real>> youngLaplaceOutline(Real volume, Real capilla
   // Arc length by the step count: a sample every (steps / samples) steps.
   std::vector<std::pair<Real, Real>> all;  // (depth below the apex, radius) per step end
   const Profile whole = integrate(b, capillaryConstant, theta, -1, kOutlineStep,
-                                 [&](Real z, Real x) { all.emplace_back(z, x); });
+                                  [&](Real z, Real x) { all.emplace_back(z, x); });
   std::vector<std::pair<Real, Real>> out;
   out.emplace_back(whole.shape.height, 0.0);
   for (int k = 1; k <= samples; ++k) {
@@ -245,9 +245,9 @@ Real youngLaplaceOutlineResidual(const std::vector<Vec3>& points, const Vec3& wa
     const auto level = std::partition_point(
         outline.begin(), outline.begin() + static_cast<std::ptrdiff_t>(segments),
         [&](const std::pair<Real, Real>& sample) { return sample.first > h; });
-    const std::size_t start =
-        std::min(segments - 1, static_cast<std::size_t>(std::max<std::ptrdiff_t>(
-                                   0, (level - outline.begin()) - 1)));
+    const std::size_t start = std::min(
+        segments - 1,
+        static_cast<std::size_t>(std::max<std::ptrdiff_t>(0, (level - outline.begin()) - 1)));
     Real best = segmentDistance2(start, h, r);
     for (std::size_t k = start + 1; k < segments && heightGap2(k, h) < best; ++k)
       best = std::min(best, segmentDistance2(k, h, r));

@@ -150,9 +150,9 @@ TEST_CASE("The Young-Laplace outline fit reads static lattice droplets under gra
   // 176.4 (by the layer's area): no measure at this resolution.
   for (const Real theta : {120.0, 135.0, 150.0, 165.0}) {
     const LatticeDroplet droplet = latticeDroplet(theta, 8, 1.0);
-    const Real read = youngLaplaceAngleOfPoints(droplet.points, Vec3(0, droplet.floorHeight, 0),
-                                                Vec3::UnitY(), droplet.centroid, droplet.volume,
-                                                kBond17Capillary);
+    const Real read =
+        youngLaplaceAngleOfPoints(droplet.points, Vec3(0, droplet.floorHeight, 0), Vec3::UnitY(),
+                                  droplet.centroid, droplet.volume, kBond17Capillary);
     const Real exact = 2.0 / 3.0 * std::numbers::pi * std::pow(0.003, 3);
     INFO(theta << " deg reads " << read << " (lattice volume / exact " << droplet.volume / exact
                << ")");
