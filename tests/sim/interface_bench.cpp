@@ -4,8 +4,12 @@
 //                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm]
 //                               [box_height_per_R] [cap|footprint] [tissue=N] [free=N] [E=Pa]
 //                               [shift=auto|on|off] [density=KG_M3] [g=M_S2]
+//                               [gref=KG_M3] [form=auto|corrected|symmetric]
 //                                   (tissue: an elastic floor of N layers; density: the droplet's,
-//                                   g: gravity towards the floor, read against Young-Laplace)
+//                                   g: gravity towards the floor, read against Young-Laplace;
+//                                   gref: gravity relative to that density (1000: the
+//                                   aqueous's, as the eye scenes); form: the surface stress's
+//                                   discretisation)
 //                                                      sessile droplet contact angle
 //   sim_interface_bench sessile-static THETA_DEG [R_per_d] [jitter_d] [half_width_per_R] [layers]
 //                                      the cap fit on a static cap of exactly THETA
@@ -542,10 +546,14 @@ int main(int argc, char** argv) {
         c.backgroundPressure = value == "off"  ? Force::kOff
                                : value == "on" ? Force::kOn
                                                : Force::kAuto;
+      else if (key == "gref")
+        c.gravityReferenceDensity = std::atof(value.c_str());
+      else if (key == "form")
+        c.surfaceStress = surfaceStressFormFromName(value);
       else {
         std::fprintf(stderr,
                      "sessile: unknown option '%s' (tissue=N free=N E=Pa shift=auto|on|off "
-                     "density=KG_M3 g=M_S2)\n",
+                     "density=KG_M3 g=M_S2 gref=KG_M3 form=auto|corrected|symmetric)\n",
                      a.c_str());
         return 2;
       }

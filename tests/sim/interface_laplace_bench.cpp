@@ -9,6 +9,7 @@
 //                     [warm=] [tol=] [miniter=] [maxiter=] [expansion=0|1] [divergence=0|1]
 //                     [omega=] [xsph=] [jitter=0 (d, start lattice)]
 //                     [form=auto|corrected|symmetric (surface stress)]
+//                     [density=970 (the droplet's, kg/m^3; the aqueous is 1000)]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -75,7 +76,7 @@ int main(int argc, char** argv) {
   std::string solver = "indsph";
   Real perR = 6, taus = 1.5, excess = 0.0, sigma = 0.04, radius = 0.003;
   int layers = 0;
-  Real dtmax = 0, bgk = 0, jitter = 0;
+  Real dtmax = 0, bgk = 0, jitter = 0, dropletDensity = 970;  // [kg/m^3] the droplet's
   std::string background = "auto";
   bool analytic = false;
   PipelineOptions options;
@@ -130,6 +131,8 @@ int main(int argc, char** argv) {
       dtmax = std::atof(v.c_str());
     else if (key == "jitter")
       jitter = std::atof(v.c_str());
+    else if (key == "density")
+      dropletDensity = std::atof(v.c_str());
     else if (key == "form")
       options.surfaceStress = surfaceStressFormFromName(v);
     else {
@@ -148,6 +151,7 @@ int main(int argc, char** argv) {
   s.sigma = analytic ? 0.0 : sigma;
   s.oilViscosity = s.aqueousViscosity = 0.05;
   s.massExcess = excess;
+  s.oilDensity = dropletDensity;
   s.wallLayers = layers;
   s.maxTimeStep = dtmax;
   s.jitter = jitter;

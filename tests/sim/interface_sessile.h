@@ -44,11 +44,15 @@ struct SessileCase {
   int tissueFreeLayers = 0;                 // DropletSpec::tissueFreeLayers
   Real tissueYoungsModulus = 5e4;           // [Pa]
   Force backgroundPressure = Force::kAuto;  // the background_pressure stage (auto: the rule)
+  SurfaceStressForm surfaceStress = SurfaceStressForm::kAuto;  // PipelineOptions::surfaceStress
   // Under gravity (towards the floor) a droplet heavier than the aqueous is pressed onto the
   // floor and is no spherical cap: the footprint is then read against the Young-Laplace droplet
   // (sim/measure/sessile_young_laplace.h) and the cap fit is printed for comparison only.
   Real dropletDensity = 970;  // [kg/m^3] the droplet's (the aqueous is 1000)
   Real gravity = 0;           // [m/s^2]
+  // [kg/m^3] World::gravityReferenceDensity: gravity relative to this density (the aqueous's
+  // 1000 takes the hydrostatic level out of the pressure, as the eye scenes run); 0: plain.
+  Real gravityReferenceDensity = 0;
 };
 
 // The elastic tissue floor of the [contact_angle] tissue test and of `sim_contact_angle_bench
@@ -132,6 +136,7 @@ inline DropletScene sessileScene(const SessileCase& c) {
   s.radius = sessileCapRadius(r0, -c.startCos);
   auto scene = dropletScene(s);
   scene.world->materials.setContactAngle(scene.oil, kFloorTag, c.theta);
+  scene.world->gravityReferenceDensity = c.gravityReferenceDensity;
   return scene;
 }
 
@@ -183,6 +188,7 @@ inline SessileResult runSessile(const SessileCase& c) {
   options.wallFriction = false;
   // The box is full (its jittered start would read as a free surface to the automatic rule).
   options.closedDomain = Force::kOn;
+  options.surfaceStress = c.surfaceStress;
   if (c.backgroundPressure != Force::kAuto)
     options.forced["background_pressure"] = c.backgroundPressure;
   Pipeline pipeline = assemblePipeline(w, options);

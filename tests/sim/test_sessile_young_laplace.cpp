@@ -166,9 +166,9 @@ TEST_CASE("The Young-Laplace shape fit reads angle and tension apart on static d
   // the apex rises 0.33 d at R0 / 16) but clearly with the capillary constant (a 15 % weaker
   // tension lowers it 0.3 d and widens it): a droplet whose tension is off reads a wrong angle when
   // c is held at its nominal value. Built at R0 / 16, 150 deg: with the nominal tension the outline
-  // fit reads 150.3, with 0.85 of it 140.6 (session 22); the shape fit, c free, reads 150.3 / 1.00
-  // and 150.2 / 0.85. The tolerances: 2 deg, the outline fit's own on these droplets (above), and
-  // 0.04 in sigma_eff / sigma, less than a third of the 0.15 it must tell apart.
+  // fit reads 150.3, with 0.85 of it 140.6 (session 22); the shape fit, c free, reads 149.4 deg /
+  // 1.014 and 151.2 deg / 0.839. The tolerances: 2 deg, the outline fit's own on these droplets
+  // (above), and 0.04 in sigma_eff / sigma, less than a third of the 0.15 it must tell apart.
   for (const Real sigmaRatio : {1.0, 0.85}) {
     const LatticeDroplet droplet = latticeDroplet(150, 16, sigmaRatio);
     const Vec3 floorPoint(0, droplet.floorHeight, 0);
