@@ -17,7 +17,9 @@
 //                                [--walls layered|single|tissue|both|all] [--gravity G]
 //                                [--droplet-density RHO] [--out DIR]
 // With --gravity the droplet (heavier than the aqueous) is pressed onto the floor and the angle
-// is the Young-Laplace outline fit's (sim/measure/sessile_young_laplace.h) at every angle.
+// is the Young-Laplace shape fit's (sim/measure/sessile_young_laplace.h: angle and capillary
+// constant both free) at every angle; the table adds the outline fit with c held at its nominal
+// value and the shape fit's sigma_eff / sigma (docs/interface.md validation 3, session 22).
 // Threads: OMP_NUM_THREADS. Numbers depend on the machine and its load.
 #include <omp.h>
 
@@ -59,7 +61,9 @@ constexpr const char* kUsage =
     "                 sclera (session 15); both: layered and single; all: the three\n"
     "  --gravity      [m/s^2] towards the floor (default 0); the droplet must then be heavier\n"
     "                 than the aqueous (1000 kg/m^3), and the angle is read by fitting the\n"
-    "                 Young-Laplace outline of its volume (docs/interface.md, session 20)\n"
+    "                 Young-Laplace outline of its volume with the angle and the capillary\n"
+    "                 constant free (drop shape analysis; the table adds the fit with c held\n"
+    "                 and sigma_eff / sigma: docs/interface.md, validation 3, session 22)\n"
     "  --droplet-density  [kg/m^3] default 970 (silicone oil); 1760 is perfluoro-n-octane\n"
     "  --out          folder for contact_angle_bench.csv and .md (default: .)\n";
 
@@ -80,7 +84,10 @@ struct Row {
   std::string start, walls, measure;
   testing::SessileResult result;
   double tolerance() const { return requested >= 30 && requested <= 150 ? 5 : 10; }
-  double error() const { return result.angle - requested; }
+  bool gravity = false;  // read by the shape fit (c free); the outline fit (c held) alongside
+  double angle() const { return gravity ? result.shapeAngle : result.angle; }
+  double finalAngle() const { return gravity ? result.shapeFinalAngle : result.finalAngle; }
+  double error() const { return angle() - requested; }
 };
 
 std::vector<double> parseList(const std::string& flag, const std::string& text, double lo,
@@ -157,31 +164,42 @@ bool writeTables(const Options& o, const std::vector<Row>& rows, std::size_t pla
   std::ofstream csv(o.out + "/contact_angle_bench.csv"), md(o.out + "/contact_angle_bench.md");
   if (!csv || !md) return false;
   csv << "requested_deg,start,walls,R0_per_d,time_s,measure,measured_deg,end_deg,error_deg,"
-         "tolerance_deg,within,particles,steps,wall_s,finite\n";
+         "tolerance_deg,within,particles,steps,wall_s,finite,c_held_deg,sigma_eff_over_sigma\n";
   md << "Contact angle benchmark (validation 3): sessile droplet, INDSPH, R0 = 3 mm, sigma = 0.04 "
         "N/m, viscosity "
      << o.viscosity << " Pa s, droplet " << o.dropletDensity << " kg/m^3, gravity " << o.gravity
      << " m/s^2, " << o.time << " s simulated, " << omp_get_max_threads() << " thread(s). "
      << rows.size() << " of " << planned << " runs done.\n\n"
      << "| requested [deg] | start | walls | R0/d | measure | measured [deg] | at the end | "
-        "error | tolerance | within | particles | steps | wall [s] |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "error | tolerance | within | particles | steps | wall [s] | c held [deg] | "
+        "sigma_eff/sigma |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (const Row& r : rows) {
     const bool within = r.result.finite && std::abs(r.error()) <= r.tolerance();
     char line[512];
-    std::snprintf(line, sizeof line, "%g,%s,%s,%g,%g,%s,%.2f,%.2f,%+.2f,%g,%d,%zu,%ld,%.1f,%d\n",
+    // Under gravity: the outline fit with c held at its nominal value, and the shape fit's
+    // sigma_eff / sigma (empty without gravity).
+    char heldCsv[64] = "", heldMd[64] = "-";
+    if (r.gravity) {
+      std::snprintf(heldCsv, sizeof heldCsv, "%.2f,%.3f", r.result.angle, r.result.shapeSigmaRatio);
+      std::snprintf(heldMd, sizeof heldMd, "%.1f | %.3f", r.result.angle, r.result.shapeSigmaRatio);
+    } else {
+      std::snprintf(heldCsv, sizeof heldCsv, ",");
+      std::snprintf(heldMd, sizeof heldMd, "- | -");
+    }
+    std::snprintf(line, sizeof line, "%g,%s,%s,%g,%g,%s,%.2f,%.2f,%+.2f,%g,%d,%zu,%ld,%.1f,%d,%s\n",
                   r.requested, r.start.c_str(), r.walls.c_str(), r.resolution, o.time,
-                  r.measure.c_str(), r.result.angle, r.result.finalAngle, r.error(), r.tolerance(),
+                  r.measure.c_str(), r.angle(), r.finalAngle(), r.error(), r.tolerance(),
                   within ? 1 : 0, r.result.particles, r.result.steps, r.result.seconds,
-                  r.result.finite ? 1 : 0);
+                  r.result.finite ? 1 : 0, heldCsv);
     csv << line;
     std::snprintf(
         line, sizeof line,
-        "| %g | %s | %s | %g | %s | %.1f | %.1f | %+.1f | +-%g | %s | %zu | %ld | %.0f |\n",
-        r.requested, r.start.c_str(), r.walls.c_str(), r.resolution, r.measure.c_str(),
-        r.result.angle, r.result.finalAngle, r.error(), r.tolerance(),
+        "| %g | %s | %s | %g | %s | %.1f | %.1f | %+.1f | +-%g | %s | %zu | %ld | %.0f | %s |\n",
+        r.requested, r.start.c_str(), r.walls.c_str(), r.resolution, r.measure.c_str(), r.angle(),
+        r.finalAngle(), r.error(), r.tolerance(),
         !r.result.finite ? "no (not finite)" : (within ? "yes" : "no"), r.result.particles,
-        r.result.steps, r.result.seconds);
+        r.result.steps, r.result.seconds, heldMd);
     md << line;
   }
   return static_cast<bool>(csv) && static_cast<bool>(md);
@@ -240,11 +258,12 @@ int main(int argc, char** argv) {
                   resolution,
                   start,
                   walls,
-                  c.footprint ? "footprint" : (o.gravity > 0 ? "outline fit" : "cap fit"),
-                  testing::runSessile(c)};
+                  c.footprint ? "footprint" : (o.gravity > 0 ? "shape fit (c free)" : "cap fit"),
+                  testing::runSessile(c),
+                  o.gravity > 0};
           std::printf("  %.1f deg (%.1f at the end), %zu particles, %ld steps, %.0f s\n",
-                      row.result.angle, row.result.finalAngle, row.result.particles,
-                      row.result.steps, row.result.seconds);
+                      row.angle(), row.finalAngle(), row.result.particles, row.result.steps,
+                      row.result.seconds);
           rows.push_back(row);
           if (!writeTables(o, rows, planned)) {
             std::fprintf(stderr, "sim_contact_angle_bench: cannot write to '%s'\n", o.out.c_str());

@@ -73,6 +73,7 @@ struct SessileResult : AngleRunResult {
   // over the last fifth of the run: its angle [deg] and nominal c / fitted c [1]. 0 without.
   Real shapeAngle = 0;
   Real shapeSigmaRatio = 0;
+  Real shapeFinalAngle = 0;  // [deg] the shape fit at the end
   Real maxTissueDisplacement = 0;
 };
 
@@ -278,6 +279,8 @@ inline SessileResult runSessile(const SessileCase& c) {
     if (w.particles.material[i] == scene.tissue) tissueStart[w.particles.id[i]] = w.particles.x[i];
   static_cast<AngleRunResult&>(r) =
       stepAndMeasureAngle(w, pipeline, c.tEnd, c.print, measure, describe);
+  if (capillaryConstant > 0 && !c.footprint)
+    r.shapeFinalAngle = shapeFit(fitSessileCap(w, scene.oil, floor, spacing)).angle;
   for (const YoungLaplaceShapeFit& f : shapeFits) {
     r.shapeAngle += f.angle / static_cast<Real>(shapeFits.size());
     r.shapeSigmaRatio += f.nominalRatio / static_cast<Real>(shapeFits.size());
