@@ -1,5 +1,6 @@
 // Issue 6, validation 3: a sessile oil droplet in aqueous (no gravity) settles to the requested
-// contact angle, measured by fitting a spherical cap to its interface (interface_sessile.h).
+// contact angle, measured by fitting a spherical cap to its interface (interface_sessile.h); a
+// heavy droplet under gravity, measured by fitting its Young-Laplace shape.
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -180,3 +181,35 @@ TEST_CASE("Sessile ridge holds a 150 deg contact angle (through oil)",
 // only restate the open item. (The 142.6-144.8 deg of session 9 was the round droplet touching the
 // 1.6 R0 lid; the fixture now clears it.) 15 deg (d = R/8, 3-4 min a run) holds 16.6 from its own
 // cap and 23.6 from the 25 deg cap.
+
+// 150 deg on a round droplet pressed onto the floor by gravity, read as drop shape analysis reads
+// a real one: the Young-Laplace outline of the droplet's volume fitted with the angle and the
+// capillary constant c = delta rho g / sigma both free (youngLaplaceShapeOfPoints). Without
+// gravity a round 150 deg droplet's footprint (1.6 d radius at R0 = 8 d) is smaller than the
+// kernel's support; a droplet of perfluoro-n-octane's 1760 kg/m^3 in water (Bond 1.7) sits on a
+// footprint 6.5 d wide. R0 = 8 d, from the hemisphere, 0.3 s: 151.9 deg (152.3 at the end; 826
+// steps, 152 s on one thread), and the fit's sigma_eff / sigma 0.820: the simulated droplet is
+// flatter than the nominal balance of weight and tension makes it, by the same factor at 135
+// and 165 deg (docs/interface.md validation 3, session 22; an open error of its own). With c held
+// at its nominal value the same droplet reads 138.8 deg and fails the band; at R0 = 16 d the shape
+// fit reads 149.6 (135: 134.3, 165: 162.4; benchmark runs). +-5 deg: the issue's band, which the
+// fit itself meets on static droplets of known angle and tension within 2 deg
+// (test_sessile_young_laplace.cpp).
+TEST_CASE("Sessile droplet under gravity reads 150 deg by its Young-Laplace shape (through oil)",
+          "[validation][interface][contact_angle]") {
+  testing::SessileCase c = layeredCase(150, 0.3);
+  c.perR = 8;
+  c.halfWidthPerR = 1.5;
+  c.dropletDensity = 1760;
+  c.gravity = 9.81;
+  const testing::SessileResult r = testing::runSessile(c);
+  std::printf(
+      "sessile 150 deg under gravity: shape fit %.1f deg (%.1f at the end), sigma_eff / sigma "
+      "%.3f; with c held %.1f deg; %ld steps, %.1f s\n",
+      r.shapeAngle, r.shapeFinalAngle, r.shapeSigmaRatio, r.angle, r.steps, r.seconds);
+  REQUIRE(r.adhesion);
+  REQUIRE(r.finite);
+  CHECK(r.shapeAngle == Approx(150.0).margin(5.0));
+  // The droplet stays pressed onto the floor: none of the fluid gets into the wall.
+  CHECK(r.deepestFluidBelowFloor <= 0.0);
+}
