@@ -46,8 +46,9 @@ struct SessileCase {
   Force backgroundPressure = Force::kAuto;  // the background_pressure stage (auto: the rule)
   SurfaceStressForm surfaceStress = SurfaceStressForm::kAuto;  // PipelineOptions::surfaceStress
   // Under gravity (towards the floor) a droplet heavier than the aqueous is pressed onto the
-  // floor and is no spherical cap: the footprint is then read against the Young-Laplace droplet
-  // (sim/measure/sessile_young_laplace.h) and the cap fit is printed for comparison only.
+  // floor and is no spherical cap: its outline is then read against the Young-Laplace droplet
+  // (sim/measure/sessile_young_laplace.h), with c held (`angle`) and with c free (`shapeAngle`,
+  // the reading of validation 3 under gravity); the cap fit is printed for comparison only.
   Real dropletDensity = 970;  // [kg/m^3] the droplet's (the aqueous is 1000)
   Real gravity = 0;           // [m/s^2]
   // [kg/m^3] World::gravityReferenceDensity: gravity relative to this density (the aqueous's
@@ -69,12 +70,12 @@ struct SessileResult : AngleRunResult {
   // At the end, in units of d: how far the lowest fluid particle is below the floor (negative:
   // all above it), and the largest displacement of a tissue particle (tissue floors only).
   Real deepestFluidBelowFloor = 0;
+  Real maxTissueDisplacement = 0;
   // Under gravity: the Young-Laplace shape fit with c free (youngLaplaceShapeOfPoints), means
   // over the last fifth of the run: its angle [deg] and nominal c / fitted c [1]. 0 without.
   Real shapeAngle = 0;
   Real shapeSigmaRatio = 0;
   Real shapeFinalAngle = 0;  // [deg] the shape fit at the end
-  Real maxTissueDisplacement = 0;
 };
 
 // [m] Sphere radius of the cap that has the volume of a hemisphere of radius r0 and cos(theta
