@@ -139,7 +139,6 @@ Real apexCurvature(Real volume, Real capillaryConstant, Real theta, Real stepFra
   for (int k = 0; k < 100 && excessLo != 0 && excessHi != 0 && hi - lo > 1e-13; ++k) {
     root = (lo * excessHi - hi * excessLo) / (excessHi - excessLo);
     const Real e = excess(root);
-    if (e == 0) break;
     if (e > 0) {
       lo = root, excessLo = e;
       if (lastSide == -1) excessHi *= 0.5;

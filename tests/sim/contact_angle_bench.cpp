@@ -179,13 +179,10 @@ bool writeTables(const Options& o, const std::vector<Row>& rows, std::size_t pla
     char line[512];
     // Under gravity: the outline fit with c held at its nominal value, and the shape fit's
     // sigma_eff / sigma (empty without gravity).
-    char heldCsv[64] = "", heldMd[64] = "-";
+    char heldCsv[64] = ",", heldMd[64] = "- | -";
     if (r.gravity) {
       std::snprintf(heldCsv, sizeof heldCsv, "%.2f,%.3f", r.result.angle, r.result.shapeSigmaRatio);
       std::snprintf(heldMd, sizeof heldMd, "%.1f | %.3f", r.result.angle, r.result.shapeSigmaRatio);
-    } else {
-      std::snprintf(heldCsv, sizeof heldCsv, ",");
-      std::snprintf(heldMd, sizeof heldMd, "- | -");
     }
     std::snprintf(line, sizeof line, "%g,%s,%s,%g,%g,%s,%.2f,%.2f,%+.2f,%g,%d,%zu,%ld,%.1f,%d,%s\n",
                   r.requested, r.start.c_str(), r.walls.c_str(), r.resolution, o.time,

@@ -75,6 +75,8 @@ TEST_CASE("The Young-Laplace footprint angle inverts the droplet's section under
 
 namespace {
 
+constexpr Real kBond17Capillary = (1760.0 - 1000.0) * 9.81 / 0.04;  // [1/m^2] the nominal c
+
 // A static lattice droplet of a known Young-Laplace shape, as the measurement sees it.
 struct LatticeDroplet {
   std::vector<Vec3> points;  // [m] interface points more than d above the floor
@@ -102,7 +104,7 @@ LatticeDroplet latticeDroplet(Real theta, Real perR, Real sigmaRatio) {
   World& w = *scene.world;
   const Real d = w.particleSpacing();
   const Real volume = 2.0 / 3.0 * std::numbers::pi * std::pow(c.r0, 3);
-  const Real capillary = (1760.0 - 1000.0) * 9.81 / (0.04 * sigmaRatio);  // [1/m^2]
+  const Real capillary = kBond17Capillary / sigmaRatio;  // [1/m^2]
   const auto outline = youngLaplaceOutline(volume, capillary, theta, 2000);
   const auto radiusAt = [&](Real height) {  // the outline's radius at a height, 0 above it
     for (std::size_t k = 1; k < outline.size(); ++k)
@@ -135,8 +137,6 @@ LatticeDroplet latticeDroplet(Real theta, Real perR, Real sigmaRatio) {
   std::erase_if(droplet.points, [&](const Vec3& x) { return x.y() - scene.floorHeight < d; });
   return droplet;
 }
-
-constexpr Real kBond17Capillary = (1760.0 - 1000.0) * 9.81 / 0.04;  // [1/m^2] the nominal c
 
 }  // namespace
 
