@@ -33,11 +33,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <limits>
+#include <stdexcept>
 
 #include <Eigen/Dense>
 #include <numbers>
 #include <vector>
 
+#include "bench_options.h"
 #include "interface_fixtures.h"
 #include "interface_meniscus.h"
 #include "interface_oscillation.h"
@@ -546,11 +548,17 @@ int main(int argc, char** argv) {
         c.backgroundPressure = value == "off"  ? Force::kOff
                                : value == "on" ? Force::kOn
                                                : Force::kAuto;
-      else if (key == "gref")
-        c.gravityReferenceDensity = std::atof(value.c_str());
-      else if (key == "form")
-        c.surfaceStress = surfaceStressFormFromName(value);
-      else {
+      else if (key == "gref" || key == "form") {
+        try {
+          if (key == "gref")
+            c.gravityReferenceDensity = testing::benchNumber(key, value, 0, 1e5);
+          else
+            c.surfaceStress = testing::benchSurfaceStressForm(value);
+        } catch (const std::invalid_argument& e) {
+          std::fprintf(stderr, "sessile: %s\n", e.what());
+          return 2;
+        }
+      } else {
         std::fprintf(stderr,
                      "sessile: unknown option '%s' (tissue=N free=N E=Pa shift=auto|on|off "
                      "density=KG_M3 g=M_S2 gref=KG_M3 form=auto|corrected|symmetric)\n",

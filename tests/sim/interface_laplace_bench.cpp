@@ -16,8 +16,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
+#include "bench_options.h"
 #include "interface_fixtures.h"
 #include "sim/measure/droplet_pressure_jump.h"
 
@@ -131,11 +133,17 @@ int main(int argc, char** argv) {
       dtmax = std::atof(v.c_str());
     else if (key == "jitter")
       jitter = std::atof(v.c_str());
-    else if (key == "density")
-      dropletDensity = std::atof(v.c_str());
-    else if (key == "form")
-      options.surfaceStress = surfaceStressFormFromName(v);
-    else {
+    else if (key == "density" || key == "form") {
+      try {
+        if (key == "density")
+          dropletDensity = testing::benchNumber(key, v, 1, 1e5);
+        else
+          options.surfaceStress = testing::benchSurfaceStressForm(v);
+      } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "sim_laplace_bench: %s\n", e.what());
+        return 2;
+      }
+    } else {
       std::fprintf(
           stderr,
           "unknown option '%s' (see the comment at the top of interface_laplace_bench.cpp)\n",
