@@ -13,6 +13,7 @@
 #include <omp.h>
 #endif
 
+#include "protocols/equilibrium/run_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/report/report_format.h"
 #include "protocols/scenario/rebuild_report.h"
@@ -48,6 +49,27 @@ static_assert(std::atomic<bool>::is_always_lock_free && std::atomic<int>::is_alw
 extern "C" void onSignal(int signalNumber) {
   gSignal.store(signalNumber);
   gStop.store(true);
+}
+
+// A schedule of equilibrium postures: one line per posture, then the report.
+int runEquilibrium(const protocols::Protocol& protocol, protocols::Scenario& scenario,
+                   const std::filesystem::path& folder) {
+  protocols::RunOptions run;
+  run.outputFolder = folder;
+  const protocols::RunSummary summary = protocols::runEquilibriumSchedule(
+      protocol, scenario, run, [](const protocols::EquilibriumProgress& p) {
+        std::printf(
+            "posture %zu/%zu (%s): equilibrium in %.2f s (%d iterations%s), retina %s "
+            "covered\n",
+            p.posture + 1, p.postures, p.label.c_str(), p.seconds, p.iterations,
+            p.converged ? "" : ", not settled", protocols::formatPercent(p.retinaCoverage).c_str());
+        std::fflush(stdout);
+      });
+  std::printf(
+      "equilibria finished in %.1f s; mean retinal coverage %s over the schedule\noutput: %s\n",
+      summary.wallSeconds, protocols::formatPercent(summary.retinaCoverage).c_str(),
+      folder.string().c_str());
+  return 0;
 }
 
 int usage() {
@@ -122,6 +144,8 @@ int runRun(Args args) {
     }
     std::filesystem::create_directories(folder);
     for (const auto& note : scenario.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    if (protocols::isEquilibriumSchedule(scenario))
+      return runEquilibrium(protocol, scenario, folder);
 
     ProgressPrinter printer;
     protocols::RunOptions run;

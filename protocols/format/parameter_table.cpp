@@ -157,7 +157,7 @@ const ParameterSpec kParameters[] = {
    .example = "\"reclined 45 deg\"", .doc = "Label of the posture in the report."},
   {.key = "schedule.postures.duration", .kind = K::kDurationOrSteady, .dimension = D::kDuration,
    .displayUnit = "s", .min = 0, .minInclusive = false, .requirement = R::kRequired, .example = "\"10 min\"",
-   .doc = "How long the posture is held, or \"until steady\" (the coverage stops changing)."},
+   .doc = "How long the posture is held, \"until steady\" (simulated until the coverage stops changing), or \"equilibrium\" (the static equilibrium of the posture, computed directly in seconds; docs/methods/equilibrium.md)."},
   {.key = "schedule.postures.max_duration", .kind = K::kQuantity, .dimension = D::kDuration, .displayUnit = "s",
    .min = 0, .minInclusive = false, .requirement = R::kConditional, .condition = "only with duration = \"until steady\"",
    .defaultText = "10 min", .example = "\"30 min\"", .doc = "Upper bound on an \"until steady\" posture."},
@@ -266,7 +266,7 @@ std::string typeText(const ParameterSpec& spec) {
       if (spec.dimension == D::kFraction) return "fraction (0.9 or \"90 %\")";
       return std::string(dimensionName(spec.dimension)) + " (" + unitSymbols(spec.dimension) + ")";
     case K::kViscosity: return "dynamic or kinematic viscosity";
-    case K::kDurationOrSteady: return "duration or \"until steady\"";
+    case K::kDurationOrSteady: return "duration, \"until steady\" or \"equilibrium\"";
     case K::kString: return "string";
     case K::kPath: return "path";
     case K::kChoice: return "one of " + joinNames(spec.choices);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "protocols/format/edit_distance.h"
@@ -62,6 +63,7 @@ class ProtocolParser {
   void readEffects(const Table& root, Protocol& p);
   void readAccuracy(const Table& root, Protocol& p);
   void readOutputs(const Table& root, Protocol& p);
+  void checkEquilibriumPostures(const Protocol& p);
 
   std::filesystem::path file_;
   TomlValueReader reader_;
@@ -92,6 +94,7 @@ Protocol ProtocolParser::parse(std::string_view text) {
   readEffects(root, p);
   readAccuracy(root, p);
   readOutputs(root, p);
+  checkEquilibriumPostures(p);
 
   std::vector<Diagnostic> diagnostics = std::move(reader_.diagnostics());
   if (!diagnostics.empty()) {
@@ -301,9 +304,11 @@ void ProtocolParser::readSchedule(const Table& root, Protocol& p) {
     const auto duration = reader_.durationOrSteady(pt, "duration");
     const auto limit = reader_.quantity(pt, "max_duration");
     if (duration) {
-      posture.untilSteady = duration->value < 0.0;
-      posture.duration =
-          duration->value < 0.0 ? Located<double>{kDefaultSteadyLimit, defaultAt_} : *duration;
+      posture.untilSteady = duration->value == kUntilSteadyDuration;
+      posture.equilibrium = duration->value == kEquilibriumDuration;
+      posture.duration = posture.untilSteady   ? Located<double>{kDefaultSteadyLimit, defaultAt_}
+                         : posture.equilibrium ? Located<double>{kEquilibriumHold, duration->where}
+                                               : *duration;
       if (posture.untilSteady && limit) posture.duration = *limit;
       if (!posture.untilSteady)
         forbid(pt, "max_duration", "applies only to duration = \"until steady\"",
@@ -311,6 +316,33 @@ void ProtocolParser::readSchedule(const Table& root, Protocol& p) {
     }
     p.schedule.postures.push_back(std::move(posture));
   }
+}
+
+// An equilibrium schedule: every posture or none (a simulated posture does not start from an
+// equilibrium yet), and a contact angle with a contact line (0 and 180 deg are complete wetting).
+void ProtocolParser::checkEquilibriumPostures(const Protocol& p) {
+  const auto& postures = p.schedule.postures;
+  const auto first = std::find_if(postures.begin(), postures.end(),
+                                  [](const Posture& x) { return x.equilibrium; });
+  if (first == postures.end()) return;
+  for (const Posture& posture : postures)
+    if (!posture.equilibrium) {
+      reader_.error(posture.duration.where.isInFile() ? posture.duration.where : posture.where,
+                    "the schedule mixes duration = \"equilibrium\" (" + first->label.value +
+                        ") with a simulated posture (" + posture.label.value + ")",
+                    "give every posture duration = \"equilibrium\", or none: a simulated "
+                    "posture cannot start from an equilibrium yet");
+      return;
+    }
+  if (const auto& angle = p.tamponade.contactAngle;
+      angle && (angle->value <= 0.0 || angle->value >= std::numbers::pi))
+    reader_.error(
+        angle->where,
+        "tamponade.contact_angle = " + std::to_string(angle->value * 180.0 / std::numbers::pi) +
+            " deg: complete wetting has no contact line, and the equilibrium of "
+            "duration = \"equilibrium\" needs one",
+        "give an angle strictly between 0 and 180 deg (the retina's is about 18 deg "
+        "through the aqueous)");
 }
 
 void ProtocolParser::readEffects(const Table& root, Protocol& p) {

@@ -125,9 +125,16 @@ struct Posture {
   Located<std::string> label;                       // the user's label, else the name or "custom"
   Located<std::array<double, 3>> gravityDirection;  // [1] unit vector, eye frame; kCustom only
   bool untilSteady = false;
+  // duration = "equilibrium": the posture's static equilibrium (sim/equilibrium/), not a
+  // simulated time; `duration` is then kEquilibriumHold, its weight in the schedule's means.
+  bool equilibrium = false;
   Located<double> duration;  // [s]; with untilSteady the upper bound
   SourceLocation where;      // the [[schedule.postures]] header
 };
+
+// [s] The weight of an equilibrium posture in the schedule's time means: each counts alike (the
+// transients between postures are neglected; docs/methods/equilibrium.md).
+inline constexpr double kEquilibriumHold = 1.0;
 
 struct ScheduleSpec {
   Located<double> gravity;  // [m/s^2] magnitude

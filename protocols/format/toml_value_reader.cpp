@@ -341,19 +341,22 @@ std::optional<Located<double>> TomlValueReader::durationOrSteady(const Table& t,
   const toml::node* node = find(t, key);
   if (node == nullptr) return std::nullopt;
   constexpr std::string_view kSteady = "until steady";
+  constexpr std::string_view kEquilibrium = "equilibrium";
   if (node->is_string()) {
     const std::string_view text = *node->value<std::string_view>();
-    if (text == kSteady) return Located<double>{-1.0, at(node->source())};
+    if (text == kSteady) return Located<double>{kUntilSteadyDuration, at(node->source())};
+    if (text == kEquilibrium) return Located<double>{kEquilibriumDuration, at(node->source())};
     const bool startsLikeNumber =
         !text.empty() &&
         std::string_view("0123456789.+-").find(text.front()) != std::string_view::npos;
     if (!startsLikeNumber) {
       error(at(node->source()),
             shownKey(t, key) + " = \"" + std::string(text) +
-                "\" is neither a duration nor \"until steady\"",
-            editDistance(text, kSteady) <= 3
-                ? "did you mean \"until steady\"?"
-                : "write a duration like \"10 min\", or \"until steady\"");
+                "\" is neither a duration, \"until steady\" nor \"equilibrium\"",
+            editDistance(text, kSteady) <= 3        ? "did you mean \"until steady\"?"
+            : editDistance(text, kEquilibrium) <= 3 ? "did you mean \"equilibrium\"?"
+                                                    : "write a duration like \"10 min\", \"until "
+                                                      "steady\" or \"equilibrium\"");
       return std::nullopt;
     }
   }

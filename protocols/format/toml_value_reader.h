@@ -21,6 +21,10 @@
 
 namespace protocols {
 
+// What durationOrSteady returns for duration = "until steady" and "equilibrium".
+inline constexpr double kUntilSteadyDuration = -1.0;
+inline constexpr double kEquilibriumDuration = -2.0;
+
 class TomlValueReader {
  public:
   // A table being read: its parameter-table path ("eye.breaks"), its path as shown to the user
@@ -60,6 +64,7 @@ class TomlValueReader {
   std::optional<Located<std::array<double, 3>>> direction(const Table& t, std::string_view key);
   std::optional<std::vector<Located<std::string>>> stringList(const Table& t, std::string_view key);
   // A duration, or "until steady" (then value = -1).
+  // A duration [s], or kUntilSteadyDuration / kEquilibriumDuration for those words.
   std::optional<Located<double>> durationOrSteady(const Table& t, std::string_view key);
 
   // "eye.axial_length" for messages (with array indices).

@@ -389,8 +389,12 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
 
   // Schedule.
   for (const Posture& posture : p.schedule.postures)
-    s.schedule.push_back({posture.label.value, gravityOf(posture, p.schedule.gravity.value),
-                          posture.duration.value, posture.untilSteady});
+    s.schedule.push_back({posture.label.value,
+                          gravityOf(posture, p.schedule.gravity.value),
+                          posture.duration.value,
+                          posture.untilSteady,
+                          {},
+                          posture.equilibrium});
   if (s.schedule.empty())
     fail(p.file.empty() ? SourceLocation{} : SourceLocation{p.file.string(), 0, 0},
          "the schedule has no postures", "add at least one [[schedule.postures]]");

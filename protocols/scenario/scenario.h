@@ -116,6 +116,9 @@ struct ScheduledPosture {
   bool untilSteady = false;
   std::optional<bool> endedSteady =
       {};  // set by a run (or from its files): steady before the bound
+  // duration = "equilibrium": computed by protocols/equilibrium/, not simulated; `duration` is
+  // its weight in the schedule's means (kEquilibriumHold).
+  bool equilibrium = false;
 };
 
 struct AccuracySettings {

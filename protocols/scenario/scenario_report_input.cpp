@@ -115,7 +115,9 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
       const ScheduledPosture& posture = s.schedule[k];
       const std::string seconds = formatNumber(posture.duration, 4) + " s";
       schedule << (k == 0 ? " " : ", then ") << posture.label;
-      if (!posture.untilSteady)
+      if (posture.equilibrium)
+        schedule << " at its static equilibrium";
+      else if (!posture.untilSteady)
         schedule << " for " << seconds;
       else if (!posture.endedSteady)
         schedule << " until steady, at most " << seconds;

@@ -1,0 +1,39 @@
+// The static equilibrium of one posture in a scenario's cavity (sim/equilibrium/, threshold
+// dynamics with wetting), measured as the coverage metrics measure a simulated frame: per retina
+// sample, oil-covered or not, read below the voxel scale (sim/equilibrium/wall_oil.h).
+// docs/methods/equilibrium.md: the energy, the method, its measured accuracy and cost.
+#pragma once
+
+#include <string>
+
+#include "meshing/triangle_mesh.h"
+#include "protocols/coverage/wall_oil_fraction.h"
+#include "protocols/scenario/scenario.h"
+#include "sim/equilibrium/threshold_dynamics_xu2017.h"
+
+namespace protocols {
+
+// Voxel spacing per accuracy preset [m] (the solver's sqrt(t) is 1.5 voxels). Measured in a
+// 12 mm sphere against Young-Laplace: docs/methods/equilibrium.md.
+double equilibriumVoxelSpacing(const std::string& preset);
+
+// The cavity as voxel fluid fractions, built once per scenario.
+struct CavityVoxels {
+  sim::equilibrium::VoxelGrid grid;
+  std::vector<double> fluidFraction;
+};
+CavityVoxels voxelizeCavity(const Scenario& scenario, double voxelSpacing);
+
+struct PostureEquilibrium {
+  WallOilFractions wall;  // per retina sample: 1 / kOil where covered, 0 / kAqueous elsewhere
+  sim::equilibrium::EquilibriumSolution solution;
+  meshing::TriangleMesh interface;  // [m] eye frame
+  double seconds = 0.0;             // [s] wall-clock time of the solve and the reading
+};
+
+// The equilibrium under `gravity` [m/s^2] (eye frame) at the protocol's fill. A fill of 1 leaves
+// no interface: every retina sample is oil-covered and nothing is solved.
+PostureEquilibrium solvePostureEquilibrium(const Scenario& scenario, const CavityVoxels& cavity,
+                                           double fill, const sim::Vec3& gravity);
+
+}  // namespace protocols

@@ -1,0 +1,149 @@
+#include "sim/equilibrium/threshold_dynamics_xu2017.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "sim/core/error.h"
+#include "sim/equilibrium/gaussian_blur.h"
+
+namespace sim::equilibrium {
+namespace {
+
+void checkProblem(const EquilibriumProblem& p) {
+  require(p.fluidFraction.size() == p.grid.size(),
+          "equilibrium: the fluid fractions do not match the voxel grid");
+  require(p.oilFraction > 0.0 && p.oilFraction < 1.0,
+          "equilibrium: the oil fraction must lie strictly between 0 and 1 (one phase fills the "
+          "cavity: there is no interface)");
+  require(p.contactAngle > 0.0 && p.contactAngle < std::numbers::pi,
+          "equilibrium: the contact angle must lie strictly between 0 and 180 deg (complete "
+          "wetting has no contact line)");
+  require(p.tension > 0.0 && std::isfinite(p.tension),
+          "equilibrium: the interfacial tension must be > 0");
+  require(p.oilDensity > 0.0 && p.aqueousDensity > 0.0, "equilibrium: densities must be > 0");
+  require(p.gravity.allFinite(), "equilibrium: gravity must be finite");
+}
+
+// Sets u to 1 on the voxels of smallest psi until sum u f reaches `target`, the last voxel
+// partly; 0 elsewhere (the threshold step of the scheme). Ties go to the lower index, so the
+// result is deterministic. O(n): a histogram of psi finds the voxels that straddle the quantile,
+// and only those are sorted.
+void selectLowest(const std::vector<double>& psi, const std::vector<std::size_t>& fluid,
+                  const std::vector<double>& f, double target, std::vector<double>& u) {
+  double lo = psi[fluid[0]], hi = lo;
+  for (std::size_t v : fluid) {
+    lo = std::min(lo, psi[v]);
+    hi = std::max(hi, psi[v]);
+  }
+  constexpr int kBins = 1 << 16;
+  const double scale = hi > lo ? (kBins - 1) / (hi - lo) : 0.0;
+  auto binOf = [&](std::size_t v) { return static_cast<int>((psi[v] - lo) * scale); };
+  std::vector<double> weight(kBins, 0.0);
+  for (std::size_t v : fluid) weight[binOf(v)] += f[v];
+  int cut = 0;
+  double below = 0.0;
+  while (cut < kBins - 1 && below + weight[cut] < target) below += weight[cut++];
+  std::vector<std::size_t> straddling;
+  for (std::size_t v : fluid) {
+    const int b = binOf(v);
+    u[v] = b < cut ? 1.0 : 0.0;
+    if (b == cut) straddling.push_back(v);
+  }
+  std::sort(straddling.begin(), straddling.end(), [&](std::size_t a, std::size_t b) {
+    return psi[a] < psi[b] || (psi[a] == psi[b] && a < b);
+  });
+  for (std::size_t v : straddling) {
+    const double take = std::clamp((target - below) / f[v], 0.0, 1.0);
+    u[v] = take;
+    below += take * f[v];
+  }
+}
+
+}  // namespace
+
+EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
+                                     const ThresholdDynamicsOptions& options) {
+  checkProblem(problem);
+  const VoxelGrid& grid = problem.grid;
+  const std::vector<double>& f = problem.fluidFraction;
+  const std::size_t n = grid.size();
+  const double h = grid.spacing, dV = grid.voxelVolume();
+
+  std::vector<std::size_t> fluid;
+  double cavityUnits = 0.0;  // [voxels]
+  for (std::size_t v = 0; v < n; ++v)
+    if (f[v] > 0.0) {
+      fluid.push_back(v);
+      cavityUnits += f[v];
+    }
+  require(!fluid.empty(), "equilibrium: the cavity holds no voxel (grid too coarse?)");
+  const double target = problem.oilFraction * cavityUnits;  // [voxels]
+
+  // Potential energy per volume of oil against aqueous [J/m^3].
+  const double densityDifference = problem.oilDensity - problem.aqueousDensity;
+  std::vector<double> potential(n, 0.0);
+  for (std::size_t v : fluid)
+    potential[v] = -densityDifference * problem.gravity.dot(grid.centre(v));
+
+  EquilibriumSolution out;
+  out.grid = grid;
+  out.fluidFraction = f;
+  out.oil.assign(n, 0.0);
+  // Start: the flat fill plane (potential alone); zero gravity starts from a plane normal to x.
+  {
+    std::vector<double> start = potential;
+    if (problem.gravity.squaredNorm() == 0.0)
+      for (std::size_t v : fluid) start[v] = grid.centre(v).x();
+    selectLowest(start, fluid, f, target, out.oil);
+  }
+
+  const double cosTheta = std::cos(problem.contactAngle);
+  std::vector<double> blurredFluid, blurredOil, oilField(n), psi(n), previous;
+  double smoothing = std::max(options.startSmoothing, options.finalSmoothing);
+  for (;;) {
+    const double t = (smoothing * h) * (smoothing * h);
+    GaussianBlur blur(grid, t);
+    blur.apply(f, blurredFluid);
+    const double a = blur.areaFactor() * problem.tension;  // [N/m^2]
+    bool settled = false;
+    for (int it = 0; it < options.maxIterationsPerStage && !settled; ++it) {
+      for (std::size_t v = 0; v < n; ++v) oilField[v] = out.oil[v] * f[v];
+      blur.apply(oilField, blurredOil);
+      for (std::size_t v : fluid)
+        psi[v] = a * (blurredFluid[v] - 2.0 * blurredOil[v] + cosTheta * (1.0 - blurredFluid[v])) +
+                 potential[v];
+      previous = out.oil;
+      selectLowest(psi, fluid, f, target, out.oil);
+      ++out.iterations;
+      settled = std::equal(out.oil.begin(), out.oil.end(), previous.begin());
+    }
+    ++out.stages;
+    out.converged = settled;
+    out.heatKernelTime = t;
+    if (smoothing <= options.finalSmoothing) break;
+    smoothing = std::max(0.5 * smoothing, options.finalSmoothing);
+  }
+
+  // Energy E_t of the final state (with the final kernel), up to a constant.
+  {
+    GaussianBlur blur(grid, out.heatKernelTime);
+    for (std::size_t v = 0; v < n; ++v) oilField[v] = out.oil[v] * f[v];
+    blur.apply(oilField, blurredOil);
+    blur.apply(f, blurredFluid);
+    const double a = blur.areaFactor() * problem.tension;
+    double e = 0.0, oilUnits = 0.0;
+    for (std::size_t v : fluid) {
+      const double chi = oilField[v];
+      e += chi * (a * (blurredFluid[v] - blurredOil[v] + cosTheta * (1.0 - blurredFluid[v])) +
+                  potential[v]);
+      oilUnits += chi;
+    }
+    out.energy = e * dV;
+    out.oilVolume = oilUnits * dV;
+  }
+  out.cavityVolume = cavityUnits * dV;
+  return out;
+}
+
+}  // namespace sim::equilibrium

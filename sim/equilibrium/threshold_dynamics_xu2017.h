@@ -1,0 +1,69 @@
+// Static equilibrium of two immiscible fluids in a closed cavity: the oil region of given volume
+// that minimises
+//
+//   E = sigma A_interface + sigma cos(theta) A_wall,oil - (rho_oil - rho_aq) g . int_oil x dV
+//
+// (Young: gamma_oil,wall - gamma_aq,wall = sigma cos(theta), theta measured THROUGH THE AQUEOUS,
+// docs/conventions.md; the last term is the oil's potential energy relative to the aqueous it
+// displaces). Method: threshold dynamics with wetting (Xu, Wang & Wang 2017, J. Comput. Phys.
+// 330:510, "An efficient threshold dynamics method for wetting on rough surfaces"), on a voxel
+// grid holding the cavity as fluid volume fractions f. With chi_oil = u f, chi_aq = (1 - u) f,
+// chi_wall = 1 - f and the heat kernel G_t, the areas are approximated by
+//
+//   A(i, j) ~ sqrt(pi / t) int chi_i G_t * chi_j dV   (Miranda et al. 2007; exact for a plane),
+//
+// and each iteration minimises the energy linearised about the current u (it is concave in u, so
+// the energy never rises; Esedoglu & Otto 2015): the oil takes the voxels with the smallest
+//
+//   psi = sqrt(pi / t) sigma [G*f - 2 G*(u f) + cos(theta) (1 - G*f)] - (rho_oil - rho_aq) g . x
+//
+// until it holds its volume (a weighted quantile, so the volume is exact). t is lowered from a
+// coarse start to its final value; at each t the iteration stops when no voxel changes. The method,
+// its accuracy against Young-Laplace and its cost: docs/methods/equilibrium.md.
+#pragma once
+
+#include <vector>
+
+#include "sim/equilibrium/voxel_grid.h"
+
+namespace sim::equilibrium {
+
+struct EquilibriumProblem {
+  VoxelGrid grid;
+  std::vector<double> fluidFraction;  // [1] per voxel, 1 inside the cavity, 0 in the wall
+  double oilDensity = 0.0;            // [kg/m^3]
+  double aqueousDensity = 0.0;        // [kg/m^3]
+  double tension = 0.0;               // [N/m] oil-aqueous interfacial tension sigma
+  double contactAngle = 0.0;          // [rad] on the wall, through the aqueous, in (0, pi)
+  Vec3 gravity = Vec3::Zero();        // [m/s^2] in the cavity's frame
+  double oilFraction = 0.0;           // [1] of the cavity's volume, in (0, 1)
+};
+
+struct ThresholdDynamicsOptions {
+  // [voxels] sqrt(t) / h at the end. The areas' error grows with sqrt(t) (a line energy at the
+  // contact line), the pinning to the voxels with h / sqrt(t); docs/methods/equilibrium.md
+  // measures the choice.
+  double finalSmoothing = 1.5;
+  double startSmoothing = 6.0;  // [voxels] sqrt(t) / h of the first stage; halved per stage
+  int maxIterationsPerStage = 200;
+};
+
+struct EquilibriumSolution {
+  VoxelGrid grid;
+  std::vector<double> fluidFraction;  // [1] as given
+  std::vector<double> oil;            // [1] u: the oil's share of each voxel's fluid
+  double heatKernelTime = 0.0;        // [m^2] final t
+  double energy = 0.0;                // [J] the approximate energy E_t at the end (+ a constant)
+  int iterations = 0;                 // over all stages
+  int stages = 0;
+  bool converged = false;     // the last stage ended with no voxel changing
+  double oilVolume = 0.0;     // [m^3] sum u f h^3
+  double cavityVolume = 0.0;  // [m^3] sum f h^3
+};
+
+// Throws SimError on a problem outside the method's range (no fluid, fill not in (0, 1), theta
+// not in (0, pi), a tension <= 0, sizes that disagree).
+EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
+                                     const ThresholdDynamicsOptions& options = {});
+
+}  // namespace sim::equilibrium
