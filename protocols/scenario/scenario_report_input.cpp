@@ -194,7 +194,7 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
       {"cavity wall", s.layeredWalls ? "layered (3 lattice layers)" : "single layer",
        s.layeredWalls
            ? "the wall model the contact angle was validated on (accuracy.wall_model; "
-             "docs/interface.md, validation 5)"
+             "docs/methods/interface.md, validation 5)"
            : "one Akinci layer: holds the contact angle less well (accuracy.wall_model)"},
       {"particles",
        std::to_string(s.phases[0].count) + " aqueous, " + std::to_string(s.phases[1].count) +

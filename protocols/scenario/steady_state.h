@@ -1,4 +1,4 @@
-// "until steady" (issue 5): when a posture has settled. A posture is steady when, over the last
+// "until steady": when a posture has settled. A posture is steady when, over the last
 // `window` of simulated time, (a) the fluid's kinetic energy per unit mass stayed below
 // kineticEnergyPerMass and (b) the whole-retina oil coverage moved by less than coverageChange
 // (max - min over the window). Both are needed: a slowly creeping interface can change the

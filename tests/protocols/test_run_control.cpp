@@ -1,4 +1,4 @@
-// How a run is controlled and watched (issue 5): progress text, "until steady", the
+// How a run is controlled and watched: progress text, "until steady", the
 // outputs.fields selection, and SIGTERM with checkpoint and resume.
 #include <catch2/catch.hpp>
 

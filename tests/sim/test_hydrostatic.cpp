@@ -1,4 +1,4 @@
-// Hydrostatic tank at rest (issue 2, validation 1), for WCSPH and DFSPH.
+// Hydrostatic tank at rest (validation 1), for WCSPH and DFSPH.
 //
 // A 4 x 4 x 8 cm water column (d = 5 mm, 1,024 particles) settles for 0.6 s; over the next 0.4 s
 // the pressure of every particle and its position are averaged in time, then compared layer by
@@ -145,7 +145,7 @@ TEST_CASE("DFSPH hydrostatic tank matches rho g (H - y) within its density toler
   CHECK(r.maxCompression <= options.dfsph.densityTolerance);
 }
 
-// Issue 3, test 4: every other solver on the same tank, against the same reference and bounds.
+// Every other solver on the same tank, against the same reference and bounds.
 TEST_CASE("INDSPH hydrostatic tank matches rho g (H - y)", "[validation][hydrostatic]") {
   checkProfile(runProfile(optionsFor("indsph")));
 }
