@@ -32,7 +32,7 @@ const ParameterSpec kParameters[] = {
   {.key = "description", .kind = K::kString, .example = "\"...\"",
    .doc = "The scenario in words, shown in the report."},
   {.key = "solver", .kind = K::kChoice, .choices = kSolverNames, .defaultText = "indsph",
-   .example = "\"indsph\"", .doc = "Pressure solver (all share one interface, docs/developer-guide.md principle 3)."},
+   .example = "\"indsph\"", .doc = "Pressure solver (all share one interface; docs/methods/solvers.md)."},
 
   {.key = "eye", .kind = K::kTable, .requirement = R::kRequired, .doc = "The eye: cavity shape, side, breaks, tissues."},
   {.key = "eye.kind", .kind = K::kChoice, .choices = kEyeKindNames, .requirement = R::kRequired,
@@ -198,7 +198,7 @@ const ParameterSpec kParameters[] = {
    .doc = "Interfacial tension's discretisation: corrected (first-order consistent on disordered particles), symmetric (momentum-exact; INDSPH Laplace jump -16 %), auto: symmetric under WCSPH, corrected otherwise (docs/methods/interface.md)."},
   {.key = "accuracy.wall_model", .kind = K::kChoice, .choices = kWallModelNames, .defaultText = "auto",
    .example = "\"single_layer\"",
-   .doc = "Cavity wall particles: layered (three lattice layers behind the mesh; the fluid fills the cavity; the contact angle holds as on the flat wall it was validated on; about 2x the run time), single_layer (one Akinci layer on the mesh), auto: layered unless an elastic sclera or fat replaces part of the wall (docs/protocols.md)."},
+   .doc = "Cavity wall particles: layered (three lattice layers behind the mesh; the fluid fills the cavity; the contact angle holds as on the flat wall it was validated on; about 2x the run time), single_layer (one Akinci layer on the mesh), auto: layered unless an elastic sclera or fat replaces part of the wall (docs/accuracy.md)."},
 
   {.key = "outputs", .kind = K::kTable, .defaultText = "all defaults", .doc = "What the run writes."},
   {.key = "outputs.folder", .kind = K::kString, .defaultText = "runs/<protocol file name>",
