@@ -50,7 +50,7 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
   for (Index i = 0; i < n; ++i) {
     const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
     if (mui < 0) {
-      // Elastic particle (helper "heavy"): the reaction of its fluid neighbours'
+      // Elastic particle: the reaction of its fluid neighbours'
       // moving-wall drag (below), the same pair term with the fluid's viscosity and the opposite
       // sign, so momentum goes from fluid to solid, none is lost. Nothing between elastic pairs.
       Vec3 a = Vec3::Zero();

@@ -43,7 +43,7 @@ struct IndsphParameters {
   // [1] omega of each Jacobi update. With mixed masses a light particle is pushed by all its
   // heavy neighbours' stiffnesses at once, each computed as if it acted alone; full steps
   // (omega = 1) overshoot and at 1:75 threw particles through the floor after 0.3 s of the
-  // two-phase dam break (cfl 0.15). 0.5, IISPH's relaxation, ran 1 s at 1:2...1:75 (2026-11-22).
+  // two-phase dam break (cfl 0.15). 0.5, IISPH's relaxation, ran 1 s at 1:2...1:75.
   Real relaxation = 0.5;
   Real warmStartFactor = 0.5;  // [1] fraction of last accepted step's kappa applied first
   // Divergence-free pass (not in the paper; DFSPH's second solve in number-density form). On the

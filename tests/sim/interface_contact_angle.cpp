@@ -43,8 +43,8 @@ testing::SessileResult settle(Real theta, Real tEnd = 0.1, Real perR = 6) {
 // automatic choice): 59.7 deg for 60, 120.2 deg for 120 (0.1 s); 33.4 deg for 30 (0.3 s). Since
 // the wall stress sits on the larger phase (the aqueous) 120 reads 123.7 (118.4 over
 // 0.3 s); 30 and 60 are unchanged (the aqueous carried it before too). Since background_pressure
-// leaves contact-line particles unshifted: 32.9 / 60.0 / 123.1 for 30 / 60 / 120; 30 since session
-// 16 at R0 = 8 d with the side walls clear of its contact line: 32.6 (see its test).
+// leaves contact-line particles unshifted: 32.9 / 60.0 / 123.1 for 30 / 60 / 120; 30 at R0 = 8 d
+// with the side walls clear of its contact line: 32.6 (see its test).
 void checkSessileAngle(Real requested, Real tEnd = 0.1, Real perR = 6) {
   const testing::SessileResult r = settle(requested, tEnd, perR);
   std::printf(

@@ -156,7 +156,7 @@ TEST_CASE("number-density baseline hydrostatic tank matches rho g (H - y)",
 }
 
 // IISPH at its default tolerance 1e-4 (mean compression; the INDSPH eta). At 1e-3 its worst
-// interior layer read +6 % (measured 2026-11-22): relaxed Jacobi stops with a long-wavelength
+// interior layer read +6 %: relaxed Jacobi stops with a long-wavelength
 // pressure error over the column that a mean compression of 1e-3 still allows (3e-4: 3.8 %,
 // 1e-4: 3.2 %, mean 1.7 %), so the tolerance, not the wall term, was the cause.
 TEST_CASE("IISPH hydrostatic tank matches rho g (H - y)", "[validation][hydrostatic]") {

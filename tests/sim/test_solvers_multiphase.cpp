@@ -215,7 +215,7 @@ TEST_CASE("INDSPH buoyancy: a light blob rises and a heavy blob sinks",
 // with the walls holding the fluid beside them, the settling is a circulation: the middle of the
 // tank sinks 0.6-0.8 d while the water near the side walls rises back. Against the mean height of
 // all the water (the first version of this test), a neutral blob in the middle therefore
-// "drifted" -0.21 d in 0.3 s. Measured 2026-11-22 (d = 5 mm, 0.3 s), displacements of the blob
+// "drifted" -0.21 d in 0.3 s. Measured (d = 5 mm, 0.3 s): displacements of the blob
 // and of the water that started directly above and below it (its column):
 //   blob 1000: -0.67 d, its column -0.60 d: blob - column within 0.13 d over the whole run;
 //   blob 970: -0.60 d; blob 1060: -1.00 d; against the neutral blob +0.07 d and -0.33 d.
