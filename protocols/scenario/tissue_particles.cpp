@@ -664,31 +664,25 @@ void addTissues(const Protocol& p, Scenario& s) {
     walls.fields.resize(keep.size());
     for (std::size_t b = 0; b < added.size(); ++b) walls.add(added[b], addedNormal[b], addedTag[b]);
     if (backstopCount > 0)
-      s.notes.push_back("sclera held at its outer surface: a rigid wall (the orbit) stands " +
+      s.notes.push_back("sclera held at its outer surface: a rigid backstop wall " +
                         formatNumber(kBackstopGapSpacings, 2) +
-                        " particle spacing behind it where no orbital fat is, so its anchored "
-                        "layer is backed within "
-                        "the kernel's support (no empty gap, i.e. no p = 0 free surface, behind "
-                        "the pressurised globe)");
+                        " particle spacing behind it where no orbital fat is, so no empty gap "
+                        "lies behind the globe (docs/methods/elasticity.md)");
     if (bandCount > 0)
       s.notes.push_back(
-          "the limbus clamp band's face walled like the cavity: " + std::to_string(bandCount) +
-          " wall particles at half the spacing among its anchored sclera particles within " +
-          formatNumber(kBandFaceSpacings, 2) +
-          " spacings of the cavity, none within 2 spacings of a free one or of an anchored one "
-          "next to a free one (the band's lattice at d let fluid in)");
+          "the limbus clamp band's face walled: " + std::to_string(bandCount) +
+          " wall particles at half the spacing within " + formatNumber(kBandFaceSpacings, 2) +
+          " spacings of the cavity keep the fluid out of the band (docs/methods/elasticity.md)");
     if (seamCount > 0)
       s.notes.push_back("the wall shell behind the sclera closed: " + std::to_string(seamCount) +
                         " wall particles where the backstop's, collar's and fan's samples left "
                         "openings wider than the cavity wall's");
     if (collarCount > 0)
-      s.notes.push_back(
-          "sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL "
-          "cap): " +
-          std::to_string(sclera.limbusClamped) + " sclera particles within " +
-          formatNumber(kLimbusClampSpacings, 2) +
-          " spacings of the cap's wall or of a rigid collar (" + std::to_string(collarCount) +
-          " wall particles from the cap's edge out to the backstop) anchored");
+      s.notes.push_back("sclera clamped at the limbus (the rigid lens/IOL cap): " +
+                        std::to_string(sclera.limbusClamped) + " sclera particles within " +
+                        formatNumber(kLimbusClampSpacings, 2) +
+                        " spacings of the cap or its collar (" + std::to_string(collarCount) +
+                        " wall particles) anchored");
     if (orbitCount > 0)
       s.notes.push_back(
           "the bony orbit: " + std::to_string(orbitCount) + " rigid wall particles " +
@@ -853,14 +847,12 @@ std::vector<std::string> tissueReportLines(const Scenario& s, const TissueMeasur
                     mm(t.estimatedDisplacement) + ")");
     const double wdt = t.thicknessModeFrequency * meanTimeStep;  // [1]
     if (wdt > 1.0)
-      lines.push_back(
-          t.name + ": its displacement is an upper bound, up to " +
-          formatNumber(1.0 + wdt * wdt, 2) + "x the physical one: at this run's mean step " +
-          formatNumber(meanTimeStep * 1e3, 3) + " ms the layer's thickness mode (" +
-          formatNumber(t.thicknessModeFrequency, 3) +
-          " rad/s) is not resolved and the elastic stage, solved before the pressure solve, "
-          "answers the fluid's load softened by 1 + (omega_1 dt)^2 (docs/methods/elasticity.md, "
-          "\"Anchored pad under water\"); the coverage does not depend on it");
+      lines.push_back(t.name + ": its displacement is an upper bound, up to " +
+                      formatNumber(1.0 + wdt * wdt, 2) + "x the physical one: the mean step " +
+                      formatNumber(meanTimeStep * 1e3, 3) +
+                      " ms does not resolve the layer's thickness mode (" +
+                      formatNumber(t.thicknessModeFrequency, 3) +
+                      " rad/s); the coverage does not depend on it (docs/methods/elasticity.md)");
   }
   if (!s.retinaSamples.scleraLayer.empty()) {
     // Fluid that entered or passed the tissue (TissueMeasures): a leaking run says so.
