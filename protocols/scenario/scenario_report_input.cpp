@@ -181,7 +181,7 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
 
   const AccuracySettings& a = s.accuracy;
   in.accuracy = {
-      {"preset", a.preset, "draft / standard / fine (docs/protocols.md)"},
+      {"preset", a.preset, "draft / standard / fine (docs/accuracy.md)"},
       {"particle spacing", millimetres(a.particleSpacing),
        "coverage boundaries are resolved to about one spacing; the flat-interface test bounds "
        "the whole-retina coverage error by |z0| d / R^2 + 1 % (tests/protocols/test_coverage.cpp)"},
