@@ -108,7 +108,7 @@ TEST_CASE("Sessile droplet spreads to a 30 deg contact angle (through oil)",
 // reference is the layered wall without it: 120.9 deg (60 deg: 57.8). Measured on tissue (R0/6, 0.3
 // s, window mean): 120.8 (60 deg: 60.7) with the tissue out of wall_adhesion's pair sum, as the
 // walls are; 121.4 (60 deg: 62.0) with it in; all layers anchored 118.8. Without wall_adhesion and
-// the tension's wall mirror on tissue, the same droplet settles at 83-85 deg ( `sim_interface_bench
+// the tension's wall mirror on tissue, the same droplet settles at 83-85 deg (`sim_interface_bench
 // sessile 120 0.3 0 indsph 3 6 0.005 0.2 tissue=3 free=1`). 0.3 s: the angle overshoots to 128 at
 // 0.06 s and settles from 0.15 s on, so a 0.1 s window would read a transient. Also: no fluid
 // particle gets below the tissue's top, and the tissue moves less than 0.1 d, the decision rule's
@@ -165,7 +165,7 @@ TEST_CASE("Sessile ridge holds a 150 deg contact angle (through oil)",
 // - Round droplet (`sim_interface_bench sessile 150 T START indsph 3 R_PER_D MU 0.2 0 1.5`):
 //   with the wall stress on the larger phase both starts meet at 144-145 deg at R/8
 //   once the contact line is mobile (mu 0.005 Pa s: 145.0 from its own cap over 0.96-1.2 s,
-//   144.1 from the hemisphere at 1.28 s, after a plateau at 148 from 0.16 to 0.64 s;).
+//   144.1 from the hemisphere at 1.28 s, after a plateau at 148 from 0.16 to 0.64 s).
 //   With mu 0.05 the line is slower (capillary speed sigma / mu: 141.7 from the hemisphere at 1 s).
 //   R/12 meets at 143-144 from both starts (mu 0.005, 0.6 s); at R/6 it climbs past 155. With
 //   the stress on the oil it receded off the floor at R/6-R/16. A 0.4 s run would

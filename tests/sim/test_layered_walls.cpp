@@ -1,4 +1,4 @@
-// Layered static walls with their own pressure (Wang et al. 2023 section 4.3, eq. 21;).
+// Layered static walls with their own pressure (Wang et al. 2023 section 4.3, eq. 21).
 //
 // The tank's walls are a lattice of 3 layers continuing the fluid lattice (volume d^3 each), and
 // INDSPH solves for the wall particles' stiffness kappa_b as well as the fluid's. Compared with the
