@@ -70,7 +70,7 @@ inline constexpr double kBackstopGapSpacings = 1.0;
 // sclera's anterior edge joins the cornea, here the rigid lens/IOL cap. Every sclera particle
 // within this many spacings of a cap wall particle, or of the rigid collar that closes the seam
 // from the cap's edge out to the backstop, is anchored, so the collar cannot push the free rim (it
-// did, 0.14-0.3 mm, when those particles were free:). Measured on the 2 MPa sclera test (10 ms):
+// did, 0.14-0.3 mm, when those particles were free). Measured on the 2 MPa sclera test (10 ms):
 // with 2 d (the kernel's support) two free particles 2.2-2.5 d from the collar moved 2.3 and 4.6 um
 // (bound 4.1 um, elsewhere 0.1 um); with 3 d the largest displacement is 0.10 um, as without collar
 // and clamp.
