@@ -4,8 +4,9 @@
 // of these; the mesh is a tessellation with all vertices on the surface.
 //
 // Local construction frame: base ellipsoid centred at the origin, semi-axes a (x, horizontal),
-// b (y, vertical), c (z, axial). The eye frame (DESIGN.md) is this frame shifted along z so that
-// the origin is the centroid of the enclosed volume; every public point is in the eye frame [m].
+// b (y, vertical), c (z, axial). The eye frame (docs/conventions.md) is this frame shifted along z
+// so that the origin is the centroid of the enclosed volume; every public point is in the eye frame
+// [m].
 //
 // Wall parametrisation (theta, meridian):
 //   x = a sin(theta) cos(meridian),  y = b sin(theta) sin(meridian),

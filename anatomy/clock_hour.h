@@ -1,8 +1,8 @@
 // Clock hours on the fundus <-> directions in the eye frame.
 //
-// Convention (DESIGN.md): the clock face is the one the surgeon sees when facing the patient and
-// looking into the eye: 12 o'clock superior (+y), hours increasing clockwise as the surgeon sees
-// them.
+// Convention (docs/conventions.md): the clock face is the one the surgeon sees when facing the
+// patient and looking into the eye: 12 o'clock superior (+y), hours increasing clockwise as the
+// surgeon sees them.
 //
 // Derivation. The surgeon looks along -z (into the eye, from in front) with +y up. The surgeon's
 // right-hand direction is forward x up = (-z) x (+y) = +x, i.e. the patient's left. A clock read
@@ -15,7 +15,7 @@
 // That is the clinical convention for fundus drawings and operation notes (e.g. the common
 // superotemporal tears of a right eye are written "10-11 o'clock").
 //
-// About the words "3 = left side of the image" in DESIGN.md: they hold when "left" is the
+// About the words "3 = left side of the image" in docs/conventions.md: they hold when "left" is the
 // patient's left (+x), which is where 3 o'clock lies in this derivation. Read as the left of the
 // surgeon's field of view they would put 3 o'clock at the patient's right and make it temporal
 // in OD, contradicting the clinical convention above; the code follows the clinical convention.

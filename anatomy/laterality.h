@@ -1,5 +1,5 @@
 // Which eye: OD (oculus dexter, right) or OS (oculus sinister, left), and where nasal lies in the
-// eye frame (+z anterior, +y superior, +x toward the patient's left; DESIGN.md "Conventions").
+// eye frame (+z anterior, +y superior, +x toward the patient's left; docs/conventions.md).
 //
 // The nose is between the eyes. For the right eye it is toward the patient's left (+x); for the
 // left eye toward the patient's right (-x). Temporal is the opposite side.

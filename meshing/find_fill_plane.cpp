@@ -12,7 +12,8 @@ namespace meshing {
 double clippedVolume(const TriangleMesh& mesh, const Vec3& u, double c) {
   const Vec3 o = c * u;  // a point on the plane (u is a unit vector)
   // Sequential on purpose: a parallel floating-point reduction would make the bisection depend on
-  // the thread count (DESIGN.md principle 7), and one pass over 20 000 faces takes ~0.1 ms.
+  // the thread count (docs/developer-guide.md principle 7), and one pass over 20 000 faces takes
+  // ~0.1 ms.
   double volume = 0;  // [unit^3]
   for (long long fl = 0; fl < static_cast<long long>(mesh.faces.size()); ++fl) {
     const Triangle& t = mesh.faces[static_cast<size_t>(fl)];

@@ -1,5 +1,6 @@
 // The plain triangle mesh every layer above meshing/ sees: no CGAL types here (CGAL stays inside
-// meshing/ .cpp files, DESIGN.md). Units are whatever the caller declared; inside the toolkit, m.
+// meshing/ .cpp files, docs/developer-guide.md). Units are whatever the caller declared; inside the
+// toolkit, m.
 #pragma once
 
 #include <Eigen/Core>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Enforces the layering of DESIGN.md: arrows point down. A library may include only itself and
+# Enforces the layering of docs/developer-guide.md: arrows point down. A library may include only itself and
 # the libraries below it; CGAL may appear only in meshing/ .cpp files.
 set -u
 root=${1:-.}

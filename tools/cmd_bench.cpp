@@ -1,4 +1,4 @@
-// `tamponade bench engine`: the engine benchmark of issue 2. Runs the 3D dam break (column a x 2a
+// `tamponade bench engine`: the engine benchmark. Runs the 3D dam break (column a x 2a
 // x a, sim/scenes/dam_break.h) at the requested particle counts for a fixed simulated time with
 // each solver and writes bench_engine.csv and bench_engine.md: particles, steps, mean dt, mean
 // solver iterations, wall time per step, particle-steps per second, time per pipeline stage.

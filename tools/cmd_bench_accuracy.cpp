@@ -47,7 +47,7 @@ constexpr const char* kUsage =
     "  --out         output folder (default bench_accuracy)\n"
     "  --threads     OpenMP threads (default OMP_NUM_THREADS); one thread times most steadily\n"
     "Each run shows its progress (a bar on a terminal, plain lines otherwise). Measured on\n"
-    "tiny.toml (docs/benchmarks.md): the spacing moves the coverage more than the tolerance does\n"
+    "tiny.toml (docs/accuracy.md): the spacing moves the coverage more than the tolerance does\n"
     "(1.2 mm read 3 points above 0.5 mm; 0.5 % against 0.01 % moved it by 1), and a run costs\n"
     "about (1/d)^4: 7 s at 1.2 mm, 3 min at 0.6 mm, 7 min at 0.5 mm on one thread.\n"
     "Exit codes: 0 done, 2 bad usage or protocol (nothing run), 1 a run failed.\n";

@@ -1,5 +1,5 @@
 // `tamponade bench solvers [--quick] [--out DIR] [--solvers a,b] [--ratios 2,3,10] [--time S]`:
-// the solver comparison of issue 3 (protocols/bench/solver_comparison.h). Every registered
+// the solver comparison (protocols/bench/solver_comparison.h). Every registered
 // pressure solver on the two-phase dam break at density ratios 1:2, 1:3, 1:10, 1:30, 1:75; writes
 // solvers.csv, solvers.md and per-run compression/iteration series. Not a test.
 // Exit codes: 0 ok (unstable runs are results, not failures), 2 bad usage, 1 output error.

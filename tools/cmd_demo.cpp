@@ -1,6 +1,6 @@
 // `tamponade demo`: a built-in dam-break scene (a water column collapsing in a tank), written as
 // HDF5 frames + XDMF so that a new user sees the engine run and ParaView open its output before
-// any eye or protocol is involved. Issue 5 replaces it as the README's first command by the
+// any eye or protocol is involved. The README's first command runs the
 // default eye protocol.
 #include <chrono>
 #include <cmath>

@@ -87,8 +87,7 @@ int runPlan(Args args) {
     std::printf("  initial mean density: %s x rest density (see the fluid fill note)\n",
                 protocols::formatNumber(scenario.fillCompression, 3).c_str());
     for (const std::string& note : scenario.notes) std::printf("  note: %s\n", note.c_str());
-    if (!scenario.tissues.empty())
-      std::printf("\ntissues (elastic only when it matters, issue 7):\n");
+    if (!scenario.tissues.empty()) std::printf("\ntissues (elastic only when it matters):\n");
     for (const protocols::TissueBody& t : scenario.tissues)
       std::printf("  %s\n", t.describe().c_str());
     for (const auto& [stage, limit] : plan.stageTimeStepLimits)

@@ -1,4 +1,4 @@
-// The solver comparison of issue 3 (`tamponade bench solvers`): every registered pressure solver
+// The solver comparison (`tamponade bench solvers`): every registered pressure solver
 // on the two-phase dam break (two_phase_dam_break.h) at each density ratio, with what Wang et al.
 // 2023 compare: whether the run stays stable (and when it failed), the compression over time
 // (their Figure 4), the solver iterations and their running sum (Figure 7), the gap between the

@@ -1,4 +1,4 @@
-// The two-phase dam break of the solver comparison (issue 3; Wang et al. 2023, section 5.1,
+// The two-phase dam break of the solver comparison (Wang et al. 2023, section 5.1,
 // Figures 3, 4 and 7): a heavy column and a light column of the same size stand side by side at
 // the back of a tank and are released at once. The heavy fluid collapses under the light one and
 // surges along the floor, the light fluid is thrown over it: a violent flow with a moving

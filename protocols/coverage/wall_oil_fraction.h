@@ -27,7 +27,7 @@ namespace protocols {
 
 enum class WallWetting : std::uint8_t { kDry = 0, kAqueous = 1, kOil = 2 };
 
-inline constexpr double kOilCoveredThreshold = 0.5;  // [1] phi >= this: oil-covered (issue 5)
+inline constexpr double kOilCoveredThreshold = 0.5;  // [1] phi >= this: oil-covered
 
 // h_c = wallGap + sqrt(3) spacing [m] (see above).
 inline double coverageSupportRadius(double spacing, double wallGap) {

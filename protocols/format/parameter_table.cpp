@@ -32,7 +32,7 @@ const ParameterSpec kParameters[] = {
   {.key = "description", .kind = K::kString, .example = "\"...\"",
    .doc = "The scenario in words, shown in the report."},
   {.key = "solver", .kind = K::kChoice, .choices = kSolverNames, .defaultText = "indsph",
-   .example = "\"indsph\"", .doc = "Pressure solver (all share one interface, DESIGN.md principle 3)."},
+   .example = "\"indsph\"", .doc = "Pressure solver (all share one interface; docs/methods/solvers.md)."},
 
   {.key = "eye", .kind = K::kTable, .requirement = R::kRequired, .doc = "The eye: cavity shape, side, breaks, tissues."},
   {.key = "eye.kind", .kind = K::kChoice, .choices = kEyeKindNames, .requirement = R::kRequired,
@@ -92,7 +92,7 @@ const ParameterSpec kParameters[] = {
    .min = 0, .max = 3e-3, .minInclusive = false, .defaultText = "anatomical profile, limbus to pole",
    .example = "\"0.7 mm\"", .doc = "Uniform scleral thickness (overrides the anatomical profile)."},
   {.key = "eye.sclera.mode", .kind = K::kChoice, .choices = kTissueModeNames, .defaultText = "auto",
-   .example = "\"auto\"", .doc = "auto: elastic only if the estimated deformation matters (issue 7); or force elastic / rigid."},
+   .example = "\"auto\"", .doc = "auto: elastic only if the estimated deformation matters; or force elastic / rigid."},
   {.key = "eye.sclera.anchoring", .kind = K::kChoice, .choices = kScleraAnchoring,
    .defaultText = "outer_surface", .example = "\"outer_surface\"", .doc = "Which particles are held fixed."},
 
@@ -195,10 +195,10 @@ const ParameterSpec kParameters[] = {
    .doc = "Largest time step (the CFL and effect limits may choose smaller)."},
   {.key = "accuracy.surface_stress", .kind = K::kChoice, .choices = kSurfaceStressNames, .defaultText = "auto",
    .example = "\"symmetric\"",
-   .doc = "Interfacial tension's discretisation: corrected (first-order consistent on disordered particles), symmetric (momentum-exact; INDSPH Laplace jump -16 %), auto: symmetric under WCSPH, corrected otherwise (docs/interface.md)."},
+   .doc = "Interfacial tension's discretisation: corrected (first-order consistent on disordered particles), symmetric (momentum-exact; INDSPH Laplace jump -16 %), auto: symmetric under WCSPH, corrected otherwise (docs/methods/interface.md)."},
   {.key = "accuracy.wall_model", .kind = K::kChoice, .choices = kWallModelNames, .defaultText = "auto",
    .example = "\"single_layer\"",
-   .doc = "Cavity wall particles: layered (three lattice layers behind the mesh; the fluid fills the cavity; the contact angle holds as on the flat wall it was validated on; about 2x the run time), single_layer (one Akinci layer on the mesh), auto: layered unless an elastic sclera or fat replaces part of the wall (docs/protocols.md)."},
+   .doc = "Cavity wall particles: layered (three lattice layers behind the mesh; the fluid fills the cavity; the contact angle holds as on the flat wall it was validated on; about 2x the run time), single_layer (one Akinci layer on the mesh), auto: layered unless an elastic sclera or fat replaces part of the wall (docs/accuracy.md)."},
 
   {.key = "outputs", .kind = K::kTable, .defaultText = "all defaults", .doc = "What the run writes."},
   {.key = "outputs.folder", .kind = K::kString, .defaultText = "runs/<protocol file name>",

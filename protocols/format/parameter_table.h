@@ -2,7 +2,7 @@
 // default and one line of doc for every key. This one table drives the loader (which keys exist,
 // "did you mean"), the validator (types, units, ranges) and the reference table in
 // docs/protocols.md (renderParameterReference(); a test keeps the document in step), in the
-// spirit of STYLE.md point 7.
+// spirit of docs/developer-guide.md code rule 7.
 #pragma once
 
 #include <limits>

@@ -1,6 +1,6 @@
-// Reading a protocol file: parse + validate everything before anything runs (DESIGN.md data
-// flow). On any problem, throws ProtocolError listing every problem found, each as
-// `file:line:column: what is wrong — how to fix it`.
+// Reading a protocol file: parse + validate everything before anything runs
+// (docs/developer-guide.md data flow). On any problem, throws ProtocolError listing every problem
+// found, each as `file:line:column: what is wrong — how to fix it`.
 #pragma once
 
 #include <filesystem>

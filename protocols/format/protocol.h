@@ -19,7 +19,7 @@ namespace protocols {
 inline constexpr int kProtocolFormatVersion = 1;
 
 // Each enum's names, in enum order: the parser maps a name to its index, so the file names a
-// method and never a number (STYLE.md point 7).
+// method and never a number (docs/developer-guide.md code rule 7).
 enum class EyeKind { kEmmetropic, kMyopic, kStaphyloma, kMesh };
 inline constexpr std::array<std::string_view, 4> kEyeKindNames = {"emmetropic", "myopic",
                                                                   "staphyloma", "mesh"};
@@ -80,7 +80,7 @@ struct TissueSpec {
   std::optional<Located<double>> poissonRatio;   // [1] overrides the material
   std::optional<Located<double>> density;        // [kg/m^3] overrides the material
   std::optional<Located<double>> thickness;  // [m] sclera only: overrides the anatomical profile
-  Located<TissueMode> mode;                  // auto = elastic only if it would deform (issue 7)
+  Located<TissueMode> mode;                  // auto = elastic only if it would deform
   Located<Anchoring> anchoring;
   SourceLocation where;  // the [eye.sclera] / [eye.orbital_fat] header
 };
@@ -146,7 +146,7 @@ struct ScheduleSpec {
 };
 
 struct EffectSwitches {
-  // In kEffectNames order. kAuto = inferred from the scene (DESIGN.md principle 1).
+  // In kEffectNames order. kAuto = inferred from the scene (docs/developer-guide.md principle 1).
   std::array<Located<EffectSetting>, kEffectNames.size()> settings;
   const Located<EffectSetting>& get(std::string_view effect) const;
 };
@@ -164,7 +164,7 @@ struct AccuracySpec {
 
 // Preset values. Spacings give ~1e4 / 4e4 / 2e5 fluid particles in a 5 mL cavity; the
 // tolerances (mean density error where every implicit pressure solve stops) stay well below the
-// 3 % oil/aqueous density difference (issue 6). Measured on the example eyes (docs/benchmarks.md,
+// 3 % oil/aqueous density difference. Measured on the example eyes (docs/accuracy.md,
 // `tamponade bench accuracy`): 0.5 % runs 3.6-3.9x faster than 0.01 % and moves the whole-retina
 // coverage by one point; 0.1 % by 0.5.
 struct AccuracyPresetValues {

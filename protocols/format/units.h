@@ -1,8 +1,9 @@
 // Quantities with units, the way clinicians write them ("12 mm", "1000 cSt", "40 mN/m",
-// "100 kPa"), converted to SI (DESIGN.md principle 5: SI inside, clinical units at the edge).
+// "100 kPa"), converted to SI (docs/developer-guide.md principle 5: SI inside, clinical units at
+// the edge).
 //
 // Dynamic and kinematic viscosity are DIFFERENT dimensions: users of other SPH codes are
-// regularly unsure which one a number means (issue 6), so a protocol says it with the unit and
+// regularly unsure which one a number means, so a protocol says it with the unit and
 // a kinematic value is turned into a dynamic one with the density later (mu = rho nu).
 #pragma once
 

@@ -1,5 +1,5 @@
-// Checkpoints: everything a stopped run needs to continue bit-identically (DESIGN.md principles
-// 6 and 7). The particle state is taken from the field registries: every field whose
+// Checkpoints: everything a stopped run needs to continue bit-identically (docs/developer-guide.md
+// principles 6 and 7). The particle state is taken from the field registries: every field whose
 // `checkpointed` flag is set is stored as float64/int32 without conversion, so a field added by a
 // new effect is checkpointed without touching this code.
 //

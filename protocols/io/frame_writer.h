@@ -15,12 +15,12 @@
 // Output iterates the field registry: every field whose `written` flag is set goes into a frame,
 // so a field added by a new effect is written without touching this code.
 //
-// Crash safety (DESIGN.md principle 6): every writeFrame/appendSeries/writeStatic ends with
-// H5Fflush, and the metadata cache is told never to evict (write) entries between flushes, so the
-// file on disk only changes metadata at a flush; a run killed between flushes leaves the file of
-// the last flush plus unreferenced bytes past its end. Series are uncompressed so that appending
-// a row rewrites the last chunk in place instead of moving it (a moved chunk could reuse space
-// the flushed file still points to).
+// Crash safety (docs/developer-guide.md principle 6): every writeFrame/appendSeries/writeStatic
+// ends with H5Fflush, and the metadata cache is told never to evict (write) entries between
+// flushes, so the file on disk only changes metadata at a flush; a run killed between flushes
+// leaves the file of the last flush plus unreferenced bytes past its end. Series are uncompressed
+// so that appending a row rewrites the last chunk in place instead of moving it (a moved chunk
+// could reuse space the flushed file still points to).
 #pragma once
 
 #include <cstddef>
@@ -96,7 +96,8 @@ class FrameWriter {
 
   // Writes every `written` field of `fields` once, under /static/<group>. Those fields are
   // declared constant for the run: later frames of the same group skip them and the sidecar
-  // points every frame's grid at /static (DESIGN.md principle 2: the wall never moves).
+  // points every frame's grid at /static (docs/developer-guide.md principle 2: the wall never
+  // moves).
   void writeStatic(const std::string& group, const sim::FieldRegistry& fields);
 
   // Writes one frame: every `written` field of each group (except its static ones), the time [s]

@@ -74,7 +74,7 @@ struct ReportInput {
   std::vector<ReportStage> stages;
   std::vector<ReportSetting> accuracy;
   std::optional<ReportPressureSolve> pressureSolve;
-  // Elastic tissue (issue 7), one sentence each: the decision, maximum displacements, the cavity
+  // Elastic tissue, one sentence each: the decision, maximum displacements, the cavity
   // volume change; one line ("tissue rigid (estimate ...)") when no tissue is elastic.
   std::vector<std::string> tissue;
 };

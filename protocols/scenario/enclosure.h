@@ -1,7 +1,7 @@
 // Is the fluid walled in? A geometric check on an assembled scene (no stepping): a path from the
 // fluid to the edge of a box that keeps at least `clearance` from every obstacle point (wall
-// particles, anchored tissue particles). Used by the tissue tests (issue 7's leak: fluid left the
-// globe through holes in the walls behind the sclera, docs/elasticity.md "The limbus band,
+// particles, anchored tissue particles). Used by the tissue tests (fluid that leaves the
+// globe through holes in the walls behind the sclera, docs/methods/elasticity.md "The limbus band,
 // watertight") and for finding such a hole.
 //
 // Criterion: grid points of spacing `cell` inside `box`, a point open when no obstacle lies

@@ -1,12 +1,12 @@
-// The cavity wall as layers cut from the fluid's own lattice (docs/solvers.md "Eye cavities",
-// item (b)): every lattice point outside the cavity mesh within `layers` d of it is a wall
-// particle of volume d^3, in layer floor(distance / d). The fluid fills the lattice points inside
-// the mesh (meshing::sampleVolume with no wall gap, same origin), so fluid and walls start as one
-// lattice at rest number density everywhere, and a fluid particle next to the wall sees a full
-// kernel support, as on the flat layered walls where the contact angle is validated
-// (docs/interface.md, validation 3). The wall surface the fluid meets is then a staircase about
-// the mesh, not the mesh itself; where the retina is, and how much area it has, stays the mesh's
-// (the scenario's retina samples, scenario.cpp).
+// The cavity wall as layers cut from the fluid's own lattice (docs/methods/solvers.md "Eye
+// cavities", item (b)): every lattice point outside the cavity mesh within `layers` d of it is a
+// wall particle of volume d^3, in layer floor(distance / d). The fluid fills the lattice points
+// inside the mesh (meshing::sampleVolume with no wall gap, same origin), so fluid and walls start
+// as one lattice at rest number density everywhere, and a fluid particle next to the wall sees a
+// full kernel support, as on the flat layered walls where the contact angle is validated
+// (docs/methods/interface.md, validation 3). The wall surface the fluid meets is then a staircase
+// about the mesh, not the mesh itself; where the retina is, and how much area it has, stays the
+// mesh's (the scenario's retina samples, scenario.cpp).
 #pragma once
 
 #include <cstddef>

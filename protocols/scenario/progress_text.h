@@ -1,4 +1,4 @@
-// What `tamponade run` prints while it runs (issue 5): a progress bar with ETA on a terminal,
+// What `tamponade run` prints while it runs: a progress bar with ETA on a terminal,
 // plain periodic lines otherwise (a log file or a CI console has no carriage return). Pure
 // functions of the progress and the elapsed wall time, so the text is unit-tested without a run
 // (tests/protocols/test_run_progress.cpp); tools/cmd_run.cpp only chooses and prints.

@@ -1,14 +1,14 @@
 // Start-up relaxation of the fluid fill (not part of the simulated time): particles of rest mass
 // rho d^3 on a lattice cut 0.65 d from the wall (MassRule::kRelaxedFill, scenario.h) hold the
 // fluid's volume at rest density, but the outermost of them sit where the single Akinci wall
-// layer over-estimates the density (+55 % at d/2 from a face, +6 % at d, docs/solvers.md), and
-// the staircase of the lattice leaves holes along a curved wall. A few passes of
-// particle shifting (Xu, Stansby & Laurence 2009, J. Comput. Phys. 228; Lind et al. 2012,
-// J. Comput. Phys. 231, eq. 8: dx_i = -D grad C_i) move every fluid particle down the gradient of
-// its kernel-summed volume fraction C_i = sum_j V0_j W_ij + sum_b V_b W_ib (fluid, fixed dynamic
-// particles such as tissue, and walls): particles leave the over-dense wall layer for the holes,
-// the fluid becomes nearly uniform at C ~ 1, and the implicit solvers (INDSPH, DFSPH) start from
-// a state they can hold (instead of the ~30 % compression of MassRule::kFillCavity).
+// layer over-estimates the density (+55 % at d/2 from a face, +6 % at d, docs/methods/solvers.md),
+// and the staircase of the lattice leaves holes along a curved wall. A few passes of particle
+// shifting (Xu, Stansby & Laurence 2009, J. Comput. Phys. 228; Lind et al. 2012, J. Comput. Phys.
+// 231, eq. 8: dx_i = -D grad C_i) move every fluid particle down the gradient of its kernel-summed
+// volume fraction C_i = sum_j V0_j W_ij + sum_b V_b W_ib (fluid, fixed dynamic particles such as
+// tissue, and walls): particles leave the over-dense wall layer for the holes, the fluid becomes
+// nearly uniform at C ~ 1, and the implicit solvers (INDSPH, DFSPH) start from a state they can
+// hold (instead of the ~30 % compression of MassRule::kFillCavity).
 #pragma once
 
 #include "sim/world/world.h"

@@ -1,6 +1,7 @@
-// One Run of a scenario (STYLE.md names): steps the world through the posture schedule (turning
-// gravity in the eye frame), writes frames and the coverage time series to <out>/frames.h5
-// (FrameWriter), and the report (report.html, coverage.csv, summary.json) at the end.
+// One Run of a scenario (docs/developer-guide.md, names): steps the world through the posture
+// schedule (turning gravity in the eye frame), writes frames and the coverage time series to
+// <out>/frames.h5 (FrameWriter), and the report (report.html, coverage.csv, summary.json) at the
+// end.
 //
 // Frames are taken at every multiple of the protocol's frame interval (the first step crossing
 // it), at the start and at the end; a posture ends at the first step that reaches its end time

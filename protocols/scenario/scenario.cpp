@@ -34,15 +34,14 @@ const AccuracyPresetValues& draftPreset() {
 }
 
 // Coarser than the draft preset the coverage is a trial figure: measured on tiny.toml
-// (docs/benchmarks.md, "Spacing against tolerance", session 19), 1.2 mm read the whole-retina
+// (docs/accuracy.md, "Spacing against tolerance"), 1.2 mm read the whole-retina
 // coverage 3.5 points above 0.6 mm and 0.8 mm 0.4 points.
 std::string coarseSpacingNote(double spacing) {
   const std::string draft = formatNumber(draftPreset().particleSpacing * 1e3, 3);
   return "particle spacing " + formatNumber(spacing * 1e3, 3) +
          " mm is coarser than the draft preset's " + draft +
-         " mm: a trial run, not a figure to publish (on tiny.toml 1.2 mm read the whole-retina "
-         "coverage 3.5 points above 0.6 mm, 0.8 mm 0.4 points; `tamponade bench accuracy "
-         "--spacings` measures it on this scene)";
+         " mm: a trial run, not a figure to publish (tiny.toml: 1.2 mm reads the coverage 3.5 "
+         "points above 0.6 mm; docs/accuracy.md)";
 }
 
 [[noreturn]] void fail(const SourceLocation& where, const std::string& what,
@@ -248,7 +247,7 @@ void chooseGravityReference(const ScenarioOptions& options, Scenario& s) {
       s.notes.push_back("gravity acts in full (an elastic " + t.name +
                         " must feel the full "
                         "hydrostatic pressure), so slow buoyant motion of the oil may stall "
-                        "(docs/interface.md, validation 6)");
+                        "(docs/methods/interface.md, validation 6)");
       return;
     }
   const FluidPhase& reference = s.phases[0].count > 0 ? s.phases[0] : s.phases[1];
@@ -311,45 +310,30 @@ std::string contactAngleRangeNote(double throughTamponadeDeg) {
       std::to_string(std::lround(throughTamponadeDeg)) + " deg through the tamponade";
   const std::string tested = "outside the " + std::to_string(std::lround(kTestedContactAngleMin)) +
                              "-" + std::to_string(std::lround(kTestedContactAngleMax)) +
-                             " deg that the wall-wetting model holds within 5 deg on a flat, "
-                             "layered wall (docs/interface.md, validation 3)";
+                             " deg that the wall model holds within 5 deg on a flat wall";
   if (throughTamponadeDeg > kTestedContactAngleMax)
     return "contact angle " + angle + " is " + tested +
-           ": asked for 150 deg, a round droplet settled up to 8 deg flatter than asked (142-145 "
-           "deg at 8-12 particle spacings per radius), a ridge within 5 deg, and oil between two "
-           "walls up to 13 deg steeper; read where the oil's edge meets the retina as uncertain "
-           "by several degrees";
+           ": 150 deg settles up to 8 deg flatter than asked, so the oil's edge is uncertain by "
+           "several degrees (docs/validation.md)";
   return "contact angle " + angle + " is " + tested +
-         ": asked for 18 deg, a sessile droplet on a flat layered wall settled at 25.7-27.6 deg "
-         "(8 particle spacings per radius), so a thin tamponade film may spread less than asked";
+         ": 18 deg reads 25.7-27.6 deg, so a thin film may spread less than asked "
+         "(docs/validation.md)";
 }
 
 std::string contactAngleWallModelNote(RetinaWall wall) {
   if (wall == RetinaWall::kLayered)
-    return "the eye's wall is three layers of wall particles (accuracy.wall_model = \"layered\"), "
-           "the wall model the contact angle was validated on; on the curved, stepped wall of a "
-           "spherical cavity (8-12 particle spacings per radius) a 120 deg lens read 121-126 deg "
-           "and a 150 deg lens 155-157 deg, where one layer of wall particles read 124-130 deg "
-           "and let the 150 deg lens leave the wall (docs/interface.md, validation 5, session "
-           "17); read where the oil's edge meets the retina as uncertain by about 5 deg";
+    return "layered eye wall (accuracy.wall_model): in a spherical cavity a 150 deg lens reads "
+           "155-157 deg; the oil's edge on the retina is uncertain by about 5 deg "
+           "(docs/validation.md)";
   const std::string surface =
       wall == RetinaWall::kElasticSclera
-          ? "the retina over the elastic sclera is the sclera's particle lattice, on which a flat "
-            "tissue floor held 120 deg as 120.8 deg and the library oils' 18 deg through the "
-            "aqueous as 28.9 deg (27.6 on a layered wall; docs/interface.md, validation 3, "
-            "sessions 15-16): read the oil's edge over the sclera as uncertain by about 10 deg; "
-            "the rest of the eye's wall (the lens/IOL cap) is one layer of wall particles"
-          : "the eye's wall is one layer of wall particles (accuracy.wall_model = "
-            "\"single_layer\")";
-  return surface +
-         ", on which the wall-wetting model holds "
-         "the contact angle less well than on the layered wall it was tested on: on a flat "
-         "single-layer wall a sessile droplet kept 90 deg within 3 deg, but read 30 deg as "
-         "9.5-37.7 deg and 150 deg as 127-151 deg at 6-8 particle spacings per radius, not settled "
-         "after 0.3 s, and the library oils' 18 deg through the aqueous as 34.4 deg (25.7 on a "
-         "layered wall; docs/interface.md, validation 3, sessions 14 and 16); read where the oil's "
-         "edge meets the retina as uncertain by about 15 deg at the library oils' angle and by "
-         "10-20 deg at others";
+          ? "retina over the elastic sclera: 18 deg through the aqueous reads 28.9 deg on a tissue "
+            "floor, so the oil's edge there is uncertain by about 10 deg; the lens cap is one "
+            "layer of wall particles"
+          : "single-layer eye wall (accuracy.wall_model = \"single_layer\"): 18 deg through "
+            "the aqueous reads 34.4 deg, 150 deg 127-151 deg, so the oil's edge is uncertain by "
+            "10-20 deg";
+  return surface + " (docs/validation.md)";
 }
 
 std::vector<std::uint8_t> Scenario::tamponadeFlags() const {
@@ -434,12 +418,12 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
 
   const meshing::SurfaceSamples retinaSamples = buildWalls(p, s, options.wallSpacingFactor * d);
   recordRetinaSamples(s, retinaSamples.points, retinaSamples.normals);  // tissue_particles.h
-  addTissues(p, s);  // elastic sclera / orbital fat replace the wall they cover (issue 7)
+  addTissues(p, s);  // elastic sclera / orbital fat replace the wall they cover
   s.layeredWalls = chooseLayeredWalls(p, options, s);
   if (s.layeredWalls) replaceWithLayeredWalls(s, d);
   const bool layered = s.layeredWalls;
 
-  // Interface physics data (issue 6): the stage rules switch interfacial tension and wall
+  // Interface physics data: the stage rules switch interfacial tension and wall
   // adhesion on when both phases are present (sim::effectRegistry()).
   if (oil.interfacialTension && *oil.interfacialTension > 0.0) {
     s.world->materials.setInterfacialTension(aqueous.materialIndex, oil.materialIndex,
@@ -574,7 +558,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   s.pipelineOptions.indsph.tolerance = s.accuracy.solverTolerance;
   s.pipelineOptions.iisph.tolerance = s.accuracy.solverTolerance;
   // INDSPH's Jacobi relaxation. The engine's 0.5 (IISPH's choice) under-relaxes the eye's closed,
-  // layered cavity: on tiny.toml (docs/solvers.md, session 19) it took 30.8 iterations per step
+  // layered cavity: on tiny.toml (docs/methods/solvers.md) it took 30.8 iterations per step
   // at 0.1 % and stalled at 0.022 % when asked for 0.01 % (every step at the 100-iteration cap);
   // 0.8 takes 18.9 and reaches 0.0102 % (2 % of steps at the cap) in the same 603 steps. 0.9 and
   // 1.0 iterate less still, but 0.9 needed 4 % more steps at 0.01 % and a full warm start (1.0)

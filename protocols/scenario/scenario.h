@@ -1,6 +1,6 @@
-// A Scenario is a Protocol made concrete (STYLE.md names): the cavity, its wall particles with
-// their retinal regions and breaks, the two fluid phases as particles, the sim::World and the
-// PipelineOptions that a run steps, and the posture schedule as gravity vectors.
+// A Scenario is a Protocol made concrete (docs/developer-guide.md, names): the cavity, its wall
+// particles with their retinal regions and breaks, the two fluid phases as particles, the
+// sim::World and the PipelineOptions that a run steps, and the posture schedule as gravity vectors.
 //
 // Assembly (assembleScenario):
 //  1. cavity: a parametric eye from anatomy (emmetropic / myopic / staphyloma) or an imported
@@ -56,7 +56,7 @@ enum class MassRule {
   // relaxes to 1.0015 rho0; from 0.7 d, 0.946 and 0.987 rho0. Since only over-dense particles
   // move (an elastic sclera one particle thick let the fill expand like a gas otherwise) tiny.toml
   // starts at mean 1.008, max 1.059 rho0; paper_sclera_10kpa.toml at 0.939, max 1.011 (the fluid
-  // next to the one-layer tissue is under-dense). docs/protocols.md "Fluid fill".
+  // next to the one-layer tissue is under-dense). docs/methods/solvers.md "Fluid fill".
   kRelaxedFill,
   // m = rho d^3 (V - A d/2) / (N d^3): the fluid at rest density fills the cavity up to d/2 from
   // the wall (where the wall particles' Akinci volumes take over). The lattice sits 1.2 d from the
@@ -89,7 +89,8 @@ struct ScenarioOptions {
   // Gravity relative to the aqueous density (sim::World::gravityReferenceDensity) when every
   // tissue is rigid: the closed cavity is filled with fluid, so p' = p - rho_aq g.x is an exact
   // rewrite, and without the hydrostatic background the 3 % oil/aqueous buoyancy is no longer
-  // pinned by the particle arrangement (docs/interface.md, validation 6). false: plain gravity.
+  // pinned by the particle arrangement (docs/methods/interface.md, validation 6). false: plain
+  // gravity.
   bool removeHydrostaticBackground = true;
 };
 
@@ -100,7 +101,8 @@ struct FluidPhase {
   double density = 0.0;           // [kg/m^3]
   double dynamicViscosity = 0.0;  // [Pa s]
   // Tamponade only: interfacial tension against aqueous [N/m] and contact angle on the retina
-  // measured through the aqueous phase [deg] (DESIGN.md), from the library or the protocol.
+  // measured through the aqueous phase [deg] (docs/conventions.md), from the library or the
+  // protocol.
   std::optional<double> interfacialTension;
   std::optional<double> contactAngleThroughAqueous;
   double volume = 0.0;        // [m^3] the phase's share of the cavity volume (geometric)
@@ -181,9 +183,10 @@ inline constexpr double kEyeIndsphRelaxation = 0.8;
 bool isImplicitSolver(const std::string& solver);
 
 // Contact angles through the tamponade [deg] at which the wall-wetting model holds the requested
-// angle within 5 deg on a flat wall of layered wall particles (docs/interface.md, validation 3:
-// tests at 30, 60, 90 and 120). The library's oils (18 deg through the aqueous, 162 through the
-// oil) lie outside it, where the sessile benchmarks did not settle at the requested angle.
+// angle within 5 deg on a flat wall of layered wall particles (docs/methods/interface.md,
+// validation 3: tests at 30, 60, 90 and 120). The library's oils (18 deg through the aqueous, 162
+// through the oil) lie outside it, where the sessile benchmarks did not settle at the requested
+// angle.
 inline constexpr double kTestedContactAngleMin = 30.0;
 inline constexpr double kTestedContactAngleMax = 120.0;
 // The scenario note for a contact angle outside that range, saying how the model errs there;
@@ -193,7 +196,7 @@ std::string contactAngleRangeNote(double throughTamponadeDeg);
 // the range above was measured on), one layer of wall particles, or an elastic sclera's lattice.
 enum class RetinaWall { kLayered, kSingleLayer, kElasticSclera };
 // The scenario note for any contact angle on the eye's wall: how well that wall holds it
-// (docs/interface.md, validation 3, sessions 14-16, and validation 5, session 17).
+// (docs/methods/interface.md, validations 3 and 5).
 std::string contactAngleWallModelNote(RetinaWall wall);
 
 }  // namespace protocols

@@ -183,7 +183,7 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
 
   const AccuracySettings& a = s.accuracy;
   in.accuracy = {
-      {"preset", a.preset, "draft / standard / fine (docs/protocols.md)"},
+      {"preset", a.preset, "draft / standard / fine (docs/accuracy.md)"},
       {"particle spacing", millimetres(a.particleSpacing),
        "coverage boundaries are resolved to about one spacing; the flat-interface test bounds "
        "the whole-retina coverage error by |z0| d / R^2 + 1 % (tests/protocols/test_coverage.cpp)"},
@@ -196,7 +196,7 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
       {"cavity wall", s.layeredWalls ? "layered (3 lattice layers)" : "single layer",
        s.layeredWalls
            ? "the wall model the contact angle was validated on (accuracy.wall_model; "
-             "docs/interface.md, validation 5)"
+             "docs/methods/interface.md, validation 5)"
            : "one Akinci layer: holds the contact angle less well (accuracy.wall_model)"},
       {"particles",
        std::to_string(s.phases[0].count) + " aqueous, " + std::to_string(s.phases[1].count) +

@@ -1,11 +1,11 @@
-// "until steady" (issue 5): when a posture has settled. A posture is steady when, over the last
+// "until steady": when a posture has settled. A posture is steady when, over the last
 // `window` of simulated time, (a) the fluid's kinetic energy per unit mass stayed below
 // kineticEnergyPerMass and (b) the whole-retina oil coverage moved by less than coverageChange
 // (max - min over the window). Both are needed: a slowly creeping interface can change the
 // coverage at speeds below any useful energy threshold, and a sloshing fluid can pass through the
 // same coverage twice. The posture's maximum duration (protocol `max_duration`) bounds it anyway.
 //
-// Defaults, and why (emmetropic eye, 90 % SO 1000, d = 1.5 mm, WCSPH, measured 2026-11-22, see
+// Defaults, and why (emmetropic eye, 90 % SO 1000, d = 1.5 mm, WCSPH, see
 // protocols/scenario/README.md): after the start-up expansion the kinetic energy per mass falls
 // from 0.94 J/kg to 5e-4 at 20 ms and then sits at a floor of 0.3-2e-6 J/kg (r.m.s. speed
 // 1-2 mm/s: the solver's jitter next to the wall). The threshold 5e-6 J/kg is just above that

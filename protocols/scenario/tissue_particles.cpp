@@ -248,12 +248,12 @@ std::size_t fillShellGaps(const meshing::TriangleMesh& cavityMesh, const ShellGa
   return points.size();
 }
 
-// The limbus clamp band's interior (docs/elasticity.md "The limbus band, watertight"): anchored
-// sclera particles farther than the elastic stage's reference support (2.5 d) from every free one.
-// They never move and enter no free particle's elastic stencil, so they act on the scene only as
-// a wall does, but on the lattice at d, whose openings let fluid in (10 kPa, 0.6 s: 10 fluid
-// particles in the band, 0.5-1.3 d from its anchored particles, none within 1.5 d of a free one).
-// `freeSclera`: the rest positions of the sclera's free (not anchored) particles.
+// The limbus clamp band's interior (docs/methods/elasticity.md "The limbus band, watertight"):
+// anchored sclera particles farther than the elastic stage's reference support (2.5 d) from every
+// free one. They never move and enter no free particle's elastic stencil, so they act on the scene
+// only as a wall does, but on the lattice at d, whose openings let fluid in (10 kPa, 0.6 s: 10
+// fluid particles in the band, 0.5-1.3 d from its anchored particles, none within 1.5 d of a free
+// one). `freeSclera`: the rest positions of the sclera's free (not anchored) particles.
 std::vector<char> clampBandInterior(const TissueBody& sclera,
                                     const sim::DynamicParticles& particles,
                                     const std::vector<sim::Vec3>& freeSclera, double d) {
@@ -269,7 +269,7 @@ std::vector<char> clampBandInterior(const TissueBody& sclera,
 // [1] the band is walled within this many spacings of the cavity surface: its face, where fluid
 // enters (the sclera's innermost lattice layer lies d/2 to 1.37 d deep). Walling its whole
 // interior (1948 walls instead of 328 at d = 1.2 mm) kept the fluid out of the band too but the
-// 10 kPa run gave way at the posterior sclera/fat interface at 0.4 s (docs/elasticity.md).
+// 10 kPa run gave way at the posterior sclera/fat interface at 0.4 s (docs/methods/elasticity.md).
 constexpr double kBandFaceSpacings = 1.5;
 
 // Walls the band's face like the cavity wall: wall particles on a d/2 lattice at the points
@@ -560,9 +560,10 @@ void addTissues(const Protocol& p, Scenario& s) {
     const std::size_t backstopCount = added.size();
     // The limbus: the cap's rim walls (within 1.5 d of a sclera particle) get a collar of wall
     // particles along their normal, every d/2 from d/2 out to the backstop's depth, closing the
-    // seam between the cap and the sclera layer where fluid left the globe (docs/elasticity.md),
-    // and a fan at that depth over to the nearest sclera column's backstop point.
-    // Then every sclera particle within kLimbusClampSpacings d of a cap or collar wall is anchored.
+    // seam between the cap and the sclera layer where fluid left the globe
+    // (docs/methods/elasticity.md), and a fan at that depth over to the nearest sclera column's
+    // backstop point. Then every sclera particle within kLimbusClampSpacings d of a cap or collar
+    // wall is anchored.
     std::size_t collarCount = 0;
     if (scleraBackstop) {
       const PointGrid scleraGrid(sclera.restPositions, 1.5 * d);
@@ -614,7 +615,7 @@ void addTissues(const Protocol& p, Scenario& s) {
     // The backstop, collar and fan are samples moved off the cavity wall; where they spread (the
     // backstop's samples drift apart by (R + depth) / R outward, the fans are lines from single
     // rim particles) openings up to 0.9 d wide were left, fluid left the globe through one at
-    // the anterior-inferior limbus (docs/elasticity.md "The limbus band, watertight").
+    // the anterior-inferior limbus (docs/methods/elasticity.md "The limbus band, watertight").
     std::size_t seamCount = 0, bandCount = 0;
     if (scleraBackstop) {
       std::vector<sim::Vec3> freeSclera;
@@ -663,31 +664,25 @@ void addTissues(const Protocol& p, Scenario& s) {
     walls.fields.resize(keep.size());
     for (std::size_t b = 0; b < added.size(); ++b) walls.add(added[b], addedNormal[b], addedTag[b]);
     if (backstopCount > 0)
-      s.notes.push_back("sclera held at its outer surface: a rigid wall (the orbit) stands " +
+      s.notes.push_back("sclera held at its outer surface: a rigid backstop wall " +
                         formatNumber(kBackstopGapSpacings, 2) +
-                        " particle spacing behind it where no orbital fat is, so its anchored "
-                        "layer is backed within "
-                        "the kernel's support (no empty gap, i.e. no p = 0 free surface, behind "
-                        "the pressurised globe)");
+                        " particle spacing behind it where no orbital fat is, so no empty gap "
+                        "lies behind the globe (docs/methods/elasticity.md)");
     if (bandCount > 0)
       s.notes.push_back(
-          "the limbus clamp band's face walled like the cavity: " + std::to_string(bandCount) +
-          " wall particles at half the spacing among its anchored sclera particles within " +
-          formatNumber(kBandFaceSpacings, 2) +
-          " spacings of the cavity, none within 2 spacings of a free one or of an anchored one "
-          "next to a free one (the band's lattice at d let fluid in)");
+          "the limbus clamp band's face walled: " + std::to_string(bandCount) +
+          " wall particles at half the spacing within " + formatNumber(kBandFaceSpacings, 2) +
+          " spacings of the cavity keep the fluid out of the band (docs/methods/elasticity.md)");
     if (seamCount > 0)
       s.notes.push_back("the wall shell behind the sclera closed: " + std::to_string(seamCount) +
                         " wall particles where the backstop's, collar's and fan's samples left "
                         "openings wider than the cavity wall's");
     if (collarCount > 0)
-      s.notes.push_back(
-          "sclera clamped at the limbus (where it joins the cornea, here the rigid lens/IOL "
-          "cap): " +
-          std::to_string(sclera.limbusClamped) + " sclera particles within " +
-          formatNumber(kLimbusClampSpacings, 2) +
-          " spacings of the cap's wall or of a rigid collar (" + std::to_string(collarCount) +
-          " wall particles from the cap's edge out to the backstop) anchored");
+      s.notes.push_back("sclera clamped at the limbus (the rigid lens/IOL cap): " +
+                        std::to_string(sclera.limbusClamped) + " sclera particles within " +
+                        formatNumber(kLimbusClampSpacings, 2) +
+                        " spacings of the cap or its collar (" + std::to_string(collarCount) +
+                        " wall particles) anchored");
     if (orbitCount > 0)
       s.notes.push_back(
           "the bony orbit: " + std::to_string(orbitCount) + " rigid wall particles " +
@@ -852,14 +847,12 @@ std::vector<std::string> tissueReportLines(const Scenario& s, const TissueMeasur
                     mm(t.estimatedDisplacement) + ")");
     const double wdt = t.thicknessModeFrequency * meanTimeStep;  // [1]
     if (wdt > 1.0)
-      lines.push_back(
-          t.name + ": its displacement is an upper bound, up to " +
-          formatNumber(1.0 + wdt * wdt, 2) + "x the physical one: at this run's mean step " +
-          formatNumber(meanTimeStep * 1e3, 3) + " ms the layer's thickness mode (" +
-          formatNumber(t.thicknessModeFrequency, 3) +
-          " rad/s) is not resolved and the elastic stage, solved before the pressure solve, "
-          "answers the fluid's load softened by 1 + (omega_1 dt)^2 (docs/elasticity.md, "
-          "\"Anchored pad under water\"); the coverage does not depend on it");
+      lines.push_back(t.name + ": its displacement is an upper bound, up to " +
+                      formatNumber(1.0 + wdt * wdt, 2) + "x the physical one: the mean step " +
+                      formatNumber(meanTimeStep * 1e3, 3) +
+                      " ms does not resolve the layer's thickness mode (" +
+                      formatNumber(t.thicknessModeFrequency, 3) +
+                      " rad/s); the coverage does not depend on it (docs/methods/elasticity.md)");
   }
   if (!s.retinaSamples.scleraLayer.empty()) {
     // Fluid that entered or passed the tissue (TissueMeasures): a leaking run says so.

@@ -1,12 +1,12 @@
-// Tissues of a scenario (issue 7): the sclera around the cavity wall and the orbital fat behind
+// Tissues of a scenario: the sclera around the cavity wall and the orbital fat behind
 // the globe, each decided elastic or rigid before the run and, when elastic, sampled as dynamic
 // particles of an elastic material that replace the rigid cavity wall they cover.
 //
-// Decision (DESIGN.md principle 1, sim/solid/tissue_deformation.h): the thin-shell estimate
-// u = p R^2 / (2 E t) under the largest load the scene can apply, p = rho_max g H + 2 sigma / R
-// (hydrostatic over the cavity's largest extent H, the heavier phase; capillary pressure of the
-// oil/aqueous interface at the cavity's equivalent-sphere radius R), compared with 0.1 d, unless
-// the protocol's `mode` forces elastic or rigid. The sclera is estimated at its thinnest
+// Decision (docs/developer-guide.md principle 1, sim/solid/tissue_deformation.h): the thin-shell
+// estimate u = p R^2 / (2 E t) under the largest load the scene can apply, p = rho_max g H + 2
+// sigma / R (hydrostatic over the cavity's largest extent H, the heavier phase; capillary pressure
+// of the oil/aqueous interface at the cavity's equivalent-sphere radius R), compared with 0.1 d,
+// unless the protocol's `mode` forces elastic or rigid. The sclera is estimated at its thinnest
 // anatomical thickness (or the protocol's uniform one), the fat at its layer thickness: both err
 // towards "elastic".
 //
@@ -21,14 +21,14 @@
 //   layer's outer surface, on the same lattice: no empty gap behind the anchored layer either way).
 //   The walls behind the sclera (backstop, the limbus collar and its fan) are closed where their
 //   samples spread: a d/2 lattice on the same surface fills their openings, so that none is wider
-//   than the cavity wall's by more than the check's resolution (docs/elasticity.md "The limbus
-//   band, watertight"; enclosure.h). The limbus clamp band (anchored, on the lattice at d, which
-//   let fluid in) gets wall particles at d/2 on its face, away from every free sclera particle.
-//   A sclera thinner than kMinTissueLayerSpacings d cannot be resolved (the elasticity needs
-//   two layers for its quadratic gradients, docs/elasticity.md), so the particle layer is
-//   thickened to that and Young's modulus scaled by t / t_layer (area-weighted means over the
-//   wall): the membrane stiffness E t, which sets a pressurised shell's displacement, is kept; the
-//   bending stiffness and the areal mass are over-estimated (noted in Scenario::notes).
+//   than the cavity wall's by more than the check's resolution (docs/methods/elasticity.md "The
+//   limbus band, watertight"; enclosure.h). The limbus clamp band (anchored, on the lattice at d,
+//   which let fluid in) gets wall particles at d/2 on its face, away from every free sclera
+//   particle. A sclera thinner than kMinTissueLayerSpacings d cannot be resolved (the elasticity
+//   needs two layers for its quadratic gradients, docs/methods/elasticity.md), so the particle
+//   layer is thickened to that and Young's modulus scaled by t / t_layer (area-weighted means over
+//   the wall): the membrane stiffness E t, which sets a pressurised shell's displacement, is kept;
+//   the bending stiffness and the areal mass are over-estimated (noted in Scenario::notes).
 // Elastic fat: lattice points inside anatomy::makeOrbitalFat's cup at least d/2 from its faces
 //   and outside the sampled sclera layer (r > t_layer: the lattice continues from the sclera);
 //   the back-face layer (within d of the cup's outer face) anchored when anchoring is "back_face".
@@ -59,21 +59,21 @@ inline constexpr double kMinTissueLayerSpacings = 2.5;
 // layer lies at depths (t_layer - d, t_layer], every free particle at most t_layer - d deep, so one
 // spacing puts the wall 1-2 d from the anchored layer (inside its kernel support, as the cavity
 // wall is for the fluid) and at least 2 d from every free particle (outside theirs: the wall can
-// push no free particle). Two spacings (sessions 5-7) left the anchored layer with no neighbour
+// push no free particle). Two spacings left the anchored layer with no neighbour
 // behind it: its number density deficient (mean 0.81 rest), INDSPH's pressure clamped at 0 there
 // while the fluid next to the face read ~50 Pa, so the pressure solve drove fluid through the
 // layer into the gap (10 kPa: 3 / 8 / 42 particles in the tissue at 0.1 / 0.3 / 0.6 s). Half a
 // spacing (the wall within 1.5 d of the free layer) failed the 2 MPa sclera test: 207 um, bound
-// 4.1 um. docs/elasticity.md "Closing the gaps behind the sclera".
+// 4.1 um. docs/methods/elasticity.md "Closing the gaps behind the sclera".
 inline constexpr double kBackstopGapSpacings = 1.0;
-// [1] the limbus clamp (docs/elasticity.md "The limbus clamp and the bony orbit"): the sclera's
-// anterior edge joins the cornea, here the rigid lens/IOL cap. Every sclera particle within this
-// many spacings of a cap wall particle, or of the rigid collar that closes the seam from the cap's
-// edge out to the backstop, is anchored, so the collar cannot push the free rim (it did,
-// 0.14-0.3 mm, when those particles were free: session 5). Measured on the 2 MPa sclera test
-// (10 ms): with 2 d (the kernel's support) two free particles 2.2-2.5 d from the collar moved 2.3
-// and 4.6 um (bound 4.1 um, elsewhere 0.1 um); with 3 d the largest displacement is 0.10 um, as
-// without collar and clamp.
+// [1] the limbus clamp (docs/methods/elasticity.md "The limbus clamp and the bony orbit"): the
+// sclera's anterior edge joins the cornea, here the rigid lens/IOL cap. Every sclera particle
+// within this many spacings of a cap wall particle, or of the rigid collar that closes the seam
+// from the cap's edge out to the backstop, is anchored, so the collar cannot push the free rim (it
+// did, 0.14-0.3 mm, when those particles were free). Measured on the 2 MPa sclera test (10 ms):
+// with 2 d (the kernel's support) two free particles 2.2-2.5 d from the collar moved 2.3 and 4.6 um
+// (bound 4.1 um, elsewhere 0.1 um); with 3 d the largest displacement is 0.10 um, as without collar
+// and clamp.
 inline constexpr double kLimbusClampSpacings = 3.0;
 // [1] the cap's rim (where the collar starts) reaches this far from the wall samples over the
 // sclera: the cap and the sclera's wall samples are both at d/2, so a cap sample next to the
@@ -147,8 +147,9 @@ struct TissueMeasures {
   double cavityVolumeChange = 0.0;
   // [m] area-weighted mean outward displacement per reported region (kReportedRegions order).
   std::vector<double> regionMeanOutward;
-  // Fluid in the tissue (issue 7's leak; counted only when the sclera is sampled). A fluid
-  // particle outside the cavity surface at depth r (distance to the rest surface) is
+  // Fluid in the tissue (a leak through the tissue's lattice; counted only when the sclera is
+  // sampled). A fluid particle outside the cavity surface at depth r (distance to the rest surface)
+  // is
   // - `fluidInTissue` when some sclera particle within 1.5 d of it lies more than d shallower
   //   (r_j < r - d), or none lies within 1.5 d and r > d: it sits behind a tissue particle, inside
   //   the layer. Fluid in the openings of the lattice-sampled face (the staircase's hollows, up to
@@ -179,7 +180,7 @@ void updateTissueDisplacement(const Scenario& scenario, const std::vector<sim::V
 // The report's tissue lines: one ("tissue rigid (estimate ... < 0.1 d)") when no tissue is
 // elastic, else per tissue its maximum displacement, the retina's, and the cavity volume change;
 // with the run's mean time step [s] (0 = unknown), a warning for each elastic tissue whose
-// thickness mode the step does not resolve ((omega_1 dt)^2 > 1, docs/elasticity.md).
+// thickness mode the step does not resolve ((omega_1 dt)^2 > 1, docs/methods/elasticity.md).
 std::vector<std::string> tissueReportLines(const Scenario& scenario, const TissueMeasures& last,
                                            double lastTime, double meanTimeStep = 0.0);
 

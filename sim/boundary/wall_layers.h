@@ -2,8 +2,8 @@
 // with a known volume, so that a fluid particle near the wall sees a full kernel support of
 // particles (the number density of a fluid at rest next to a flat wall is then the bulk value,
 // unlike a single Akinci 2012 surface layer, which over-estimates it by ~55 % at d/2 from a face;
-// docs/solvers.md "Layered walls"). Such walls are the static particles of Wang et al. 2023,
-// section 4.3: INDSPH solves for their own stiffness kappa_b (eq. 21).
+// docs/methods/solvers.md "Layered walls"). Such walls are the static particles of Wang et al.
+// 2023, section 4.3: INDSPH solves for their own stiffness kappa_b (eq. 21).
 //
 // Which layer a wall particle belongs to is kept in the wall field "wall_layer" (0 = the surface
 // layer, d/2 behind the wall surface; 1 = the next one, ...). The field exists only when a scene

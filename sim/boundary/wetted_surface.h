@@ -1,4 +1,4 @@
-// Which elastic particles form a wetted surface, and of which wall tag (issue 6 on tissue).
+// Which elastic particles form a wetted surface, and of which wall tag (wall wetting on tissue).
 //
 // A contact angle is set per (fluid, wall tag) (MaterialTable::setContactAngle). Where an elastic
 // tissue replaces the wall (the sclera under the retina), its fluid-facing layer carries that tag

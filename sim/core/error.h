@@ -1,5 +1,5 @@
 // The engine's one error type: library code throws it with context; only tools/ turns it into an
-// exit code (STYLE.md "No singletons ... never calls exit()").
+// exit code (docs/developer-guide.md code rule 2: no singletons; the library never calls exit()).
 #pragma once
 
 #include <stdexcept>

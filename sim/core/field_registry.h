@@ -2,7 +2,8 @@
 //
 // Every per-particle array lives here with a name, a unit and whether it belongs in checkpoints.
 // Sorting, output, checkpoints and the restart-equals-continuous test all iterate the registry,
-// so a field added by a new effect cannot be forgotten by any of them (STYLE.md point 5).
+// so a field added by a new effect cannot be forgotten by any of them (docs/developer-guide.md code
+// rule 5).
 #pragma once
 
 #include <cstddef>

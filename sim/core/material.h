@@ -12,7 +12,7 @@ namespace sim {
 enum class MaterialKind { kFluid, kElastic };
 
 // Fluid-only effects (viscosity, XSPH velocity smoothing) act on and between fluid particles only:
-// an elastic particle's motion is the elastic stage's business (docs/elasticity.md).
+// an elastic particle's motion is the elastic stage's business (docs/methods/elasticity.md).
 constexpr bool isFluid(MaterialKind kind) { return kind == MaterialKind::kFluid; }
 
 struct Material {
@@ -26,7 +26,7 @@ struct Material {
   Real kinematicViscosity() const { return dynamicViscosity / restDensity; }  // [m^2/s]
 };
 
-// Interfacial tension between two fluid materials (issue 6).
+// Interfacial tension between two fluid materials.
 struct InterfacialTension {
   int materialA = -1;
   int materialB = -1;
@@ -35,8 +35,8 @@ struct InterfacialTension {
 
 // Contact angle of a fluid on the wall particles of one tag, MEASURED THROUGH `fluidMaterial`
 // (0 deg: that fluid spreads on the wall; 180 deg: it beads up). The toolkit's clinical convention
-// (DESIGN.md) gives theta through the aqueous phase; a caller holding the angle through the
-// tamponade passes the tamponade as fluidMaterial, or 180 deg minus it for the aqueous.
+// (docs/conventions.md) gives theta through the aqueous phase; a caller holding the angle through
+// the tamponade passes the tamponade as fluidMaterial, or 180 deg minus it for the aqueous.
 struct ContactAngle {
   int fluidMaterial = -1;
   int wallTag = 0;

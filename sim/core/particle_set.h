@@ -61,8 +61,8 @@ class DynamicParticles {
   std::vector<Real>& density;     // [kg/m^3] as the active pressure solver defines it
 };
 
-// Static wall particles: never moved by forces (DESIGN.md principle 2: the wall is fixed in the
-// eye frame). `volume` is the Akinci et al. 2012 boundary volume 1/sum_k W_bk.
+// Static wall particles: never moved by forces (docs/developer-guide.md principle 2: the wall is
+// fixed in the eye frame). `volume` is the Akinci et al. 2012 boundary volume 1/sum_k W_bk.
 class WallParticles {
  public:
   WallParticles()

@@ -1,7 +1,7 @@
 // Deterministic parallel reductions: the sum is formed over fixed blocks of indices, each block
 // summed in index order, then the block sums in block order. The result depends neither on the
-// thread count nor on scheduling (DESIGN.md principle 7), and the buffer is reused (no allocation
-// in the time-step loop once warmed up).
+// thread count nor on scheduling (docs/developer-guide.md principle 7), and the buffer is reused
+// (no allocation in the time-step loop once warmed up).
 #pragma once
 
 #include <algorithm>

@@ -1,5 +1,5 @@
-// Wall-clock time per named stage, accumulated over a run (DESIGN.md principle 1: every stage is
-// timed, and the run records it).
+// Wall-clock time per named stage, accumulated over a run (docs/developer-guide.md principle 1:
+// every stage is timed, and the run records it).
 #pragma once
 
 #include <chrono>

@@ -1,4 +1,5 @@
-// Basic numeric types of the engine. SI units everywhere inside sim/ (DESIGN.md principle 5).
+// Basic numeric types of the engine. SI units everywhere inside sim/ (docs/developer-guide.md
+// principle 5).
 #pragma once
 
 #include <Eigen/Core>

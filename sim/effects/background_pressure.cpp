@@ -57,8 +57,8 @@ void BackgroundPressure::apply(World& world, const StepContext& context) {
     shift[i] = (-dt * pressure_ / (referenceDensity_ * vi)) * bracket;
     // Contact-line particles (a wall and the other liquid in reach) are not shifted: there the
     // shift moves the contact line itself. Measured on the cavity's 120 deg lens (closed form
-    // 0.225 of the wall): 0.208 with them shifted, 0.228-0.234 without (docs/interface.md,
-    // validation 3, session 12).
+    // 0.225 of the wall): 0.208 with them shifted, 0.228-0.234 without (docs/methods/interface.md,
+    // validation 3).
     if (colour != nullptr && nw.count(i) > 0 && (*colour)[i].squaredNorm() > 0) shift[i].setZero();
   }
 }

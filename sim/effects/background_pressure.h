@@ -1,4 +1,4 @@
-// Background pressure for the surface stress in a closed incompressible scene (issue 6).
+// Background pressure for the surface stress in a closed incompressible scene.
 //
 // Why: the surface stress of the interfacial_tension stage (Hu & Adams 2006) is a tension along
 // the interface, sigma |gradC| / 3 per unit area, i.e. a negative pressure tangentially. A
@@ -22,7 +22,7 @@
 // rho, which is no physics (the shift is not a force) and made the contact angle depend on the
 // droplet's density. A 150 deg droplet at zero gravity (R0/8, from its cap, 0.6 s, mean of the
 // last fifth) read 146.9 at 970 kg/m^3 and 164.0 at 1760 (swinging 158-167) with m_i; with
-// rho_ref V_i, 147.2 and 148.9 (docs/interface.md, validation 3, session 21). rho_ref is also
+// rho_ref V_i, 147.2 and 148.9 (docs/methods/interface.md, validation 3). rho_ref is also
 // the density of the time-step limit below, which therefore now holds for every phase (with m_i
 // a phase lighter than the mean was shifted faster than the limit assumed). The bracket is the
 // kernel's consistency error, zero on a complete regular neighbourhood, so dv only moves particles
@@ -32,22 +32,21 @@
 // resists every rearrangement of the particles like an elastic lattice: the l = 2 droplet ran 22 %
 // fast and damped at 45 1/s (physical 4), and in the eye (default_eye.toml, upright) the oil rose
 // to the superior quadrant 4x slower (coverage 0.66 -> 0.675 instead of -> 0.805 in 0.6 s): the
-// pinning of slow buoyant motion that the gravity reference removed (docs/interface.md, validation
-// 1b). Contact-line particles (a wall neighbour and a colour gradient of the first tension pair)
-// are not shifted: there the shift moved the contact line itself (the cavity's 120 deg lens covered
-// 0.208 of the wall instead of 0.225; unshifted 0.228-0.234; docs/interface.md, validation 3,
-// session 12).
-// At a free surface the shift would pull the surface in, so the stage runs only in closed
-// scenes (rule in stage_registry.cpp). Fluid particles only: elastic particles carry their own
-// stress, and a fluid particle next to tissue counts the tissue particles as neighbours, so its
-// bracket stays complete.
+// pinning of slow buoyant motion that the gravity reference removed (docs/methods/interface.md,
+// validation 1b). Contact-line particles (a wall neighbour and a colour gradient of the first
+// tension pair) are not shifted: there the shift moved the contact line itself (the cavity's 120
+// deg lens covered 0.208 of the wall instead of 0.225; unshifted 0.228-0.234;
+// docs/methods/interface.md, validation 3). At a free surface the shift would pull the surface in,
+// so the stage runs only in closed scenes (rule in stage_registry.cpp). Fluid particles only:
+// elastic particles carry their own stress, and a fluid particle next to tissue counts the tissue
+// particles as neighbours, so its bracket stays complete.
 //
 // How large: p_bg = kBackgroundPressurePerTension sigma / d (the tension's scale: |gradC| ~ 1/d).
 // Time step: dt <= kBackgroundCourant h / c_bg, c_bg = sqrt(p_bg / rho), h the kernel support
 // radius (2 d). Measured with the force form on the same droplet (R = 3 mm, sigma 0.04 N/m,
 // d = 0.5 mm): c_bg dt / h = 0.20 calm (max speed 4-6 mm/s) for p_bg = 1, 2 and 3 sigma / d; 0.28
-// agitated (0.1-0.2 m/s); 0.44 unstable (docs/interface.md). The transport form was run at this
-// limit only; its own stability bound was not measured.
+// agitated (0.1-0.2 m/s); 0.44 unstable (docs/methods/interface.md). The transport form was run at
+// this limit only; its own stability bound was not measured.
 #pragma once
 
 #include <vector>
@@ -64,7 +63,7 @@ inline constexpr const char* kTransportShift = "transport_shift";
 
 // [1] p_bg in units of sigma / d. Laplace droplet under INDSPH (d = R/6) at the step limit, jump
 // over 2 sigma / R after the first 10 ms: 1 -> 0.72, 1.5 -> 0.82, 2 -> 0.86, 4 -> 0.83, 8 -> 0.70
-// (2 at R/8: 0.88-0.90; docs/interface.md, validation 1b).
+// (2 at R/8: 0.88-0.90; docs/methods/interface.md, validation 1b).
 inline constexpr Real kBackgroundPressurePerTension = 2.0;
 // [1] c_bg dt / h at the stage's time-step limit (measured, see above).
 inline constexpr Real kBackgroundCourant = 0.2;

@@ -2,7 +2,7 @@
 // one pipeline stage that adds accelerations to the dynamic particles.
 //
 // An effect registers the per-particle fields it owns in attach(), so an absent effect allocates
-// nothing (DESIGN.md principle 1), and reports its own time-step limit.
+// nothing (docs/developer-guide.md principle 1), and reports its own time-step limit.
 #pragma once
 
 #include <limits>

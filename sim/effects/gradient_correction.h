@@ -3,7 +3,7 @@
 // is exact for any linear field f whatever the particle order. Used by the interfacial_tension
 // stage's corrected surface stress (interfacial_tension_hu_adams2006.h). (The wall_adhesion stage
 // keeps its symmetric pair sum: with this operator a 30 deg droplet over-spread to 25.8 deg and
-// 150 deg stayed at 143.9, docs/interface.md validation 3.)
+// 150 deg stayed at 143.9, docs/methods/interface.md validation 3.)
 #pragma once
 
 #include <cmath>
@@ -15,10 +15,10 @@ namespace sim {
 // Below these |det B| the neighbourhood is too irregular for the correction and the plain sum is
 // kept (L = I). A full support reads det ~ 1 (with walls completing it next to a wall); the
 // fluid-only matrix ~ 0.5 next to a flat wall (a half space), ~ 0.25 in a box edge. Measured
-// (docs/interface.md, validation 1c): with 0.05 for both, the INDSPH l = 2 droplet with XSPH 0.05
-// (mu 1 mPa s) blew up at 0.09 s (speeds from 0.4 to 160 m/s in 30 steps); with 0.5 for the full
-// matrix it runs stably. gradC's one-sided matrix keeps 0.05: at 0.25 the 150 deg sessile droplet
-// fell from 142.6 to 139.2 deg (its contact-line particles lie in that range).
+// (docs/methods/interface.md, validation 1c): with 0.05 for both, the INDSPH l = 2 droplet with
+// XSPH 0.05 (mu 1 mPa s) blew up at 0.09 s (speeds from 0.4 to 160 m/s in 30 steps); with 0.5 for
+// the full matrix it runs stably. gradC's one-sided matrix keeps 0.05: at 0.25 the 150 deg sessile
+// droplet fell from 142.6 to 139.2 deg (its contact-line particles lie in that range).
 inline constexpr Real kMinCorrectionDeterminant = 0.5;        // fluid and walls (divergence)
 inline constexpr Real kMinFluidCorrectionDeterminant = 0.05;  // fluid only (gradC)
 

@@ -1,5 +1,5 @@
 // Gravity (or any uniform body acceleration): a_i += g, with g the World's current gravity, which
-// the scenario runner turns as the posture changes (DESIGN.md principle 2).
+// the scenario runner turns as the posture changes (docs/developer-guide.md principle 2).
 #pragma once
 
 #include <vector>

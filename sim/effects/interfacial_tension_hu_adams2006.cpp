@@ -161,7 +161,8 @@ void InterfacialTensionHuAdams2006::apply(World& world, const StepContext&) {
         // Elastic neighbours are a wall to the fluids (the sclera in place of the retina's wall
         // particles) and take the mirrored stress too. Left as stress-free neighbours they end
         // the stress field at the tissue, and there a non-wetting droplet lifts off (measured on
-        // walls, docs/interface.md validation 3; on tissue tests/sim/interface_contact_angle.cpp).
+        // walls, docs/methods/interface.md validation 3; on tissue
+        // tests/sim/interface_contact_angle.cpp).
         Vec3 wallSum = Vec3::Zero(), m = Vec3::Zero();
         for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
           wallSum += wallVolume[nw.indices[k]] * gradB[k];

@@ -21,10 +21,10 @@
 // is exact for a stress field only where sum_j V_j gradW_ij = 0, i.e. on an ordered lattice. The
 // surface stress is tensile along the interface and rearranges the interface particles; there
 // the symmetric form under-states the force: an INDSPH droplet held 0.84 of 2 sigma / R with the
-// background pressure, the corrected form 0.97 (docs/interface.md, validation 1c). The corrected
-// (difference) form is first-order consistent on any particle order, at the price of a small
-// momentum residual (measured 3-5e-4 of sum |f| on a relaxed jittered droplet; the droplet does
-// not drift, tests/sim/interface_laplace.cpp). Cost: one more neighbour pass per interface
+// background pressure, the corrected form 0.97 (docs/methods/interface.md, validation 1c). The
+// corrected (difference) form is first-order consistent on any particle order, at the price of a
+// small momentum residual (measured 3-5e-4 of sum |f| on a relaxed jittered droplet; the droplet
+// does not drift, tests/sim/interface_laplace.cpp). Cost: one more neighbour pass per interface
 // particle (L_i is formed only where gradC or a neighbour's stress is not 0).
 // The correction is used only in well-conditioned neighbourhoods (gradient_correction.h): with
 // it applied wherever B was invertible, an INDSPH droplet at 1 mPa s blew up.
@@ -37,7 +37,7 @@
 // gradient of the fluid's own colour. The uncorrected sum instead reads the wall as carrying
 // particle i's colour (a neutral, 90 deg, wall) and tilts the interface normal towards 90 deg
 // there: sessile droplets requested at 30 / 150 deg settled at 35-39 / 138 deg, with the one-sided
-// gradient at 31.6-33.4 / 142.6 (docs/interface.md, validation 3). The wall_adhesion stage
+// gradient at 31.6-33.4 / 142.6 (docs/methods/interface.md, validation 3). The wall_adhesion stage
 // (wall_adhesion_young.h) adds the wall interface energies that set the contact angle.
 //
 // Time step: the capillary-wave limit dt <= sqrt(rho_avg d^3 / (2 pi sigma)) (Brackbill, Kothe

@@ -8,7 +8,7 @@ void ViscosityMonaghan2005::attach(World& world) {
   viscosityOfMaterial_.clear();
   // An elastic material is marked -1: a fluid particle sees an elastic neighbour as a wall moving
   // with it (the fluid's viscosity), the elastic particle gets the opposite pair force, and
-  // elastic-elastic pairs are skipped (docs/elasticity.md).
+  // elastic-elastic pairs are skipped (docs/methods/elasticity.md).
   for (const auto& m : world.materials)
     viscosityOfMaterial_.push_back(isFluid(m.kind) ? m.dynamicViscosity : -1.0);
 }
@@ -50,7 +50,7 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
   for (Index i = 0; i < n; ++i) {
     const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
     if (mui < 0) {
-      // Elastic particle (helper "heavy", session 4): the reaction of its fluid neighbours'
+      // Elastic particle: the reaction of its fluid neighbours'
       // moving-wall drag (below), the same pair term with the fluid's viscosity and the opposite
       // sign, so momentum goes from fluid to solid, none is lost. Nothing between elastic pairs.
       Vec3 a = Vec3::Zero();

@@ -19,8 +19,8 @@ class ViscosityMonaghan2005 final : public Effect {
  public:
   // dt <= kStableStepFactor d^2/nu. The classic 0.125 (Morris et al. 1997) is NOT stable for this
   // operator at h = 2d: power iteration on it (1500-particle oil block, d = 2 mm) gives a largest
-  // stable step of 0.97 x 0.125 d^2/nu with tank walls and 0.80 x without (docs/viscosity.md).
-  // 0.08 keeps a margin below the measured 0.1.
+  // stable step of 0.97 x 0.125 d^2/nu with tank walls and 0.80 x without
+  // (docs/methods/viscosity.md). 0.08 keeps a margin below the measured 0.1.
   static constexpr Real kStableStepFactor = 0.08;
 
   explicit ViscosityMonaghan2005(bool wallFriction = true) : wallFriction_(wallFriction) {}

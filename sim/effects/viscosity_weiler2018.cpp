@@ -43,7 +43,7 @@ ViscosityWeiler2018::ViscosityWeiler2018(const ImplicitViscosityParameters& para
 void ViscosityWeiler2018::attach(World& world) {
   viscosityOfMaterial_.clear();
   // Elastic materials count as viscosity 0: the harmonic pair mean is then 0, so their rows are
-  // m v = m v* and fluid rows skip them (docs/elasticity.md) at no cost in the solve.
+  // m v = m v* and fluid rows skip them (docs/methods/elasticity.md) at no cost in the solve.
   for (const auto& m : world.materials)
     viscosityOfMaterial_.push_back(isFluid(m.kind) ? m.dynamicViscosity : 0.0);
   // The warm start is state a resumed run needs to reproduce the CG iterates bit for bit, so it

@@ -18,7 +18,7 @@
 // step's viscous acceleration. Walls are static no-slip particles with Akinci volumes V_b; a wall
 // may carry a tangential surface velocity (a plate sliding in its own plane, a rotating cylinder)
 // in an optional wall field "velocity" [m/s]: its particle positions stay valid, so the wall stays
-// static in the sense of DESIGN.md principle 2.
+// static in the sense of docs/developer-guide.md principle 2.
 //
 // Momentum: the velocity is finally set to v = v* + dt M^-1 f(v_cg), the pair forces evaluated at
 // the CG solution. They are equal and opposite pair by pair, so without walls sum m v is conserved
@@ -50,7 +50,8 @@ struct ImplicitViscosityParameters {
   Real tolerance = 1e-6;
   int maxIterations = 300;
   bool wallFriction = true;  // no-slip walls (false: walls exert no viscous force)
-  // Start CG from v* + dt a_visc(previous step) instead of v* (docs/viscosity.md: iterations).
+  // Start CG from v* + dt a_visc(previous step) instead of v* (docs/methods/viscosity.md:
+  // iterations).
   bool warmStart = true;
 };
 

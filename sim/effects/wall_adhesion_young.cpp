@@ -226,8 +226,7 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
       // lists). With them a stressed particle read gamma delta P sum_j V_j gradW_ij over the
       // tissue, the tangential gradient of the tissue's number density: 0 above the lattice's
       // columns, and off them a force towards the columns for a layer under tension (away from
-      // them under compression) that walls do not exert (docs/interface.md, validation 3,
-      // session 16).
+      // them under compression) that walls do not exert (docs/methods/interface.md, validation 3).
       if (!world.materials.isFluid(p.material[j])) continue;
       const Mat3 sum =
           stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i]) : stress_[j];

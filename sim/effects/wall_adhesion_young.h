@@ -15,7 +15,7 @@
 // immaterial; in SPH it is not, and which phase is right depends on whether the
 // background_pressure stage shifts the particles (transport velocity; on in closed INDSPH
 // scenes with tension and no elastic tissue). Measured on the cavity's 120 deg lens (closed
-// form 0.225 of the wall; docs/interface.md, validation 3, session 12; the same with the phases
+// form 0.225 of the wall; docs/methods/interface.md, validation 3; the same with the phases
 // swapped):
 // - with the shift: the phase with more volume. INDSPH 0.208 against 0.168 on the oil; WCSPH
 //   with the stage forced on 0.19 against 0.21. With the stress on the smaller phase a 150 deg
@@ -46,19 +46,19 @@
 // equals the one over the wall it replaces within 0.4 % (tests/sim/interface_units.cpp); the
 // interfacial_tension stage mirrors its stress across tissue as across walls.
 // Layered walls (sim/boundary/wall_layers.h): only the surface layer is the wetted surface.
-// Measured (docs/interface.md, validation 3, session 14): the static line force against 2 pi a
+// Measured (docs/methods/interface.md, validation 3): the static line force against 2 pi a
 // sigma cos(theta) at the contact radius a, d = R/6, is 1.03 / 0.85 with three lattice layers
 // (layer on the aqueous / oil) and 1.13 / 0.89 on one Akinci layer (the 1.29 / 1.07 / 1.2 quoted
-// before session 14 used the equivalent sphere's radius, 0.79 a).
+// with the equivalent sphere's radius, 0.79 a, instead).
 // With INDSPH (corrected surface stress), three wall layers and a jittered start, a sessile
 // droplet (R = 6 d) reaches 33.4 / 59.7 / 87.0 / 120.2 / 142.6 deg for 30 / 60 / 90 / 120 / 150
 // requested (the issue's +-5 deg except 150); with WCSPH and one Akinci layer
 // 49 / 76 / 97 / 122 / 140 deg for 30 / 60 / 90 / 120 / 150 (0.05 s, older cap fit).
 //
 // Convention: the angle in ContactAngle is measured through the fluid it names; the toolkit's
-// clinical convention (DESIGN.md) names the aqueous phase (theta ~ 18 deg for silicone oil on
-// retina, Fawcett et al. 1994). One pair of liquids may have contact angles: the first tension
-// pair of the MaterialTable.
+// clinical convention (docs/conventions.md) names the aqueous phase (theta ~ 18 deg for silicone
+// oil on retina, Fawcett et al. 1994). One pair of liquids may have contact angles: the first
+// tension pair of the MaterialTable.
 #pragma once
 
 #include <cstdint>

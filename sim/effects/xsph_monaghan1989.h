@@ -9,10 +9,10 @@
 // Fluid particles only, among neighbours of the same material only (pairs stay equal and opposite):
 // - an elastic particle is not smoothed (it would damp the solid's rigid rotation and vibration),
 //   and a fluid particle ignores elastic neighbours as it ignores wall particles
-//   (docs/elasticity.md);
+//   (docs/methods/elasticity.md);
 // - across a fluid-fluid interface the smoothing is an artificial drag between the phases: with it,
 //   a 970 kg/m^3 blob in water rose 0.33 mm instead of 1.14 mm in 0.3 s, and finer spacing did not
-//   help (docs/interface.md, validation 6), so each phase is smoothed on its own.
+//   help (docs/methods/interface.md, validation 6), so each phase is smoothed on its own.
 #pragma once
 
 #include "sim/effects/effect.h"

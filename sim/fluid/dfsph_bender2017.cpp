@@ -115,8 +115,8 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   // not stiffness * dt: the pressure is what persists from step to step when dt changes.
   auto& warm = *kappaDivergence_;
 
-  // Stiffness factor alpha_i (derivation in docs/solvers.md). The same pass also computes the
-  // divergence solve's first density rate and warm start (below), which only need this
+  // Stiffness factor alpha_i (derivation in docs/methods/solvers.md). The same pass also computes
+  // the divergence solve's first density rate and warm start (below), which only need this
   // particle's own values: one sweep over the pairs instead of two (bit-identical).
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {

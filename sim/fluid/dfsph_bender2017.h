@@ -4,7 +4,8 @@
 //
 // Density is the ordinary mass-weighted one (fluid/density.h), so with several phases this is the
 // "multiphase DFSPH" baseline of Wang et al. 2023. The stiffness factor is derived for unequal
-// masses (docs/solvers.md): alpha_i = rho_i / (|sum_j m_j gradW_ij + sum_b psi_b gradW_ib|^2
+// masses (docs/methods/solvers.md): alpha_i = rho_i / (|sum_j m_j gradW_ij + sum_b psi_b
+// gradW_ib|^2
 //                                              + m_i sum_j m_j |gradW_ij|^2),
 // which reduces to Bender's factor when all masses are equal.
 #pragma once
@@ -29,7 +30,7 @@ struct DfsphParameters {
   // [1] Jacobi relaxation of each pressure update. The local update with the full factor
   // (omega = 1, Bender's choice) barely damps the checkerboard mode of the pressure field: the
   // residual left when the average-error criterion stops the iteration is particle-scale
-  // velocity noise that makes a fluid at rest jitter near walls (docs/solvers.md).
+  // velocity noise that makes a fluid at rest jitter near walls (docs/methods/solvers.md).
   Real relaxation = 1.0;
   Index minNeighborsForDivergence = 20;  // fewer: free-surface particle, skipped (Bender 2017)
 };

@@ -60,7 +60,7 @@ void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context
   product_.resize(n);
   acceleration_.resize(n);
 
-  // rho_adv from v* and the diagonal a_ii = d(A p)_i / d p_i (docs/solvers.md).
+  // rho_adv from v* and the diagonal a_ii = d(A p)_i / d p_i (docs/methods/solvers.md).
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     const Real rho0 = world.restDensityOf(i);

@@ -5,7 +5,7 @@
 // wall force; default) or c = 2 (wall pressure mirrored, p_b = p_i), solved matrix-free
 // by relaxed Jacobi (omega = 0.5) with pressure clamping at 0 and the small-diagonal guard of the
 // TrixiParticles IISPH notes (p = 0 where |a_ii| is tiny). Diagonal a_ii derived in
-// docs/solvers.md.
+// docs/methods/solvers.md.
 #pragma once
 
 #include <vector>

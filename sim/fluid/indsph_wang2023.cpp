@@ -239,7 +239,7 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
   // Anchored particles (sim/solid/fixed_particles.h) do not move: the pipeline resets their
   // velocity after the solve, so a solve that moved them would predict the neighbours' number
   // density for a position the anchor never takes (a fixed lattice facing the fluid then lets it
-  // in, issue 7). They keep their own stiffness, acting on their neighbours as a static wall
+  // in). They keep their own stiffness, acting on their neighbours as a static wall
   // particle's does (eq. 21).
   const std::vector<std::int32_t>* fixed =
       p.fields.has(field::kFixed) ? &p.fields.get<std::int32_t>(field::kFixed) : nullptr;

@@ -2,7 +2,7 @@
 // SPH for high density ratio multiphase fluid", sections 4.1-4.2, Algorithm 1): a DFSPH-style local
 // pressure solve on the NUMBER density delta_i = sum_j W_ij instead of the mass density, so a
 // particle's neighbours count the same whatever their mass and a heavy/light interface does not
-// read as compressed (the error of paper section 3.3). Derivation in docs/solvers.md.
+// read as compressed (the error of paper section 3.3). Derivation in docs/methods/solvers.md.
 //
 //   delta_i   = W_0 + sum_j W_ij + sum_b (V_b / V0_i) W_ib        (eq. 6, walls: Akinci 2012)
 //   delta*_i  = delta_i + dt sum_j (v_i - v_j).gradW_ij + dt sum_b (V_b/V0_i) v_i.gradW_ib (eq. 15)
@@ -43,13 +43,13 @@ struct IndsphParameters {
   // [1] omega of each Jacobi update. With mixed masses a light particle is pushed by all its
   // heavy neighbours' stiffnesses at once, each computed as if it acted alone; full steps
   // (omega = 1) overshoot and at 1:75 threw particles through the floor after 0.3 s of the
-  // two-phase dam break (cfl 0.15). 0.5, IISPH's relaxation, ran 1 s at 1:2...1:75 (2026-11-22).
+  // two-phase dam break (cfl 0.15). 0.5, IISPH's relaxation, ran 1 s at 1:2...1:75.
   Real relaxation = 0.5;
   Real warmStartFactor = 0.5;  // [1] fraction of last accepted step's kappa applied first
   // Divergence-free pass (not in the paper; DFSPH's second solve in number-density form). On the
   // 4 x 8 cm tank at rest (omega 0.5) it lowers the final kinetic energy 3x (1.6e-6 vs 4.8e-6 J)
   // and the hydrostatic error (1.0 % vs 1.9 %); on the dam break it converges in one iteration
-  // and changes nothing measurable (docs/solvers.md).
+  // and changes nothing measurable (docs/methods/solvers.md).
   bool divergenceSolve = true;
   Real divergenceTolerance = 1e-3;     // [1] stop when mean dt (D delta/Dt)/delta0 falls below
   int minNeighborsForDivergence = 20;  // particles with fewer (free surface) are left alone
@@ -66,9 +66,10 @@ struct IndsphParameters {
   // (max(delta*, delta0), which lets a free surface expand) pins a closed fluid at rest to p = 0,
   // so wherever the flow needs a pressure below its mean (-rho dphi/dt < 0 around an oscillating
   // droplet) the fluid is not pulled but left to rarefy: the l = 2 droplet oscillated at half
-  // Lamb's frequency with the clamp (docs/interface.md, validation 2). Particles next to walls keep
-  // the clamp (a single-layer wall under-fills their number density at rest). The convergence
-  // measures then use |delta* V0 - 1| (two-sided errors must not cancel in the mean). Default off.
+  // Lamb's frequency with the clamp (docs/methods/interface.md, validation 2). Particles next to
+  // walls keep the clamp (a single-layer wall under-fills their number density at rest). The
+  // convergence measures then use |delta* V0 - 1| (two-sided errors must not cancel in the mean).
+  // Default off.
   bool correctBulkExpansion = false;
 };
 

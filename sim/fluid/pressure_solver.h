@@ -1,5 +1,6 @@
 // The interface every pressure solver implements (WCSPH, DFSPH, IISPH, number-density, INDSPH),
-// so that they can be swapped on the same scene for comparison (DESIGN.md principle 3).
+// so that they can be swapped on the same scene for comparison (docs/developer-guide.md principle
+// 3).
 //
 // A step is: neighbour update; beginStep (densities, solver factors, and for DFSPH-like solvers the
 // divergence-free solve); non-pressure effects add accelerations; the time step is chosen;

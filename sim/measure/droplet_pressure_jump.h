@@ -1,9 +1,9 @@
-// Pressure jump across a droplet's interface (Young-Laplace check, issue 6 validation 1):
-// mean pressure of the droplet's particles well inside minus the mean pressure of the other
-// particles in a shell outside, both away from the diffuse interface (|r - R| > margin) and from
-// walls (particles with a wall neighbour are left out: the wall term perturbs their pressure).
-// The outer shell (R + margin < r < outerRadius) keeps the sample near the droplet: with the
-// current one-layer Akinci walls the pressure of a closed box at rest is not uniform within a
+// Pressure jump across a droplet's interface (Young-Laplace check, docs/methods/interface.md
+// validation 1): mean pressure of the droplet's particles well inside minus the mean pressure of
+// the other particles in a shell outside, both away from the diffuse interface (|r - R| > margin)
+// and from walls (particles with a wall neighbour are left out: the wall term perturbs their
+// pressure). The outer shell (R + margin < r < outerRadius) keeps the sample near the droplet: with
+// the current one-layer Akinci walls the pressure of a closed box at rest is not uniform within a
 // few h of the walls and corners (engine-notes KNOWN PROBLEM), which is not the droplet's doing.
 #pragma once
 

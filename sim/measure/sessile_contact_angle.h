@@ -1,10 +1,11 @@
-// Contact angle of a sessile droplet on a flat wall from a fitted spherical cap (issue 6
-// validation 3). The interface is sampled at the midpoints of neighbouring droplet/other-phase
-// particle pairs closer than 1.5 d (the sharp interface lies between the two phases' particles);
-// the cap of the droplet's volume that fits those points best gives the angle (fitSessileCap).
-// Also here: the algebraic least-squares sphere (|x|^2 = 2 c.x + k, linear in c and k; Kasa
-// 1976) and the orthogonal-distance sphere; with the sphere centre at signed height z_c above the
-// wall plane, the angle measured through the droplet is theta = acos(-z_c / R).
+// Contact angle of a sessile droplet on a flat wall from a fitted spherical cap
+// (docs/methods/interface.md, validation 3). The interface is sampled at the midpoints of
+// neighbouring droplet/other-phase particle pairs closer than 1.5 d (the sharp interface lies
+// between the two phases' particles); the cap of the droplet's volume that fits those points best
+// gives the angle (fitSessileCap). Also here: the algebraic least-squares sphere (|x|^2 = 2 c.x +
+// k, linear in c and k; Kasa 1976) and the orthogonal-distance sphere; with the sphere centre at
+// signed height z_c above the wall plane, the angle measured through the droplet is theta =
+// acos(-z_c / R).
 #pragma once
 
 #include <vector>
@@ -82,9 +83,9 @@ struct CapFit {
 // span a short arc (a 30 deg cap at R0 = 6 d is 2.7 d tall, 1.7 d above the excluded layer), on
 // which the algebraic fit is biased towards small radii (a known property of the Kasa fit, e.g.
 // Chernov 2010, Circular and Linear Regression): it read static lattice caps of 30 / 45 deg at 33.6
-// / 46.9 deg; the volume-constrained cap reads them at 30.5 / 44.3 (docs/interface.md, validation
-// 3). Near 180 deg neither helps: at 165 deg both read 168 (0.02 d of centre height is 1 deg
-// there). The droplet's volume V_i = m_i / rho_i uses the solver's density where it is set
+// / 46.9 deg; the volume-constrained cap reads them at 30.5 / 44.3 (docs/methods/interface.md,
+// validation 3). Near 180 deg neither helps: at 165 deg both read 168 (0.02 d of centre height is 1
+// deg there). The droplet's volume V_i = m_i / rho_i uses the solver's density where it is set
 // (> 0), else the rest density. sphere / sphereAngle keep the free fit for comparison.
 CapFit fitSessileCap(const World& world, int dropletMaterial, const WallPlane& wall,
                      Real excludeNearWall);

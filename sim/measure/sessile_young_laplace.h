@@ -1,4 +1,4 @@
-// The shape of a sessile droplet under gravity (issue 6, validation 3 under gravity): the
+// The shape of a sessile droplet under gravity (validation 3 under gravity): the
 // axisymmetric Young-Laplace equation in Bashforth & Adams' form (1883), integrated from the apex,
 //   dx/ds = cos phi,  dz/ds = sin phi,  dphi/ds = 2 b + c z - sin(phi) / x,
 // x the distance from the axis, z the depth below the apex, phi the tangent's angle, s the arc

@@ -1,7 +1,7 @@
-// Material of the fluid particle nearest to each wall particle (issue 6 validation 5): the
-// coverage definition "wall area whose nearest fluid is oil", which unlike the Shepard fraction
-// (wall_phase_fraction.h) also classifies wall particles with no fluid within the kernel
-// support (a gap opened between the fluid and the wall).
+// Material of the fluid particle nearest to each wall particle (docs/methods/interface.md
+// validation 5): the coverage definition "wall area whose nearest fluid is oil", which unlike the
+// Shepard fraction (wall_phase_fraction.h) also classifies wall particles with no fluid within the
+// kernel support (a gap opened between the fluid and the wall).
 #pragma once
 
 #include <vector>

@@ -1,6 +1,7 @@
-// Share of one fluid material seen by each wall particle (issue 6 validation 5: coverage of a
-// cavity wall by oil). The same Shepard-normalised SPH interpolant of the phase indicator as
-// protocols/coverage/wall_oil_fraction.h, here within the engine's own kernel support h:
+// Share of one fluid material seen by each wall particle (docs/methods/interface.md validation 5:
+// coverage of a cavity wall by oil). The same Shepard-normalised SPH interpolant of the phase
+// indicator as protocols/coverage/wall_oil_fraction.h, here within the engine's own kernel support
+// h:
 //   phi_b = sum_j V_j W(x_b - x_j) [mat_j == material] / sum_j V_j W(x_b - x_j),  V_j = m_j /
 //   rho0_j,
 // 0 for a wall particle with no fluid neighbour ("dry"). The wall particle is covered when

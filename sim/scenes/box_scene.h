@@ -21,7 +21,7 @@ Box tankDomain(const TankSpec& tank, Real spacing);
 // with outward normals (into the wall) and Akinci et al. 2012 volumes computed by the World. This
 // is how mesh walls are sampled too. (A multi-layer lattice wall would be "permeable" to the
 // clamped pressure solvers: a particle between lattice wall particles sees rest density and
-// no force; a single surface layer is a density barrier. See docs/solvers.md.)
+// no force; a single surface layer is a density barrier. See docs/methods/solvers.md.)
 void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag = 0);
 // Layered walls (sim/boundary/wall_layers.h): the tank's walls as `layers.count` layers of a
 // lattice continuing the fluid lattice of addFluidBlock (cell centres at d/2, 3d/2, ... behind

@@ -2,7 +2,7 @@
 // "An implicit SPH formulation for incompressible linearly elastic solids", CGF 37(6)), in the
 // total Lagrangian form with kernel-gradient correction (Bonet & Lok 1999) and an implicit
 // zero-energy-mode penalty (Ganzenmueller 2015's pair error, treated implicitly as in Kugelstadt
-// et al. 2021). Issue 7; the elastic part of INDSPH (Wang et al. 2023, section 4).
+// et al. 2021); the elastic part of INDSPH (Wang et al. 2023, section 4).
 //
 // Per elastic particle i (reference position X_i, reference volume V_i = m_i / rho0):
 //   corrected reference gradient  g_ij = L_i gradW(X_i - X_j),
@@ -65,11 +65,11 @@ struct ElasticityParameters {
   // impulse the body's own inertia carries, so a load is resisted with the stiffness
   // k / (1 + (omega_1 dt)^2) instead of k (measured: a 60000 kg/m^3 block on an anchored
   // 1000 kg/m^3 pad sags 0.172, 0.204, 0.344, 0.82 d at dt = 0.25, 0.5, 1, 2 ms against the
-  // incompressible 1-D estimate 0.163 d; docs/elasticity.md). 0.3 keeps that error below 9 %
-  // (the heavy-onto-light drop test uses it).
-  // Off by default: the limit uses the thickness mode, which for a body whose load cannot
-  // squeeze it sideways (a wall lining under fluid) over-restricts the step by up to ~100x, and
-  // the scenes that need it (a body carrying a heavier one) are few; see docs/elasticity.md.
+  // incompressible 1-D estimate 0.163 d; docs/methods/elasticity.md). 0.3 keeps that error below 9
+  // % (the heavy-onto-light drop test uses it). Off by default: the limit uses the thickness mode,
+  // which for a body whose load cannot squeeze it sideways (a wall lining under fluid)
+  // over-restricts the step by up to ~100x, and the scenes that need it (a body carrying a heavier
+  // one) are few; see docs/methods/elasticity.md.
   Real couplingStepFactor = 0.0;
   // [1] support radius of the solid's reference kernel in particle spacings (0 = the world's
   // kernel). The reference neighbourhoods are the solid's own, so it may be wider than the fluid's:
@@ -77,7 +77,7 @@ struct ElasticityParameters {
   // it falls back to the first-order correction and a cantilever bends ~30 % too far.
   Real supportRadiusFactor = 2.5;
   // Quadratic moving-least-squares gradient weights instead of the first-order correction where
-  // the neighbourhood determines a quadratic (see docs/elasticity.md for why).
+  // the neighbourhood determines a quadratic (see docs/methods/elasticity.md for why).
   bool quadraticGradient = true;
 };
 

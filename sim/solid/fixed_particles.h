@@ -1,4 +1,4 @@
-// Anchoring of dynamic particles: a per-particle "fixed" flag (issue 7). A fixed particle keeps its
+// Anchoring of dynamic particles: a per-particle "fixed" flag. A fixed particle keeps its
 // position: the elasticity solve treats it as a Dirichlet condition (velocity 0) and writes
 // velocity 0 back. Used to pin the sclera's outer surface (meshing's sampleShell outer flags) or
 // the orbital fat's back face, and the clamped end of a cantilever.

@@ -1,6 +1,6 @@
-// "Only when it matters" (DESIGN.md principle 1, issue 7): before a run, estimate how far a tissue
-// would move under the loads the scene can apply, and treat it as a rigid wall when that is far
-// below the particle spacing (no elastic stage, no elastic time-step limit).
+// "Only when it matters" (docs/developer-guide.md principle 1): before a run, estimate how far a
+// tissue would move under the loads the scene can apply, and treat it as a rigid wall when that is
+// far below the particle spacing (no elastic stage, no elastic time-step limit).
 #pragma once
 
 #include <string>

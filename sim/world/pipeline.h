@@ -1,5 +1,6 @@
-// The effect pipeline (DESIGN.md principle 1): the pressure solver and the effects a scene calls
-// for, assembled from the scene by the registries in world/stage_registry.h, each stage timed.
+// The effect pipeline (docs/developer-guide.md principle 1): the pressure solver and the effects a
+// scene calls for, assembled from the scene by the registries in world/stage_registry.h, each stage
+// timed.
 #pragma once
 
 #include <memory>

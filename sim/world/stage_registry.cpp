@@ -72,15 +72,17 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
                 "of state carries its own offset when its masses are compressed)"};
   // Elastic tissue: with the stage the paper's 10 kPa eye (paper_sclera_10kpa.toml, 2 x 0.3 s)
   // lost an oil particle out of the domain at 0.46 s, through the lattice-sampled sclera that
-  // already lets fluid in (docs/elasticity.md); without it none left. Not understood; off there.
+  // already lets fluid in (docs/methods/elasticity.md); without it none left. Not understood; off
+  // there.
   if (elasticParticleCount(w) > 0)
     return {name, false, false,
             "elastic material in the scene: the shift pushed fluid through the sampled elastic "
-            "layer (with it a fluid particle left the domain, without it none; docs/interface.md, "
+            "layer (with it a fluid particle left the domain, without it none; "
+            "docs/methods/interface.md, "
             "validation 1b)"};
   const char* consequence =
       ": a background pressure would pull the surface in; the surface stress then clumps the "
-      "interface and under-states sigma (docs/interface.md, validation 1b)";
+      "interface and under-states sigma (docs/methods/interface.md, validation 1b)";
   if (o.closedDomain == Force::kOff)
     return {name, false, false, std::string("the scene has a free surface") + consequence};
   const std::size_t surface = o.closedDomain == Force::kOn ? 0 : countFreeSurfaceParticles(w);

@@ -1,5 +1,6 @@
-// The registration lists of pressure solvers and effects (STYLE.md point 3: one explicit list per
-// kind of plug-in, no self-registering statics) and the assembly of a Pipeline from a scene.
+// The registration lists of pressure solvers and effects (docs/developer-guide.md code rule 3: one
+// explicit list per kind of plug-in, no self-registering statics) and the assembly of a Pipeline
+// from a scene.
 //
 // Each effect entry has a name, a one-line description, a rule saying whether the scene needs it
 // (and why), and a factory. A protocol may force an effect on or off; the decision and its reason

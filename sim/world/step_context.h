@@ -5,7 +5,7 @@
 
 namespace sim {
 
-// Per-step diagnostics every pressure solver reports (issue 3: compression, iterations).
+// Per-step diagnostics every pressure solver reports (compression, iterations).
 struct SolverStats {
   int densityIterations = 0;      // iterations of the main (density / number-density) solve
   int divergenceIterations = 0;   // iterations of the divergence-free solve, if any

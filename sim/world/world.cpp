@@ -55,7 +55,8 @@ void World::computeWallVolumes() {
   // Akinci et al. 2012, eq. 4: V_b = 1 / sum_k W_bk over wall neighbours k (including b itself),
   // so that a densely sampled wall does not over-contribute to the fluid density. Only walls whose
   // volume the scene left at 0 get it: a scene that samples walls as a full lattice of several
-  // layers knows the exact volume d^3 (Akinci's estimate over-counts there, see docs/solvers.md).
+  // layers knows the exact volume d^3 (Akinci's estimate over-counts there, see
+  // docs/methods/solvers.md).
   const NeighborList& ss = search_->staticStatic();
   const Real w0 = kernel.W0();
 #pragma omp parallel for schedule(static)

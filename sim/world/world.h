@@ -62,8 +62,8 @@ class World {
   // / rho) with p' = p - rho_ref g.x, which takes the hydrostatic background out of the pressure
   // the solver carries. Why: under a background pressure p the SPH pressure force on an imperfect
   // particle arrangement errs by ~ p epsilon / d, which pins slow buoyant motion
-  // (docs/interface.md, validation 6). Exact only for a closed domain filled with fluid (at a free
-  // surface p = 0 would become p' = -rho_ref g.x), and walls and tissue then feel p', not p.
+  // (docs/methods/interface.md, validation 6). Exact only for a closed domain filled with fluid (at
+  // a free surface p = 0 would become p' = -rho_ref g.x), and walls and tissue then feel p', not p.
   Real gravityReferenceDensity = 0.0;
   Real time = 0.0;  // [s]
   long stepCount = 0;

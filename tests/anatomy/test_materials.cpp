@@ -1,5 +1,5 @@
 // Material library: all required fields with sources, values equal to the reference data
-// (../shared/reference/reference-data.md sections 1, 2, 5, as copied into
+// (reference-data.md sections 1, 2, 5, as copied into
 // data/materials/materials.csv), the shipped file equals the built-in table, bad rows rejected.
 #include <catch2/catch.hpp>
 

@@ -155,7 +155,8 @@ TEST_CASE("spherical cavity: mesh volume matches the truncated sphere", "[unit][
   const double edge = longestEdge(mesh);
   CHECK(std::abs(m.signedVolume - exact) <=
         edge * edge / (2 * shape.minimumCurvatureRadius()) * m.area);
-  // Centroid at the origin of the eye frame (DESIGN.md): the mesh's volume centroid is ~0.
+  // Centroid at the origin of the eye frame (docs/conventions.md): the mesh's volume centroid is
+  // ~0.
   Vec3 moment = Vec3::Zero();
   for (const auto& f : mesh.faces) {
     const Vec3& a = mesh.vertices[static_cast<size_t>(f[0])];

@@ -172,8 +172,8 @@ TEST_CASE("shell samples: variable thickness follows the callback", "[unit][samp
 }
 
 TEST_CASE("sampling is independent of the thread count", "[unit][sampling]") {
-  // DESIGN.md principle 7: same input and build give bit-identical particles whatever the
-  // thread count (per-face random streams, per-column results joined in order).
+  // docs/developer-guide.md principle 7: same input and build give bit-identical particles whatever
+  // the thread count (per-face random streams, per-column results joined in order).
   const TriangleMesh sphere = meshing_test::eyeSphere(3);
   const double d = 0.001;  // [m]
   const int threads = omp_get_max_threads();

@@ -1,4 +1,4 @@
-// Coverage metrics on constructed particle states with known answers (issue 5): a flat
+// Coverage metrics on constructed particle states with known answers: a flat
 // oil/aqueous interface in a sphere against the spherical-zone closed form, breaks above and
 // below the interface, dry walls, the Shepard weights themselves, and time averages.
 #include <catch2/catch.hpp>

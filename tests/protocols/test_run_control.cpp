@@ -1,4 +1,4 @@
-// How a run is controlled and watched (issue 5): progress text, "until steady", the
+// How a run is controlled and watched: progress text, "until steady", the
 // outputs.fields selection, and SIGTERM with checkpoint and resume.
 #include <catch2/catch.hpp>
 
@@ -142,7 +142,8 @@ TEST_CASE("until steady: a settling eye ends its posture before the maximum",
   // settles to the solver's floor (~1e-6 J/kg) by ~0.1 s; with a 0.05 s window the posture must
   // be steady well before its 0.6 s maximum, and not before one window has passed. A full fill:
   // with oil and aqueous the meniscus keeps forming along the wall for longer than 0.6 s since
-  // gravity acts relative to the aqueous (docs/protocols.md), so only one fluid settles in time.
+  // gravity acts relative to the aqueous (docs/methods/solvers.md), so only one fluid settles in
+  // time.
   const fs::path dir = fs::temp_directory_path() / "tamponade_steady_test";
   fs::remove_all(dir);
   fs::create_directories(dir);

@@ -159,8 +159,8 @@ TEST_CASE("heavy oil sinks, the physiological sclera stays rigid", "[unit][scena
   // plane splits the lattice exactly; with the one-layer wall the start-up shifting then moves a
   // particle at most d/2 from its lattice site (relax_fill.h), so the two sides may interleave by
   // at most d (measured: 0.41 mm at the draft preset's d = 0.8 mm); the layered wall this rigid
-  // cavity gets needs no shifting, so the bound holds with room. (Until session 6 this test case
-  // never ran: a ';' in its name split it in CTest.)
+  // cavity gets needs no shifting, so the bound holds with room.
+  // (No ";" in a test case name: CTest would split it.)
   double maxOilZ = -1e9, minAqZ = 1e9;
   for (std::size_t i = 0; i < s.world->particles.size(); ++i) {
     const double z = s.world->particles.x[i].z();
@@ -170,7 +170,7 @@ TEST_CASE("heavy oil sinks, the physiological sclera stays rigid", "[unit][scena
       minAqZ = std::min(minAqZ, z);
   }
   CHECK(maxOilZ <= minAqZ + s.accuracy.particleSpacing);
-  // [eye.sclera] in mode auto with the library's 1.8 MPa: decided rigid (issue 7), no particles.
+  // [eye.sclera] in mode auto with the library's 1.8 MPa: decided rigid, no particles.
   REQUIRE(s.tissues.size() == 1);
   CHECK_FALSE(s.tissues[0].decision.elastic);
   CHECK(s.tissues[0].count == 0);
@@ -260,7 +260,7 @@ TEST_CASE("tamponade plan: tiny protocol prints counts, stages, memory and estim
        {"particles per material:", "aqueous", "silicone_oil_1000", "wall",
         "pipeline (in execution order):", "stage decisions:", "memory:",
         "cost model: calibrated by 5 steps", "estimated run time", "draft", "standard", "fine",
-        // issue 6 exposure: the library's sigma and contact angle, the stages'
+        // interface physics: the library's sigma and contact angle, the stages'
         // own time-step limits
         "interfacial tension 40 mN/m", "18.2 deg through the aqueous",
         "time-step limits of the stages at the start: interfacial_tension",
@@ -299,7 +299,7 @@ TEST_CASE("tamponade plan: a bad protocol exits 2 with file:line:col and creates
 }
 
 TEST_CASE("a spacing coarser than the draft preset is noted as a trial run", "[unit][scenario]") {
-  // tiny.toml sets 1.2 mm; the draft preset is 0.8 mm (docs/benchmarks.md: 1.2 mm read the
+  // tiny.toml sets 1.2 mm; the draft preset is 0.8 mm (docs/accuracy.md: 1.2 mm read the
   // coverage 3.5 points above 0.6 mm on this protocol).
   const Protocol p = parseProtocol((kProtocols / "tiny.toml").string());
   const auto hasNote = [](const Scenario& s) {
@@ -371,8 +371,8 @@ TEST_CASE("a contact angle outside the tested range is noted in plan and report"
   CHECK_FALSE(noted(neutral));
   // How well the eye's wall holds the angle depends on the wall model, so every scene with an
   // angle says which it has: layered by default in a rigid cavity (accuracy.wall_model = "auto"),
-  // one layer when asked (it holds 90 deg but not 30 or 150 within 5 deg: docs/interface.md,
-  // validation 3, session 14).
+  // one layer when asked (it holds 90 deg but not 30 or 150 within 5 deg:
+  // docs/methods/interface.md, validation 3).
   std::ofstream(dir / "single.toml") << base << rest << "wall_model = \"single_layer\"\n";
   const Scenario single = assembleScenario(parseProtocol((dir / "single.toml").string()));
   const auto wallNoted = [](const Scenario& s, RetinaWall wall) {

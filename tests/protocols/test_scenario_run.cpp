@@ -112,7 +112,7 @@ TEST_CASE("tamponade run: a short protocol writes frames, series and a well-form
   const std::string html = readText(dir / "a" / "report.html");
   CHECK(protocols_test::checkXml(html).empty());
   CHECK(html.find("superior tear") != std::string::npos);
-  // The report states the interface physics used (issue 6): sigma and the contact angle.
+  // The report states the interface physics used: sigma and the contact angle.
   CHECK(html.find("Interfacial tension against aqueous 40 mN/m") != std::string::npos);
   CHECK(html.find("18.2\u00b0 through the aqueous") != std::string::npos);
   // WCSPH has no pressure solve to report on.

@@ -1,4 +1,4 @@
-// Elastic tissue in eye scenarios (issue 7, protocols/scenario/tissue_particles.h): the decision
+// Elastic tissue in eye scenarios (protocols/scenario/tissue_particles.h): the decision
 // in both directions, the elastic sclera/fat replacing the wall they cover, the example protocols
 // (validate and plan), a few steps of the paper's experiment with its report, and bad input.
 #include <unistd.h>
@@ -188,7 +188,7 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
       } else {
         // Within the layer: only the walls of the limbus clamp band's face, among its anchored
         // particles (within d of one) and none within 2 d of a free one (checked for every wall
-        // below); before session 9 there were none (fluid entered the band's lattice at d).
+        // below; without them fluid entered the band's lattice at d).
         ++band;
         CHECK(anchoredGrid.anyWithin(x, d));
         CHECK(r < 1.5 * d + 1e-9);
@@ -273,20 +273,21 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
   CHECK(m.cavityVolumeChange == 0.0);
 }
 
-// Issue 7's leak (docs/elasticity.md "Closing the gaps behind the sclera"): an empty gap behind the
-// anchored sclera layer (the backstop 2 d beyond its outer surface, the fat from d/2 beyond it)
-// was a free surface inside the pressurised globe: INDSPH clamps the pressure at 0 where the
-// number density is deficient (measured at 0.1 s: the anchored layer's mean 0.81 of rest, 98 % of
-// it at p = 0, the fluid next to the face ~50 Pa), and the pressure solve drove fluid through the
-// layer into the gap. Now every outer-layer (anchored) sclera particle has a wall (backstop,
-// collar) or fat particle on its far side (outward from the cavity) within the kernel's support
-// up to the lattice's staircase (below), so its number density counts what is behind it; the fat
-// continues the sclera's lattice (no fat particle closer than d to a sclera particle: no double
-// particles), and no wall particle lies within the kernel's support of a free sclera particle (none
-// pushes it). Over an elastic sclera the retina is the sclera's fluid-facing layer, not wall
-// particles: that layer carries the wall tags it replaces, so the library oil's contact angle acts
-// there too (sim/boundary/wetted_surface.h; the stages' equivalence over tissue and over the wall
-// is tests/sim/interface_units.cpp, "Over a wetted tissue floor ...").
+// A leak of fluid out of the globe (docs/methods/elasticity.md "Closing the gaps behind the
+// sclera"): an empty gap behind the anchored sclera layer (the backstop 2 d beyond its outer
+// surface, the fat from d/2 beyond it) was a free surface inside the pressurised globe: INDSPH
+// clamps the pressure at 0 where the number density is deficient (measured at 0.1 s: the anchored
+// layer's mean 0.81 of rest, 98 % of it at p = 0, the fluid next to the face ~50 Pa), and the
+// pressure solve drove fluid through the layer into the gap. Now every outer-layer (anchored)
+// sclera particle has a wall (backstop, collar) or fat particle on its far side (outward from the
+// cavity) within the kernel's support up to the lattice's staircase (below), so its number density
+// counts what is behind it; the fat continues the sclera's lattice (no fat particle closer than d
+// to a sclera particle: no double particles), and no wall particle lies within the kernel's support
+// of a free sclera particle (none pushes it). Over an elastic sclera the retina is the sclera's
+// fluid-facing layer, not wall particles: that layer carries the wall tags it replaces, so the
+// library oil's contact angle acts there too (sim/boundary/wetted_surface.h; the stages'
+// equivalence over tissue and over the wall is tests/sim/interface_units.cpp, "Over a wetted tissue
+// floor ...").
 TEST_CASE("tissue: the retina over the elastic sclera carries the wall's contact angle",
           "[unit][protocol][tissue]") {
   const Protocol p = parseProtocol(kPaper10.string());
@@ -494,7 +495,7 @@ double widestOpening(const Scenario& s, double cell) {
 
 }  // namespace
 
-// Issue 7's leak, its way out (docs/elasticity.md "The limbus band, watertight"): fluid that got
+// The leak's way out (docs/methods/elasticity.md "The limbus band, watertight"): fluid that got
 // into the limbus clamp band left the tissue assembly through openings in the walls around it
 // (the collar, its fan, the backstop, the orbit) near (2.4, -14, 11.6) mm, the nearest wall
 // particle 1.6-2.9 d away, and reached y -19..-21 mm. A geometric check on the assembled scenes
@@ -764,15 +765,15 @@ TEST_CASE(
     CHECK(line.find("warning") == std::string::npos);
 }
 
-// The fluid stays out of the elastic sclera in the first 24 ms of a coupled eye scene (issue 7's
+// The fluid stays out of the elastic sclera in the first 24 ms of a coupled eye scene (the tissue
 // leak): no fluid particle is inside the tissue by the leak counter's criterion (a full spacing
 // behind a sclera particle near it; tissue_particles.h). Fluid in the openings of the
 // lattice-sampled face (the staircase's hollows, up to ~1 d outside the cavity surface) is
 // allowed: that is the surface's discretisation, not penetration. The earlier criterion (no fluid
 // beyond d/2 + u_max outside the surface) failed on those hollows (0.82 d, 6 particles), so the
 // test was hidden. The counter does find real leaks: the 2 x 0.3 s run of the same protocol
-// counts 3 fluid particles in the tissue at 0.1 s and 42 at 0.6 s (docs/elasticity.md, "The
-// limbus clamp and the bony orbit"); a sampling that lets fluid in at once (session 6's layers:
+// counts 3 fluid particles in the tissue at 0.1 s and 42 at 0.6 s (docs/methods/elasticity.md, "The
+// limbus clamp and the bony orbit"); a sampling that lets fluid in at once (one tried layering:
 // 2.03 d deep in 24 ms) would fail here. The counter itself is tested on constructed cases above.
 TEST_CASE(
     "tissue: no fluid particle enters the elastic sclera's layer in the first 24 ms of a coupled "
@@ -857,15 +858,16 @@ TEST_CASE("tissue: bad input is reported at its place with exit code 2",
   fs::remove_all(dir);
 }
 
-// Validation 6 of issue 7: a stiff (2 MPa, human) sclera around the fluid-filled cavity, forced
-// elastic, coupled in INDSPH's pressure solve, stays stable. The sclera is held at its outer
-// surface, so under the fluid's pressure its layer can only be compressed: the static answer is
-// u = p t_layer / E_sim for the simulated layer (2 particle layers, E scaled to keep E t), and the
-// largest displacement must stay below twice that: a suddenly applied load overshoots an undamped
-// spring by at most 2x its static deflection. No lower bound: the fill starts slightly under-dense
-// next to the one-particle-thick tissue (mean C 0.94, docs/protocols.md "Fluid fill") and the
-// clamped pressure builds only as the fluid settles into that gap (0.1 um after 10 ms, 2.0 um
-// at most over the 20 ms of the two-posture CLI run, against 2.03 um static).
+// Elastic tissue, validation 6 (docs/methods/elasticity.md): a stiff (2 MPa, human) sclera around
+// the fluid-filled cavity, forced elastic, coupled in INDSPH's pressure solve, stays stable. The
+// sclera is held at its outer surface, so under the fluid's pressure its layer can only be
+// compressed: the static answer is u = p t_layer / E_sim for the simulated layer (2 particle
+// layers, E scaled to keep E t), and the largest displacement must stay below twice that: a
+// suddenly applied load overshoots an undamped spring by at most 2x its static deflection. No lower
+// bound: the fill starts slightly under-dense next to the one-particle-thick tissue (mean C 0.94,
+// docs/methods/solvers.md "Fluid fill") and the clamped pressure builds only as the fluid settles
+// into that gap (0.1 um after 10 ms, 2.0 um at most over the 20 ms of the two-posture CLI run,
+// against 2.03 um static).
 TEST_CASE(
     "tissue: a 2 MPa sclera around the filled cavity stays stable, compressed less than 2 p t / E",
     "[stability][protocol][tissue]") {

@@ -1,4 +1,4 @@
-// The solver comparison's tables (issue 3, `tamponade bench solvers`) on made-up numbers: the
+// The solver comparison's tables (`tamponade bench solvers`) on made-up numbers: the
 // benchmark itself is not a test, but what it writes must be right.
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // accuracy.solver_tolerance reaches the implicit pressure solves, each step's solve stops at it
 // (or at its iteration cap), and a run's record of what the solve achieved adds up.
-// Until session 18 only DFSPH read the key: INDSPH (the default) and IISPH stopped at their own
-// 1e-4 whatever the protocol said.
+// INDSPH (the default), IISPH and DFSPH all read the key; an implicit solver that stopped at its
+// own 1e-4 whatever the protocol said would fail here.
 #include <catch2/catch.hpp>
 
 #include <filesystem>
@@ -85,7 +85,7 @@ TEST_CASE("accuracy.solver_tolerance is where INDSPH and IISPH stop, as DFSPH",
 
 TEST_CASE("INDSPH on the layered eye reaches 0.01 % within its iteration cap",
           "[unit][scenario][solver]") {
-  // Session 19: at the engine's Jacobi relaxation of 0.5 every step of the tiny eye stopped at
+  // At the engine's Jacobi relaxation of 0.5 every step of the tiny eye stopped at
   // the 100-iteration cap with about 0.02 % left (a stall, not the tolerance); the scenario's 0.8
   // converges. Steps 60-120, after the fill's start-up (whose first steps reach the cap at
   // either relaxation: 98 iterations per step over the first 12 at 0.8).

@@ -1,4 +1,4 @@
-// Benchmark (not a test) of validation 3, the contact angle (issue 6): what a sessile droplet's
+// Benchmark (not a test) of validation 3, the contact angle: what a sessile droplet's
 // angle is worth at each resolution, and what it costs. For each requested angle, each resolution
 // R0 / d and each start (the requested cap, or the hemisphere so the contact line has to travel)
 // it runs the sessile droplet of interface_sessile.h (INDSPH, 0.2 d jitter, R0 = 3 mm, sigma
@@ -19,7 +19,7 @@
 // With --gravity the droplet (heavier than the aqueous) is pressed onto the floor and the angle
 // is the Young-Laplace shape fit's (sim/measure/sessile_young_laplace.h: angle and capillary
 // constant both free) at every angle; the table adds the outline fit with c held at its nominal
-// value and the shape fit's sigma_eff / sigma (docs/interface.md validation 3, session 22).
+// value and the shape fit's sigma_eff / sigma (docs/methods/interface.md validation 3).
 // Threads: OMP_NUM_THREADS. Numbers depend on the machine and its load.
 #include <omp.h>
 
@@ -54,16 +54,16 @@ constexpr const char* kUsage =
     "                 0.2 s with 0.005, and 142 at 1 s with 0.05\n"
     "  --walls        layered: three wall layers, the wall the [contact_angle] tests use; single:\n"
     "                 one Akinci layer, the wall of eye scenes with elastic tissue and of\n"
-    "                 accuracy.wall_model = \"single_layer\" (docs/interface.md, validation 3,\n"
-    "                 session 14); tissue: three layers of elastic tissue (50 kPa, top layer "
-    "free)\n"
+    "                 accuracy.wall_model = \"single_layer\" (docs/methods/interface.md,\n"
+    "                 validation 3); tissue: three layers of elastic tissue (50 kPa, top layer\n"
+    "                 free)\n"
     "                 on the layered wall, its top layer wetted, as the retina over an elastic\n"
-    "                 sclera (session 15); both: layered and single; all: the three\n"
+    "                 sclera; both: layered and single; all: the three\n"
     "  --gravity      [m/s^2] towards the floor (default 0); the droplet must then be heavier\n"
     "                 than the aqueous (1000 kg/m^3), and the angle is read by fitting the\n"
     "                 Young-Laplace outline of its volume with the angle and the capillary\n"
     "                 constant free (drop shape analysis; the table adds the fit with c held\n"
-    "                 and sigma_eff / sigma: docs/interface.md, validation 3, session 22)\n"
+    "                 and sigma_eff / sigma: docs/methods/interface.md, validation 3)\n"
     "  --droplet-density  [kg/m^3] default 970 (silicone oil); 1760 is perfluoro-n-octane\n"
     "  --out          folder for contact_angle_bench.csv and .md (default: .)\n";
 

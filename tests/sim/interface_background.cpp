@@ -1,4 +1,4 @@
-// Issue 6: the background_pressure stage (sim/effects/background_pressure.h) - its rule, its
+// The background_pressure stage (sim/effects/background_pressure.h) - its rule, its
 // time-step limit and the invariants of its force on a static lattice. The physics check (the
 // Laplace jump it restores under INDSPH) is in interface_laplace.cpp.
 #include <catch2/catch.hpp>
@@ -56,7 +56,7 @@ TEST_CASE("background_pressure runs in closed INDSPH scenes with interfacial ten
   o.forced["background_pressure"] = Force::kOff;
   CHECK_FALSE(assemblePipeline(w, o).hasStage("background_pressure"));
   o.forced.clear();
-  // With an elastic material the rule keeps it off (docs/interface.md, validation 1b).
+  // With an elastic material the rule keeps it off (docs/methods/interface.md, validation 1b).
   Material tissue;
   tissue.name = "tissue";
   tissue.kind = MaterialKind::kElastic;

@@ -1,4 +1,4 @@
-// Longer interface validations (issue 6) that are too costly for CI, run by hand:
+// Longer interface validations that are too costly for CI, run by hand:
 //   sim_interface_bench oscillation [R_mm] [d_per_R] [periods] [key=value...]  l = 2 vs Lamb
 //   sim_interface_bench sessile THETA_DEG [t_end_s] [start_cos] [solver] [wall_layers] [R_per_d]
 //                               [mu_Pa_s] [jitter_d] [relax_steps] [half_width_per_R] [R0_mm]
@@ -26,7 +26,7 @@
 //   sim_interface_bench cavity THETA_DEG|flat [t_end_s] [Rs_per_d] [tilt_deg] [oil_density]
 //                              [mu_Pa_s] [sigma_N_m] [wall_friction 0|1] [solver]
 //                                      equilibrium tamponade shape in a spherical cavity
-// Results and wall times go to stdout; docs/interface.md records the measured numbers.
+// Results and wall times go to stdout; docs/methods/interface.md records the measured numbers.
 #include <chrono>
 #include <cmath>
 #include <cstdio>

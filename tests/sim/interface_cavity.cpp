@@ -1,7 +1,7 @@
-// Issue 6, validation 5: equilibrium tamponade shapes in a spherical cavity. An oil volume in an
-// aqueous-filled sphere (one layer of wall particles on a Fibonacci point set) settles to the
-// Young-Laplace shape; the two closed-form limits are checked through the oil coverage of the
-// wall (fraction of wall area whose nearest fluid particle is oil):
+// docs/methods/interface.md validation 5: equilibrium tamponade shapes in a spherical cavity. An
+// oil volume in an aqueous-filled sphere (one layer of wall particles on a Fibonacci point set)
+// settles to the Young-Laplace shape; the two closed-form limits are checked through the oil
+// coverage of the wall (fraction of wall area whose nearest fluid particle is oil):
 //   (a) no gravity (Bond number 0): a spherical lens meeting the wall at theta;
 //   (b) no tension (Bond number infinite): a flat interface normal to gravity at the height that
 //       holds the oil volume.
@@ -64,7 +64,7 @@ CavityResult runCavity(const CavityCase& c) {
   s.oilAxis = Vec3(std::sin(tilt), std::cos(tilt), 0);
   s.massExcess = c.massExcess;
   PipelineOptions options;
-  options.solver = c.solver;     // not DFSPH: its rest state is not calm yet (docs/interface.md)
+  options.solver = c.solver;     // not DFSPH: its rest state is not calm (docs/methods/solvers.md)
   options.wallFriction = false;  // free slip: a no-slip wall pins a contact line (Huh-Scriven)
   options.wcsph.artificialViscosity = 0.1;
   if (c.lens) {
@@ -172,7 +172,7 @@ TEST_CASE("Cavity without gravity: the oil settles to the 120 deg lens (Bond num
 // mass (an incompressible solver cannot remove an excess from the closed cavity). Measured
 // (`sim_interface_bench cavity 120 0.3 8 0 970 0.03 0.04 0 indsph`): 0.228-0.234 at d = Rs/8
 // (closed form 0.2249). Before background_pressure left contact-line particles unshifted: 0.208,
-// and 0.168 with the stress on the oil, the choice without the stage (session 12).
+// and 0.168 with the stress on the oil, the choice without the stage.
 TEST_CASE("Cavity without gravity under INDSPH: the oil settles to the 120 deg lens",
           "[validation][interface][cavity]") {
   checkLens120("indsph", 0.0, 0.1);
@@ -188,7 +188,7 @@ TEST_CASE(
   // 30 deg re-levels by turning the whole free-slip content as a rigid body, an undamped
   // pendulum whose period exceeds 0.2 s; with no-slip walls the contact line is pinned; a
   // central column rises 0.24 mm in 65 ms. `sim_interface_bench cavity flat` runs them,
-  // docs/interface.md has the numbers.)
+  // docs/methods/interface.md has the numbers.)
   CavityCase c;
   c.lens = false;
   c.tiltDeg = 0;
@@ -251,7 +251,7 @@ TEST_CASE(
 // 30-150 deg. Measured (`TAMP_CAV_V=0.7 TAMP_CAV_LAYERS=3 sim_interface_bench cavity 162 0.8 8 0
 // 970 0.03 0.04 0 indsph`): 156.9 at 0.2 s, 155.9-156.9 to 0.76 s (settled). On one Akinci layer
 // (TAMP_CAV_LAYERS=0) the same lens finds no sphere to fit (180 deg) while the oil drifts 0.8 mm
-// along the wall: the eye's old wall did not hold the angle (docs/interface.md, session 17).
+// along the wall: the eye's old wall did not hold the angle (docs/methods/interface.md).
 TEST_CASE("Cavity with the eye's layered wall holds the library oils' 162 deg contact angle",
           "[validation][interface][cavity]") {
   CavityCase c;

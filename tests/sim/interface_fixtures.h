@@ -1,4 +1,4 @@
-// Scenes for the interface tests (issue 6): an oil droplet in aqueous in a closed box without
+// Scenes for the interface tests: an oil droplet in aqueous in a closed box without
 // gravity, and a sessile droplet on the floor of such a box.
 #pragma once
 

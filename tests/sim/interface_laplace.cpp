@@ -1,5 +1,5 @@
-// Issue 6, validation 1: Young-Laplace pressure jump of an oil droplet in aqueous (no gravity,
-// closed box) with the interfacial_tension stage, for two radii and two tensions.
+// docs/methods/interface.md validation 1: Young-Laplace pressure jump of an oil droplet in aqueous
+// (no gravity, closed box) with the interfacial_tension stage, for two radii and two tensions.
 #include <catch2/catch.hpp>
 
 #include <cstdio>
@@ -39,7 +39,7 @@ LaplaceResult runLaplace(Real radius, Real sigma, const std::string& solver = "w
                          const LaplaceOptions& run = {}) {
   testing::DropletSpec s;
   s.radius = radius;
-  s.spacing = radius / 6;  // d = R/6: 3 kernel supports per radius (issue 6 suggests R/6..R/8)
+  s.spacing = radius / 6;  // d = R/6: 3 kernel supports per radius (R/6..R/8 validated)
   const Real h = 2 * s.spacing;
   // Fluid reaches 2h beyond the interface's outer edge R + h, plus one d: the outside sample
   // (R + h < r < R + 2h) stays clear of the wall layer.
@@ -99,7 +99,7 @@ void checkLaplace(Real radius, Real sigma) {
       100 * (r.measured / r.expected - 1), r.steps);
   // 10 %: the issue's acceptance. The sources of error are the diffuse interface (width 2h =
   // 2R/3 at this resolution: the jump is the stress integral weighted by 1/r over the layer,
-  // about 3 % above 2 sigma / R here, see docs/interface.md) and the residual parasitic
+  // about 3 % above 2 sigma / R here, see docs/methods/interface.md) and the residual parasitic
   // currents; both are below 5 % in the measured cases, so 10 % fails on a wrong factor (a
   // missing 1/D, a wrong normal or sign), not on noise.
   CHECK(r.measured == Approx(r.expected).epsilon(0.10));
@@ -122,8 +122,8 @@ TEST_CASE("Laplace pressure of a 2 mm oil droplet, sigma 40 and 20 mN/m",
 // The eye scenes' solver, with the corrected surface stress (the automatic choice under INDSPH)
 // and the background_pressure stage (on by its rule: closed scene, tension). 10 %: the issue's
 // acceptance, as for WCSPH; measured -3.4 % (3 mm, 40 mN/m) and -5.9 % (2 mm, 20 mN/m) over this
-// window (0.5-1.5 tau), d = R/6 (docs/interface.md, validation 1). The symmetric form of the
-// paper reads 0.844 of 2 sigma / R here: under INDSPH the interface particles disorder and its
+// window (0.5-1.5 tau), d = R/6 (docs/methods/interface.md, validation 1). The symmetric form of
+// the paper reads 0.844 of 2 sigma / R here: under INDSPH the interface particles disorder and its
 // pair sum is then not exact (sim/effects/interfacial_tension_hu_adams2006.h). Its run is the
 // control that the corrected form is what meets the tolerance: it must stay below 0.92 (the
 // window's step-to-step scatter is 0.80-0.87).

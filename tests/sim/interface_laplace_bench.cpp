@@ -1,9 +1,9 @@
-// Hand-run benchmark of the Laplace droplet (the `[laplace]` scene, issue 6 validation 1) under any
-// solver, printing every fifth step: the pressure jump, the interface's area sum V |gradC| (what
-// the surface stress acts through), the jump the explicit forces ask for (sum -m a.e_r /
-// (4 pi r^2)) and the largest speed. `analytic=1` replaces the tension by an exact radial
-// gradient force of the same jump, which any consistent projection must hold (the solver check
-// of docs/interface.md, validation 1b).
+// Hand-run benchmark of the Laplace droplet (the `[laplace]` scene, docs/methods/interface.md
+// validation 1) under any solver, printing every fifth step: the pressure jump, the interface's
+// area sum V |gradC| (what the surface stress acts through), the jump the explicit forces ask for
+// (sum -m a.e_r / (4 pi r^2)) and the largest speed. `analytic=1` replaces the tension by an exact
+// radial gradient force of the same jump, which any consistent projection must hold (the solver
+// check of docs/methods/interface.md, validation 1b).
 //   sim_laplace_bench [solver=indsph] [R=3 (mm)] [perR=6] [sigma=0.04] [taus=1.5] [excess=0]
 //                     [layers=0] [analytic=0] [bg=auto|off|PA] [bgk=K (K sigma / d)] [dtmax=S]
 //                     [warm=] [tol=] [miniter=] [maxiter=] [expansion=0|1] [divergence=0|1]

@@ -1,7 +1,7 @@
-// Issue 6, validation 2: the l = 2 oscillation of an oil droplet in aqueous against Lamb's
-// frequency for a drop in another liquid (Lamb 1932, Hydrodynamics, section 275). The costly
-// variants (other resolutions, amplitudes, INDSPH) are `sim_interface_bench oscillation`;
-// docs/interface.md section 2 has the table.
+// docs/methods/interface.md validation 2: the l = 2 oscillation of an oil droplet in aqueous
+// against Lamb's frequency for a drop in another liquid (Lamb 1932, Hydrodynamics, section 275).
+// The costly variants (other resolutions, amplitudes, INDSPH) are `sim_interface_bench
+// oscillation`; docs/methods/interface.md section 2 has the table.
 #include <catch2/catch.hpp>
 
 #include <cstdio>

@@ -1,4 +1,4 @@
-// The l = 2 oscillation of an oil droplet in aqueous (issue 6, validation 2), shared by the
+// The l = 2 oscillation of an oil droplet in aqueous (validation 2), shared by the
 // `[oscillation]` test and `sim_interface_bench oscillation`: scene, relaxed start, linear-mode
 // velocity kick, the shape signal Q(t), and the two period estimates (zero crossings, damped-cosine
 // fit), with Lamb's closed forms to compare against.

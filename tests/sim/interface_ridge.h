@@ -114,7 +114,7 @@ struct RidgeScene {
 
 // The box and the start segment: the box clears the start and the requested segment by 3 h at
 // the sides and 2 h above (a segment touching the neutral lid or side walls would bridge to them,
-// docs/interface.md validation 3, session 10); three lattice wall layers; the angle on the floor.
+// docs/methods/interface.md validation 3); three lattice wall layers; the angle on the floor.
 inline RidgeScene ridgeScene(const RidgeCase& c) {
   const Real d = c.spacing, h = 2 * d;
   const Real area = 0.5 * std::numbers::pi * std::pow(c.r0PerD * d, 2);  // [m^2]

@@ -103,11 +103,11 @@ inline DropletScene sessileScene(const SessileCase& c) {
   // The side walls clear the contact line of the start cap and of the requested one by 2 h, so
   // that no particle at the contact line reads a neighbour that reads a side wall. In a fixed
   // 2 R0 box the 18 deg cap (base 2.03 R0) met the side walls, which held it: 18 read 18.7 on
-  // the layered wall and 34.7 on tissue, where with room both recede alike (docs/interface.md,
-  // validation 3, session 16). At 2 R0 the 120 deg cap (base 0.73 R0) stays 5 h from them.
-  // Rounded up to whole cells: the single-layer box is filled with round(width / d) cells, so a
-  // width of 41.6 d (2.6 R0 at R0/8) put the lattice 0.4 d into the side wall (it blew up in 13
-  // steps). The 1e-9 keeps a whole number of cells that round-off lifts above it.
+  // the layered wall and 34.7 on tissue, where with room both recede alike
+  // (docs/methods/interface.md, validation 3). At 2 R0 the 120 deg cap (base 0.73 R0) stays 5 h
+  // from them. Rounded up to whole cells: the single-layer box is filled with round(width / d)
+  // cells, so a width of 41.6 d (2.6 R0 at R0/8) put the lattice 0.4 d into the side wall (it blew
+  // up in 13 steps). The 1e-9 keeps a whole number of cells that round-off lifts above it.
   const Real clear =
       std::max(sessileCapBase(r0, -c.startCos), sessileCapBase(r0, requestedCos)) + 2 * h;
   const Real cells = std::ceil(2 * std::max(c.halfWidthPerR * r0, clear) / s.spacing - 1e-9);
@@ -116,7 +116,7 @@ inline DropletScene sessileScene(const SessileCase& c) {
   // whose top comes within the (neutral, 90 deg) lid's support bridges floor and lid and is held
   // there: in the old fixed 1.6 R0 box the 150 deg cap's top (1.49 R0) sat 0.7 d below the lid,
   // and 150 deg requested read 142.6-144.8 deg, 165 deg 151-153, the bridge's angle, not the
-  // floor's (docs/interface.md, validation 3, session 10).
+  // floor's (docs/methods/interface.md, validation 3).
   s.boxHeight =
       std::max(c.boxHeightPerR * r0,
                std::max(sessileCapTop(r0, -c.startCos), sessileCapTop(r0, requestedCos)) + 2 * h);

@@ -1,5 +1,6 @@
-// Issue 6 (interface part): invariants of the interfacial-tension and wall-adhesion stages, the
-// material-table API and the measurement helpers. Static configurations only (no time stepping).
+// Interfacial tension and wall wetting: invariants of the interfacial-tension and wall-adhesion
+// stages, the material-table API and the measurement helpers. Static configurations only (no time
+// stepping).
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -157,7 +158,7 @@ TEST_CASE(
     // factor (and lands on 2 sigma / R by it), the correction removes it and shows the diffuse
     // layer's own discretisation error. 10 %: the issue's Laplace tolerance; a wrong factor is
     // still off by 30 % or more. (On relaxed, disordered droplets, where the eye runs, the
-    // corrected form is the accurate one: validation 1 of docs/interface.md.)
+    // corrected form is the accurate one: validation 1 of docs/methods/interface.md.)
     CHECK(corrected.jump == Approx(expected).epsilon(0.10));
     // Every pair term of the symmetric form is antisymmetric and no stressed particle is near a
     // wall: sum m a = 0 to round-off (relative to the sum of |m a|).
@@ -194,13 +195,13 @@ TEST_CASE("Wall adhesion exerts Young's line force sigma cos(theta) at the conta
     if (theta == 90.0) {
       CHECK(std::abs(force) < 1e-12);
     } else {
-      // Measured at d = R/6 (session 14): with three lattice layers (fluid from d/2) +2.7 % when
+      // Measured at d = R/6: with three lattice layers (fluid from d/2) +2.7 % when
       // the layer is on the aqueous and -14.5 % / -10.6 % when it is on the oil (theta 120,
       // layered / Akinci); with one Akinci layer, the hemisphere on the fluid's floor, +12.7 %:
       // the layer's discrete divergence at the lattice contact line, whose radius the lattice
-      // resolves to d / 2 (8 % of a). Until session 14 the reference used the equivalent sphere
-      // radius, 0.79 a, and these read +29 / +7 / +20 % (docs/interface.md). 30 % catches a wrong
-      // sign or a lost factor 2 in gamma.
+      // resolves to d / 2 (8 % of a). Against the equivalent sphere
+      // radius, 0.79 a, these read +29 / +7 / +20 % (docs/methods/interface.md). 30 % catches a
+      // wrong sign or a lost factor 2 in gamma.
       CHECK(force == Approx(expected).epsilon(0.30));
     }
   }
@@ -212,7 +213,7 @@ TEST_CASE("Wall adhesion exerts Young's line force sigma cos(theta) at the conta
 // must then act on the fluid as over the wall: the same Young line force (wall_adhesion) and the
 // same mirrored surface stress (interfacial_tension). Before, neither acted over tissue: the line
 // force was 0, and a 120 deg droplet settled at 83-85 deg (`sim_interface_bench sessile 120 0.3 0
-// indsph 3 6 0.005 0.2 tissue=2`; docs/interface.md, validation 3, session 15).
+// indsph 3 6 0.005 0.2 tissue=2`; docs/methods/interface.md, validation 3).
 TEST_CASE("Over a wetted tissue floor the interface stages act as over the wall it replaces",
           "[unit][interface]") {
   const Real d = kHemisphereRadius / 6;  // [m] the hemisphere fixture's spacing
@@ -241,9 +242,10 @@ TEST_CASE("Over a wetted tissue floor the interface stages act as over the wall 
     // own rest density times its volume, so the oil (970) reads up to 3 % denser there and its
     // volumes, which weigh the wall delta function, change by a fraction of that. Measured
     // (d = R/6): -0.003 % at 60 deg (the stress on the aqueous, 1000 kg/m^3 like the tissue),
-    // -0.38 % at 120 deg (on the oil); +0.07 / -0.45 % until session 16 left the tissue out of
-    // the stage's pair sum, as the walls are. 1 % holds that; a lost area, normal or fluid sum on
-    // the tissue is off by 10 % or more (before this stage read tissue, the force over it was 0).
+    // -0.38 % at 120 deg (on the oil); +0.07 / -0.45 % with the tissue in
+    // the stage's pair sum (it is left out, as the walls are). 1 % holds that; a lost area, normal
+    // or fluid sum on the tissue is off by 10 % or more (before this stage read tissue, the force
+    // over it was 0).
     const Real young = 2 * std::numbers::pi * kHemisphereRadius * 0.04 *
                        std::abs(std::cos(theta * std::numbers::pi / 180));  // [N]
     CHECK(std::abs(wallForce) > 0.5 * young);  // the test above checks the wall's size (0.85 here)
@@ -488,8 +490,8 @@ TEST_CASE("The sessile cap fit reads static lattice caps of 30 to 165 deg at the
   // points, i.e. 1 deg at 90 deg. Tolerance 2 deg for 30-150 deg (measured 30.5, 44.3, 58.7,
   // 89.2, 120.2, 150.8); at 165 deg the same 0.1 d is 4.6 deg (sin 165 = 0.26, the contact disc
   // is 1.2 d in radius), so 5 deg there (measured 168.1). The free algebraic sphere through the
-  // same points reads 33.6 for 30 deg (a short arc, docs/interface.md validation 3): the reason
-  // the fit is volume-constrained.
+  // same points reads 33.6 for 30 deg (a short arc, docs/methods/interface.md validation 3): the
+  // reason the fit is volume-constrained.
   for (const Real theta : {30.0, 45.0, 60.0, 90.0, 120.0, 150.0, 165.0}) {
     testing::SessileCase c;
     c.theta = theta;
@@ -507,7 +509,7 @@ TEST_CASE("The sessile cap fit reads static lattice caps of 30 to 165 deg at the
     // The centroid angle (no interface points): the same 0.1 d surface uncertainty moves the
     // centroid by less than 0.1 d, so the tolerance is 0.1 d over d(centroid height)/d(theta) at
     // this angle: 4.8 deg at 30, 3.3 at 90, 3.4 at 150, 5 at 165. Measured 32.8, 47.0, 61.3, 90.3,
-    // 120.2, 148.6, 164.7 (session 14). A wrong cap height or centroid formula reads tens of
+    // 120.2, 148.6, 164.7. A wrong cap height or centroid formula reads tens of
     // degrees off.
     const Real perDegree = std::abs(capCentroidHeight(fit.volume, theta + 0.5) -
                                     capCentroidHeight(fit.volume, theta - 0.5));  // [m / deg]

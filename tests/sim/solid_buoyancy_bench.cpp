@@ -1,17 +1,19 @@
-// Floating elastic block (issue 7 validation 3; Wang et al. 2023 Figure 8 claims an elastic body of
-// half the fluid's density floats exactly half submerged with INDSPH). Prints one markdown line:
-// the submerged fraction measured as the brief of issue 7 asks — water level far from the block
-// (mean of the column tops + d/2, columns at least 3 d from the block) against the block's bottom
-// and top (mean of its lowest and highest particle layer -/+ d/2) — averaged over the second half
-// of the run. A benchmark, not a test: the 1 s runs take minutes at d = 5 mm (docs/elasticity.md).
+// Floating elastic block (docs/methods/elasticity.md validation 3; Wang et al. 2023 Figure 8 claims
+// an elastic body of half the fluid's density floats exactly half submerged with INDSPH). Prints
+// one markdown line: the submerged fraction measured as the validation defines it — water level far
+// from the block (mean of the column tops + d/2, columns at least 3 d from the block) against the
+// block's bottom and top (mean of its lowest and highest particle layer -/+ d/2) — averaged over
+// the second half of the run. A benchmark, not a test: the 1 s runs take minutes at d = 5 mm
+// (docs/methods/elasticity.md).
 //
 // It also prints (stderr) two other water levels (the far-field particle count x d, and where the
 // far-field hydrostatic pressure line reaches p = 0) and the pressure under the block against its
-// weight per area (docs/elasticity.md, "Buoyancy"; the count level assumes the layered floor at
-// y = 0); with BUOYANCY_TRACE set, also the trace and the far-field layer profile at the end.
-// Walls: "layered" (default; sim/boundary/wall_layers.h, 3 layers of static particles whose
+// weight per area (docs/methods/elasticity.md, "Buoyancy"; the count level assumes the layered
+// floor at y = 0); with BUOYANCY_TRACE set, also the trace and the far-field layer profile at the
+// end. Walls: "layered" (default; sim/boundary/wall_layers.h, 3 layers of static particles whose
 // pressure INDSPH solves for, eq. 21; the fluid lattice starts at the wall faces) or "akinci" (one
-// surface layer, fluid kWallGap d away: the session-2 numbers of docs/elasticity.md).
+// surface layer, fluid kWallGap d away: the first numbers of docs/methods/elasticity.md
+// "Buoyancy").
 //
 //   solid_buoyancy_bench <specific gravity> [solver = indsph] [seconds = 1] [block layers = 6]
 //                        [tank width [d] = 20] [walls = layered]

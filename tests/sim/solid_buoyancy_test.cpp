@@ -1,6 +1,6 @@
-// Floating elastic block (issue 7 validation 3; Wang et al. 2023 Figure 8: an elastic body of half
-// the fluid's density floats half submerged with INDSPH). Coarse version of
-// tests/sim/solid_buoyancy_bench.cpp, whose 5 mm runs are in docs/elasticity.md.
+// Floating elastic block (docs/methods/elasticity.md validation 3; Wang et al. 2023 Figure 8: an
+// elastic body of half the fluid's density floats half submerged with INDSPH). Coarse version of
+// tests/sim/solid_buoyancy_bench.cpp, whose 5 mm runs are in docs/methods/elasticity.md.
 //
 // The water level is the far-field VOLUME level: the number of water particles per far column
 // times d (each particle's lattice cell is d^3; the layered floor's face is y = 0). In the bench
@@ -9,7 +9,7 @@
 // level the block's weight is balanced against. The visible surface (mean column top + d/2) lies
 // ~0.3 d below it, because the settled, no longer lattice-ordered water packs n particles into
 // less than n d of height at the kernel's rest number density; measured against that surface the
-// block reads ~0.035 H too high (docs/elasticity.md, "Buoyancy").
+// block reads ~0.035 H too high (docs/methods/elasticity.md, "Buoyancy").
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -125,9 +125,9 @@ Floating floatBlock(Real ratio, Real d, int width, int depth, int side, int laye
 // is a count (no position noise) averaged over >= 60 columns and 30 samples. The O(d) choice that
 // remains is which water level: the visible one is 0.3 d = 5 % of H lower, which is why it is
 // reported (CAPTURE) but not asserted. Measured: 0.504 (visible 0.470) here; 0.512-0.515 in the
-// bench at d = 5 mm, tanks 20 d and 32 d (docs/elasticity.md). The quarter-density block is not
-// asserted here: in this coarse scene it reads 0.291 (+4.1 % of H; the 5 mm bench: 0.26-0.27), so
-// the claim for s.g. 0.25 is checked by the bench only (docs/elasticity.md).
+// bench at d = 5 mm, tanks 20 d and 32 d (docs/methods/elasticity.md). The quarter-density block is
+// not asserted here: in this coarse scene it reads 0.291 (+4.1 % of H; the 5 mm bench: 0.26-0.27),
+// so the claim for s.g. 0.25 is checked by the bench only (docs/methods/elasticity.md).
 TEST_CASE("an elastic block of half the water's density floats half submerged",
           "[validation][elasticity]") {
   const Real d = 0.01;  // [m]

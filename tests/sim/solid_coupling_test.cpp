@@ -1,4 +1,4 @@
-// Elastic solids coupled with the fluids (issue 7): anchors under a pressure solve, fluid-only
+// Elastic solids coupled with the fluids: anchors under a pressure solve, fluid-only
 // effects that leave the solid alone, buoyancy (INDSPH, Wang et al. 2023 Figure 8), an
 // elastic-elastic drop at density ratio 1:60 (§5.2) and fluid-solid momentum exchange.
 #include <catch2/catch.hpp>
@@ -157,7 +157,7 @@ TEST_CASE("elastic cuboid dropped on another at density ratio 1:60 settles",
   // pressure solve reach a density ratio of 60. The paper does not say which is on top; here the
   // light one (1000 kg/m^3) falls 3 d onto the heavy one (60000) resting on the floor, upper body
   // 6 x 4 x 6, lower 8 x 4 x 8 particles. The other order is the next test (it needs an anchored
-  // pad and the coupling time-step limit, docs/elasticity.md "Heavy onto light").
+  // pad and the coupling time-step limit, docs/methods/elasticity.md "Heavy onto light").
   const Real d = 0.01, E = 5e5, nu = 0.3, drop = 3 * d;  // [m], [Pa], [1], [m]
   const Real gap = (kWallGap - 0.5) * d;                 // [m] lattice start from a wall
   {
@@ -256,10 +256,10 @@ TEST_CASE("a neutrally buoyant elastic block stays put in water", "[stability][e
   // An elastic block of the water's density (4 x 4 x 4, E = 100 kPa) in the middle of a water
   // column 12 d deep, 4 d below the surface, on INDSPH for 0.5 s. Zero net force: its height
   // relative to the water level (mean of the column tops) must stay put. Bound 1 d: the floating
-  // blocks of the buoyancy benchmark sit 0.4-0.6 d too high (docs/elasticity.md, unexplained), so
-  // 1 d is that offset with a margin; a wrong momentum exchange (a missing or one-sided pressure
-  // term) moves the block by many d in 0.5 s (free fall alone: 1.2 m). Sideways: 0.5 d (the scene
-  // is symmetric; what remains is the solver's noise).
+  // blocks of the buoyancy benchmark sit 0.4-0.6 d too high (docs/methods/elasticity.md,
+  // unexplained), so 1 d is that offset with a margin; a wrong momentum exchange (a missing or
+  // one-sided pressure term) moves the block by many d in 0.5 s (free fall alone: 1.2 m). Sideways:
+  // 0.5 d (the scene is symmetric; what remains is the solver's noise).
   const Real d = 0.01;  // [m]
   const Real gap = (kWallGap - 0.5) * d;
   const int width = 12, depth = 12, side = 4;
@@ -322,8 +322,8 @@ TEST_CASE(
   // on every free face moves much less (only the start-up settling of the single-layer walls
   // loads it unevenly). Measured: 0.53 p t / E. Why the limit: the elastic stage is solved before
   // the pressure solve, so a stiff layer answers the fluid's load as if softened by
-  // 1 + (omega_1 dt)^2 (docs/elasticity.md, "Heavy onto light"); without the limit (dt = 2 ms,
-  // (omega_1 dt)^2 ~ 140) this pad moves 9.5 p t / E, with it (dt = 0.17 ms) 0.53 p t / E.
+  // 1 + (omega_1 dt)^2 (docs/methods/elasticity.md, "Heavy onto light"); without the limit (dt = 2
+  // ms, (omega_1 dt)^2 ~ 140) this pad moves 9.5 p t / E, with it (dt = 0.17 ms) 0.53 p t / E.
   const Real d = 0.01, E = 5e5, nu = 0.45, g = 9.81;  // [m], [Pa], [1], [m/s^2]
   const Real gap = (kWallGap - 0.5) * d;
   const int width = 10, depth = 12, padSide = 6, padLayers = 3;
@@ -375,7 +375,7 @@ TEST_CASE("heavy elastic cuboid dropped on an anchored light one at 1:60 settles
           "[validation][elasticity]") {
   // The other order of Wang et al. 2023 §5.2: a 60000 kg/m^3 cuboid (4 x 4 x 4) falls 1 d onto a
   // 1000 kg/m^3 pad (6 x 5 x 6), E = 500 kPa, nu = 0.3 for both, INDSPH, 0.8 s. Two things make
-  // this order hard (docs/elasticity.md, "Heavy onto light"):
+  // this order hard (docs/methods/elasticity.md, "Heavy onto light"):
   // - On a frictionless floor the pad is squeezed out sideways (an off-centre load lets the heavy
   //   body sink deeper near the pad's edge: the centred state is an unstable equilibrium, and
   //   round-off grows 1e-12 -> 0.5 d in two impacts). Contact here is frictionless (pressure

@@ -1,4 +1,4 @@
-// "Only when it matters" (issue 7): the tissue deformation estimate and the elastic/rigid decision.
+// "Only when it matters": the tissue deformation estimate and the elastic/rigid decision.
 #include <catch2/catch.hpp>
 
 #include "sim/core/error.h"

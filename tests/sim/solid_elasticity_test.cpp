@@ -1,4 +1,4 @@
-// Elastic solids (issue 7): the implicit corotated SPH elasticity of sim/solid/ against closed
+// Elastic solids: the implicit corotated SPH elasticity of sim/solid/ against closed
 // forms and conservation laws. Solid-only scenes run on NoPressureSolver (solid_fixtures.h).
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -151,7 +151,7 @@ TEST_CASE("cantilever under gravity matches Euler-Bernoulli", "[validation][elas
   tip /= count;
   // Equilibrium reached: kinetic energy below 1e-6 of the work of gravity at the deflection.
   CHECK(kineticEnergy(world) < 1e-6 * totalMass(world) * g * theory);
-  // 10 % (issue 7). Expected deviations, all making the beam softer: the lattice's second moment
+  // 10 %. Expected deviations, all making the beam softer: the lattice's second moment
   // of area is 2.8 % below the continuum's (particle-centred quadrature: sum of y^2 over 6 layers
   // = 17.5 d^2 vs t^3/12 = 18 d^2), shear deformation adds 1.6 % (Timoshenko, L/t = 8), and the
   // particle-scale modes relax by a few % at alpha = 10 (ElasticityParameters::hourglassStiffness).

@@ -1,4 +1,4 @@
-// Set-ups shared by the elastic-solid tests and the oscillating-plate benchmark (issue 7).
+// Set-ups shared by the elastic-solid tests and the oscillating-plate benchmark.
 #pragma once
 
 #include <memory>

@@ -1,4 +1,4 @@
-// Conservation and input checks of the engine (issue 2, validations 3 and 4).
+// Conservation and input checks of the engine (validations 3 and 4).
 //
 // Linear momentum: with no walls and no gravity, every force the pressure solvers, the viscosity
 // and the velocity smoothing apply is a sum of pair terms that are equal and opposite
@@ -129,7 +129,7 @@ TEST_CASE("momentum drift measure detects an external force", "[unit][conservati
   CHECK((linearMomentum(*world) - p0).norm() / sumMassSpeed(*world) > 1e-6);
 }
 
-// ---- bad parameters (issue 2, validation 4): SimError with a message naming the problem ----
+// ---- bad parameters (validation 4): SimError with a message naming the problem ----
 
 TEST_CASE("non-positive spacing is rejected", "[unit][bad_input]") {
   WorldParameters p;

@@ -1,4 +1,4 @@
-// Dam break (issue 2, validation 2): the surge front of a collapsing water column of width a and
+// Dam break (validation 2): the surge front of a collapsing water column of width a and
 // height 2a against Martin & Moyce (1952), Phil. Trans. R. Soc. A 244:312, Part IV, Table 2
 // (data/reference/martin_moyce_1952.csv, with its sources and normalisation):
 // Z = z/a versus T = n t sqrt(g/a), n = sqrt(2).
@@ -144,7 +144,8 @@ TEST_CASE("dam break surge front matches Martin & Moyce 1952 (DFSPH)", "[validat
   checkBand(runDamBreak("dfsph", kEndT), "dfsph");
 }
 
-// ---- determinism (DESIGN.md principle 7): fixed-order reductions, static OpenMP schedules ----
+// ---- determinism (docs/developer-guide.md principle 7): fixed-order reductions, static OpenMP
+// schedules ----
 
 namespace {
 

@@ -1,4 +1,4 @@
-// Hydrostatic tank at rest (issue 2, validation 1), for WCSPH and DFSPH.
+// Hydrostatic tank at rest (validation 1), for WCSPH and DFSPH.
 //
 // A 4 x 4 x 8 cm water column (d = 5 mm, 1,024 particles) settles for 0.6 s; over the next 0.4 s
 // the pressure of every particle and its position are averaged in time, then compared layer by
@@ -145,7 +145,7 @@ TEST_CASE("DFSPH hydrostatic tank matches rho g (H - y) within its density toler
   CHECK(r.maxCompression <= options.dfsph.densityTolerance);
 }
 
-// Issue 3, test 4: every other solver on the same tank, against the same reference and bounds.
+// Every other solver on the same tank, against the same reference and bounds.
 TEST_CASE("INDSPH hydrostatic tank matches rho g (H - y)", "[validation][hydrostatic]") {
   checkProfile(runProfile(optionsFor("indsph")));
 }
@@ -156,7 +156,7 @@ TEST_CASE("number-density baseline hydrostatic tank matches rho g (H - y)",
 }
 
 // IISPH at its default tolerance 1e-4 (mean compression; the INDSPH eta). At 1e-3 its worst
-// interior layer read +6 % (measured 2026-11-22): relaxed Jacobi stops with a long-wavelength
+// interior layer read +6 %: relaxed Jacobi stops with a long-wavelength
 // pressure error over the column that a mean compression of 1e-3 still allows (3e-4: 3.8 %,
 // 1e-4: 3.2 %, mean 1.7 %), so the tolerance, not the wall term, was the cause.
 TEST_CASE("IISPH hydrostatic tank matches rho g (H - y)", "[validation][hydrostatic]") {

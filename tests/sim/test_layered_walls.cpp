@@ -1,4 +1,4 @@
-// Layered static walls with their own pressure (Wang et al. 2023 section 4.3, eq. 21; issue 3).
+// Layered static walls with their own pressure (Wang et al. 2023 section 4.3, eq. 21).
 //
 // The tank's walls are a lattice of 3 layers continuing the fluid lattice (volume d^3 each), and
 // INDSPH solves for the wall particles' stiffness kappa_b as well as the fluid's. Compared with the
@@ -69,7 +69,7 @@ TEST_CASE("layered walls: fluid next to a wall or in a corner has the bulk numbe
   // The wall lattice continues the fluid lattice, so every fluid particle of the block sees the
   // same neighbour geometry within h = 2d, whatever its place, except at the free surface:
   // equal number densities up to round-off (1e-12, ~1e4 ulps of a ~60-term sum). With a single
-  // Akinci layer the particle at d/2 from a face reads +55 % (docs/solvers.md).
+  // Akinci layer the particle at d/2 from a face reads +55 % (docs/methods/solvers.md).
   const Real d = 0.01;
   auto t = layeredTank(6 * d, 6 * d, d, 2);
   const World& w = *t.world;
@@ -214,7 +214,7 @@ TEST_CASE("INDSPH with layered walls: hydrostatic pressure, floor gap d/2, wall 
   // Tolerance 0.1 d: the weight of the column compresses the bottom by rho g H / (rho c^2) ~ 0 for
   // an incompressible solve, and the solver's own tolerance eta = 1e-4 on the number density is
   // 3e-5 d in distance; 0.1 d is the size of the disorder of a settled packing. The single-layer
-  // Akinci wall keeps the fluid at ~1.1 d (docs/solvers.md).
+  // Akinci wall keeps the fluid at ~1.1 d (docs/methods/solvers.md).
   CHECK(r.floorGap > 0.4 * kSpacing);
   CHECK(r.floorGap < 0.6 * kSpacing);
   // Wall pressure is now a physical output: the floor's surface particles under the column carry
@@ -226,7 +226,7 @@ TEST_CASE("INDSPH with layered walls: hydrostatic pressure, floor gap d/2, wall 
   CHECK(r.wallPressure == Approx(kRho * kG * r.H).epsilon(0.10));
   // Calm: no impact here (the column starts on the floor at rest density), so the motion in the
   // window is the solver's own noise; it must not exceed the single-layer INDSPH tank's (2.0e-5 J,
-  // test_hydrostatic.cpp, docs/solvers.md), an rms speed of ~1.8 cm/s.
+  // test_hydrostatic.cpp, docs/methods/solvers.md), an rms speed of ~1.8 cm/s.
   CHECK(r.kineticWindow < 2.0e-5);
   CHECK(r.rejected <= r.steps / 100);
 }

@@ -145,7 +145,7 @@ TEST_CASE("The Young-Laplace outline fit reads static lattice droplets under gra
   // The measurement of the sessile droplet under gravity on the droplet as built, no step (R0 / 8).
   // As for the zero-gravity cap fit (interface_units.cpp), the lattice defines the surface to
   // about 0.1 d, 1-2 deg up to 150 deg; steeper, the outline changes less with the angle
-  // (sin theta), so 5 deg at 165. Measured 120.9, 135.0, 151.4, 169.3 (session 20); the footprint
+  // (sin theta), so 5 deg at 165. Measured 120.9, 135.0, 151.4, 169.3; the footprint
   // alone read 120.0, 132.0, 144.8, 167.4 (by the outermost particle) and 121.7, 132.8, 152.0,
   // 176.4 (by the layer's area): no measure at this resolution.
   for (const Real theta : {120.0, 135.0, 150.0, 165.0}) {
@@ -166,7 +166,7 @@ TEST_CASE("The Young-Laplace shape fit reads angle and tension apart on static d
   // the apex rises 0.33 d at R0 / 16) but clearly with the capillary constant (a 15 % weaker
   // tension lowers it 0.3 d and widens it): a droplet whose tension is off reads a wrong angle when
   // c is held at its nominal value. Built at R0 / 16, 150 deg: with the nominal tension the outline
-  // fit reads 150.3, with 0.85 of it 140.6 (session 22); the shape fit, c free, reads 149.4 deg /
+  // fit reads 150.3, with 0.85 of it 140.6; the shape fit, c free, reads 149.4 deg /
   // 1.014 and 151.2 deg / 0.839. The tolerances: 2 deg, the outline fit's own on these droplets
   // (above), and 0.04 in sigma_eff / sigma, less than a third of the 0.15 it must tell apart.
   for (const Real sigmaRatio : {1.0, 0.85}) {

@@ -1,4 +1,4 @@
-// Multiphase pressure solvers (issue 3): the number-density discretisation of Wang et al. 2023,
+// Multiphase pressure solvers: the number-density discretisation of Wang et al. 2023,
 // INDSPH stability over density ratios, buoyancy direction, and the interface-gap diagnostic.
 #include <catch2/catch.hpp>
 
@@ -207,14 +207,15 @@ TEST_CASE("INDSPH buoyancy: a light blob rises and a heavy blob sinks",
     CHECK(shift < -0.5 * d);
 }
 
-// Issue 6, validation 6: near-neutral buoyancy, the regime of silicone oil in aqueous (3 % density
-// difference). Both phases are water-like in viscosity here, to isolate buoyancy from viscous drag.
+// docs/methods/interface.md validation 6: near-neutral buoyancy, the regime of silicone oil in
+// aqueous (3 % density difference). Both phases are water-like in viscosity here, to isolate
+// buoyancy from viscous drag.
 //
 // The reference matters. The column starts 1.2 d above the floor and settles in its first 0.1 s;
 // with the walls holding the fluid beside them, the settling is a circulation: the middle of the
 // tank sinks 0.6-0.8 d while the water near the side walls rises back. Against the mean height of
 // all the water (the first version of this test), a neutral blob in the middle therefore
-// "drifted" -0.21 d in 0.3 s. Measured 2026-11-22 (d = 5 mm, 0.3 s), displacements of the blob
+// "drifted" -0.21 d in 0.3 s. Measured (d = 5 mm, 0.3 s): displacements of the blob
 // and of the water that started directly above and below it (its column):
 //   blob 1000: -0.67 d, its column -0.60 d: blob - column within 0.13 d over the whole run;
 //   blob 970: -0.60 d; blob 1060: -1.00 d; against the neutral blob +0.07 d and -0.33 d.
@@ -291,14 +292,14 @@ TEST_CASE("INDSPH neutral buoyancy: a blob of the water's density moves with its
 
 // [!mayfail], a known open defect: against the neutral blob (the control, same settling flow) the
 // 970 blob rises only +0.28 d and the 1060 blob sinks -0.20 d in 0.3 s, against 1.8 d / 3.4 d
-// without drag. Cause measured (docs/interface.md, validation 6): XSPH smoothing across phases
-// damped it (+0.07 d / -0.33 d before XSPH was restricted to one material); what is left is
+// without drag. Cause measured (docs/methods/interface.md, validation 6): XSPH smoothing across
+// phases damped it (+0.07 d / -0.33 d before XSPH was restricted to one material); what is left is
 // resolution: with XSPH off the signal grows to +0.86 d / -1.74 d at d = 2.5 mm (8x the particles,
-// too slow for CI). Session 5: the blob stalls, and the stall grows with depth (8 cm deep neither
+// too slow for CI). Measured: the blob stalls, and the stall grows with depth (8 cm deep neither
 // blob moves): the particle arrangement under hydrostatic pressure has a shear yield, because the
 // symmetric pressure force is not zero for a uniform pressure on an imperfect arrangement. A
-// solver defect, analysed in docs/interface.md (validation 6); this test is its acceptance test.
-// In a closed, filled domain the background can be removed exactly
+// solver defect, analysed in docs/methods/interface.md (validation 6); this test is its acceptance
+// test. In a closed, filled domain the background can be removed exactly
 // (World::gravityReferenceDensity): the closed-box test below passes that way; with a free surface,
 // as here, it cannot.
 TEST_CASE("INDSPH near-neutral buoyancy: 970 rises and 1060 sinks against the neutral blob",
@@ -320,7 +321,7 @@ TEST_CASE("INDSPH near-neutral buoyancy: 970 rises and 1060 sinks against the ne
 // and a relaxed, disordered start (the lattice jittered by up to 0.2 d per axis, fixed seed, then
 // 20 steps with the velocities reset after each: a fluid at rest is not a lattice, and the exact
 // lattice locks). Without the first, the [!mayfail] test above shows the blob pinned; without
-// the relaxation the answer depended on the jitter's realization (docs/interface.md).
+// the relaxation the answer depended on the jitter's realization (docs/methods/interface.md).
 namespace {
 
 // Mean height change [m] of a 2 cm cube of blobDensity in an 8 x 6 x 8 cm closed box of water

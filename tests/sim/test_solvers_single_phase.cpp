@@ -1,6 +1,6 @@
-// Every registered pressure solver on the same single-phase water tank (issue 3, test 4, in its
-// reduced form: see docs/solvers.md, "not calm at rest", for why the pressure profile of the
-// implicit solvers is not compared with rho g (H - y) here yet).
+// Every registered pressure solver on the same single-phase water tank (test 4, in its
+// reduced form: see docs/methods/solvers.md, "not calm at rest", for why the pressure profile of
+// the implicit solvers is not compared with rho g (H - y) here yet).
 #include <catch2/catch.hpp>
 
 #include <cstdio>

@@ -1,4 +1,4 @@
-// Two-layer hydrostatics (issue 3, test 1): a light fluid over a heavy one at rest in a tank.
+// Two-layer hydrostatics (test 1): a light fluid over a heavy one at rest in a tank.
 //
 // Closed form (layered hydrostatics): with the free surface at H and the interface at y_I,
 //   p(y) = rho_l g (H - y)                          for y > y_I,

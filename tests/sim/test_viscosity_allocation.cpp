@@ -1,6 +1,6 @@
-// The implicit viscosity stage allocates nothing once attached (issue 6 brief: "allocate in
-// attach()"; STYLE.md point 9). A separate executable, because counting allocations replaces the
-// global operator new for the whole program.
+// The implicit viscosity stage allocates nothing once attached (the engine rule "allocate in
+// attach()"; docs/developer-guide.md code rule 9). A separate executable, because counting
+// allocations replaces the global operator new for the whole program.
 #include <catch2/catch.hpp>
 
 #include "allocation_counter.h"

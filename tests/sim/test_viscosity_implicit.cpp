@@ -1,5 +1,5 @@
-// Implicit viscosity (Weiler et al. 2018, sim/effects/viscosity_weiler2018.h; issue 6, validation
-// 4).
+// Implicit viscosity (Weiler et al. 2018, sim/effects/viscosity_weiler2018.h;
+// docs/methods/viscosity.md, validation).
 //
 // - start-up plane Couette flow at 1000 cSt between two wall plates, the top one sliding in its own
 //   plane: transient and steady profile against the closed form;
@@ -433,8 +433,8 @@ TEST_CASE("implicit viscosity leaves translation and rigid rotation unchanged",
   CHECK((angularMomentum(w) - l0).norm() < 1e-12 * l0.norm());
 }
 
-// Same inputs and thread count give the same bits (DESIGN.md principle 7), and with the fixed-block
-// reductions also across thread counts.
+// Same inputs and thread count give the same bits (docs/developer-guide.md principle 7), and with
+// the fixed-block reductions also across thread counts.
 TEST_CASE("implicit viscosity is bit-identical across thread counts", "[unit][viscosity]") {
   std::vector<std::vector<Vec3>> results;
   for (int threads : {1, 2}) {
