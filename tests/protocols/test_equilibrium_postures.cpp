@@ -1,0 +1,136 @@
+// Postures at their static equilibrium (duration = "equilibrium", protocols/equilibrium/) in the
+// emmetropic eye at 90 % silicone oil: the clinical facts a report must not contradict, the run's
+// outputs, and the protocol errors of equilibrium schedules.
+#include <catch2/catch.hpp>
+#include <filesystem>
+#include <string>
+
+#include "protocols/equilibrium/run_equilibrium.h"
+#include "protocols/format/parse_protocol.h"
+#include "protocols/format/protocol_error.h"
+#include "protocols/scenario/scenario.h"
+#include "tamponade_command.h"
+
+using namespace protocols;
+
+namespace {
+
+std::string eyeProtocol(const std::string& postures, const std::string& tamponadeExtra = "") {
+  return "format_version = 1\n"
+         "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
+         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"90 %\"\n" +
+         tamponadeExtra + "[schedule]\n" + postures +
+         "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.2 mm\"\n"
+         "[outputs]\nfolder = \"runs/eq\"\n";
+}
+
+std::string posture(const std::string& name, const std::string& duration = "equilibrium") {
+  return "[[schedule.postures]]\nname = \"" + name + "\"\nduration = \"" + duration + "\"\n";
+}
+
+// The coverage of each posture's equilibrium: the first frame of each posture.
+std::vector<FrameCoverage> postureCoverages(const std::string& text) {
+  const Protocol p = parseProtocolText(text, "eq.toml");
+  Scenario s = assembleScenario(p);
+  const std::filesystem::path out =
+      std::filesystem::temp_directory_path() / "tamponade_test_equilibrium_postures";
+  std::filesystem::remove_all(out);
+  std::filesystem::create_directories(out);
+  RunOptions options;
+  options.outputFolder = out;
+  std::vector<FrameCoverage> perPosture;
+  (void)runEquilibriumSchedule(p, s, options, {});
+  // Rebuild per posture from the CSV the run wrote (one row pair per posture).
+  const std::string csv = protocols_test::readText(out / "coverage.csv");
+  REQUIRE(std::filesystem::exists(out / "report.html"));
+  REQUIRE(std::filesystem::exists(out / "interface_1.ply"));
+  std::istringstream lines(csv);
+  std::string line;
+  std::getline(lines, line);  // header: time, kReportedRegions..., breaks
+  int row = 0;
+  while (std::getline(lines, line)) {
+    if (row++ % 2 == 1) continue;
+    FrameCoverage f;
+    std::istringstream cells(line);
+    std::string cell;
+    std::getline(cells, cell, ',');
+    for (auto& r : f.regions) {
+      std::getline(cells, cell, ',');
+      r.fraction = std::stod(cell);
+    }
+    perPosture.push_back(f);
+  }
+  std::filesystem::remove_all(out);
+  return perPosture;
+}
+
+constexpr std::size_t kMacula = 5, kPosteriorPole = 6;  // kReportedRegions
+
+}  // namespace
+
+TEST_CASE("Equilibrium postures of the emmetropic eye at 90 % silicone oil agree with the clinic",
+          "[validation][equilibrium]") {
+  // Silicone oil floats: upright, the oil fills the upper eye and the posterior pole with the
+  // macula (the aqueous pools inferiorly); supine, the aqueous pools at the posterior pole (the
+  // lowest point) and leaves the macula to it; face-down, the posterior pole is the highest point
+  // and the oil covers it (the reason for face-down positioning after macular surgery).
+  const std::vector<FrameCoverage> c =
+      postureCoverages(eyeProtocol(posture("upright") + posture("supine") + posture("face-down")));
+  REQUIRE(c.size() == 3);
+  CHECK(c[0].regions[kMacula].fraction == Approx(1.0));
+  CHECK(c[1].regions[kMacula].fraction == Approx(0.0));
+  CHECK(c[1].regions[kPosteriorPole].fraction < 0.1);
+  CHECK(c[2].regions[kPosteriorPole].fraction == Approx(1.0));
+  // 90 % fill covers a large part of the retina in every posture, and more upright than supine
+  // (supine, the aqueous spreads over the posterior pole); Rossi et al. 2021 report 55-78 %
+  // retinal contact at 80-90 % fill.
+  CHECK(c[0].retina().fraction > 0.55);
+  CHECK(c[0].retina().fraction > c[1].retina().fraction);
+}
+
+TEST_CASE("tamponade run writes an equilibrium schedule's report and interfaces",
+          "[unit][equilibrium]") {
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / "tamponade_test_equilibrium_cli";
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  { std::ofstream(dir / "eq.toml") << eyeProtocol(posture("upright")); }
+  const auto r = protocols_test::runTamponade("run eq.toml --out out --threads 1", dir);
+  INFO(r.output);
+  CHECK(r.exitCode == 0);
+  CHECK(r.output.find("equilibrium in") != std::string::npos);
+  for (const char* file : {"report.html", "summary.json", "coverage.csv", "interface_1.ply"})
+    CHECK(std::filesystem::exists(dir / "out" / file));
+  CHECK(protocols_test::readText(dir / "out" / "report.html").find("static equilibrium") !=
+        std::string::npos);
+  std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("Equilibrium schedules: protocol errors name the key", "[unit][equilibrium]") {
+  SECTION("mixing equilibrium and simulated postures") {
+    try {
+      parseProtocolText(eyeProtocol(posture("upright") + posture("supine", "10 s")), "eq.toml");
+      FAIL("accepted a mixed schedule");
+    } catch (const ProtocolError& e) {
+      CHECK(std::string(e.what()).find("mixes duration = \"equilibrium\"") != std::string::npos);
+      CHECK(std::string(e.what()).find("eq.toml:") != std::string::npos);
+    }
+  }
+  SECTION("complete wetting has no contact line") {
+    try {
+      parseProtocolText(eyeProtocol(posture("upright"), "contact_angle = \"0 deg\"\n"), "eq.toml");
+      FAIL("accepted a contact angle of 0");
+    } catch (const ProtocolError& e) {
+      CHECK(std::string(e.what()).find("contact_angle") != std::string::npos);
+      CHECK(std::string(e.what()).find("no contact line") != std::string::npos);
+    }
+  }
+  SECTION("a misspelt word gets a suggestion") {
+    try {
+      parseProtocolText(eyeProtocol(posture("upright", "equilibrim")), "eq.toml");
+      FAIL("accepted 'equilibrim'");
+    } catch (const ProtocolError& e) {
+      CHECK(std::string(e.what()).find("did you mean \"equilibrium\"") != std::string::npos);
+    }
+  }
+}

@@ -1,0 +1,110 @@
+// What the static equilibrium's accuracy costs in time: a 12 mm sphere at Bond 1.2 (silicone oil
+// 970 in aqueous 1004 kg/m^3, 40 mN/m, 1 g), each voxel spacing against the axisymmetric
+// Young-Laplace equilibrium, with iterations and wall time. Writes a markdown table to stdout and
+// equilibrium_bench.csv to --out. A benchmark, not a test (not registered with CTest).
+//
+//   sim_equilibrium_bench [--voxels 0.5,0.4,0.3] [--angles 18,40,90,140] [--fills 0.8,0.9]
+//                         [--out DIR]
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "sim/equilibrium/threshold_dynamics_xu2017.h"
+#include "sim/equilibrium/wall_oil.h"
+#include "young_laplace_sphere.h"
+
+using namespace sim;
+using namespace sim::equilibrium;
+
+namespace {
+
+std::vector<double> numbers(const std::string& text) {
+  std::vector<double> out;
+  std::stringstream s(text);
+  std::string item;
+  while (std::getline(s, item, ',')) {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (end == item.c_str() || *end != '\0' || !(v > 0)) {
+      std::fprintf(stderr, "sim_equilibrium_bench: '%s' is not a positive number\n", item.c_str());
+      std::exit(2);
+    }
+    out.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  std::vector<double> voxels{0.5, 0.4, 0.3}, angles{18, 40, 90, 140}, fills{0.8, 0.9};
+  std::filesystem::path out = ".";
+  for (int k = 1; k < argc; ++k) {
+    const std::string a = argv[k];
+    const bool value = k + 1 < argc;
+    if (a == "--voxels" && value)
+      voxels = numbers(argv[++k]);
+    else if (a == "--angles" && value)
+      angles = numbers(argv[++k]);
+    else if (a == "--fills" && value)
+      fills = numbers(argv[++k]);
+    else if (a == "--out" && value)
+      out = argv[++k];
+    else {
+      std::fprintf(stderr,
+                   "usage: sim_equilibrium_bench [--voxels MM,...] [--angles DEG,...] "
+                   "[--fills F,...] [--out DIR]\n");
+      return a == "--help" ? 0 : 2;
+    }
+  }
+  constexpr double R = 12e-3, sigma = 0.04, oil = 970, aqueous = 1004, g = 9.81;
+  const double c = (aqueous - oil) * g / sigma;
+  std::filesystem::create_directories(out);
+  std::ofstream csv(out / "equilibrium_bench.csv");
+  csv << "voxel_mm,theta_deg,fill,coverage,young_laplace,error_points,iterations,seconds\n";
+  std::printf(
+      "| voxel | theta (aqueous) | fill | coverage | Young-Laplace | error | iterations "
+      "| time |\n|---|---|---|---|---|---|---|---|\n");
+  for (const double voxel : voxels)
+    for (const double theta : angles)
+      for (const double fill : fills) {
+        const double rad = theta * std::numbers::pi / 180;
+        const double reference = testref::youngLaplaceSphere(R, c, rad, 1 - fill).upperWetFraction;
+        const auto start = std::chrono::steady_clock::now();
+        EquilibriumProblem p;
+        p.grid = gridAround(Vec3::Constant(-R), Vec3::Constant(R), voxel * 1e-3, 2);
+        p.fluidFraction =
+            fluidFractionsFromDistance(p.grid, [&](const Vec3& x) { return x.norm() - R; });
+        p.oilDensity = oil;
+        p.aqueousDensity = aqueous;
+        p.tension = sigma;
+        p.contactAngle = rad;
+        p.gravity = Vec3(0, 0, -g);
+        p.oilFraction = fill;
+        const EquilibriumSolution s = solveEquilibrium(p);
+        const WallOilReader reader(s, rad);
+        const int samples = 20000;
+        int covered = 0;
+        for (int i = 0; i < samples; ++i) {
+          const double z = 1.0 - (2.0 * i + 1.0) / samples, r = std::sqrt(1.0 - z * z);
+          const double phi = i * std::numbers::pi * (3.0 - std::sqrt(5.0));
+          const Vec3 n(r * std::cos(phi), r * std::sin(phi), z);
+          covered += reader.oilCovered(R * n, n) ? 1 : 0;
+        }
+        const double seconds =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        const double coverage = static_cast<double>(covered) / samples;
+        std::printf("| %.2f mm | %.0f | %.2f | %.4f | %.4f | %+.2f | %d | %.2f s |\n", voxel, theta,
+                    fill, coverage, reference, 100 * (coverage - reference), s.iterations, seconds);
+        std::fflush(stdout);
+        csv << voxel << ',' << theta << ',' << fill << ',' << coverage << ',' << reference << ','
+            << 100 * (coverage - reference) << ',' << s.iterations << ',' << seconds << '\n';
+      }
+  return 0;
+}

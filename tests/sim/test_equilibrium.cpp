@@ -1,0 +1,209 @@
+// The static equilibrium solver (sim/equilibrium/) in a sphere of R = 12 mm, against references
+// that share no code with it: the closed form of a flat fill plane, the axisymmetric Young-Laplace
+// meniscus and the zero-gravity spherical cap (young_laplace_sphere.h), and symmetries of the
+// energy. Clinical parameters: silicone oil 970 in aqueous 1004 kg/m^3, sigma = 40 mN/m, 1 g
+// (Bond number R^2 delta rho g / sigma = 1.2), at the draft preset's 0.5 mm voxel.
+//
+// Where the tolerance is a measured error and not a derived bound, the test says so: the method's
+// error at small contact angles (docs/methods/equilibrium.md "Accuracy") is larger than the
+// 1 point the toolkit aims for, and these tests hold it at what it is so that it cannot grow.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <numbers>
+
+#include "sim/core/error.h"
+#include "sim/equilibrium/interface_surface.h"
+#include "sim/equilibrium/threshold_dynamics_xu2017.h"
+#include "sim/equilibrium/wall_oil.h"
+#include "young_laplace_sphere.h"
+
+using namespace sim;
+using namespace sim::equilibrium;
+
+namespace {
+
+constexpr double kR = 12e-3, kSigma = 0.04, kOil = 970.0, kAqueous = 1004.0, kG = 9.81;
+constexpr double kVoxel = 0.5e-3;
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+EquilibriumProblem sphereProblem(double thetaDeg, double fill, const Vec3& gravity,
+                                 double oilDensity = kOil, double tension = kSigma) {
+  EquilibriumProblem p;
+  p.grid = gridAround(Vec3::Constant(-kR), Vec3::Constant(kR), kVoxel, 2);
+  p.fluidFraction = fluidFractionsFromDistance(p.grid, [](const Vec3& x) { return x.norm() - kR; });
+  p.oilDensity = oilDensity;
+  p.aqueousDensity = kAqueous;
+  p.tension = tension;
+  p.contactAngle = thetaDeg * kDeg;
+  p.gravity = gravity;
+  p.oilFraction = fill;
+  return p;
+}
+
+// Unit normals spread evenly over the sphere (Fibonacci lattice).
+std::vector<Vec3> sphereNormals(int count) {
+  std::vector<Vec3> n;
+  for (int i = 0; i < count; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(1.0 - z * z);
+    const double phi = i * std::numbers::pi * (3.0 - std::sqrt(5.0));
+    n.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
+  }
+  return n;
+}
+
+struct Coverage {
+  double fraction = 0.0;         // [1] of the wall, oil-covered
+  Vec3 centroid = Vec3::Zero();  // [1] mean normal of the covered wall
+};
+
+Coverage coverageOf(const EquilibriumSolution& s, double thetaDeg) {
+  const WallOilReader reader(s, thetaDeg * kDeg);
+  Coverage c;
+  const std::vector<Vec3> normals = sphereNormals(20000);
+  for (const Vec3& n : normals)
+    if (reader.oilCovered(kR * n, n)) {
+      c.fraction += 1.0;
+      c.centroid += n;
+    }
+  if (c.fraction > 0) c.centroid /= c.fraction;
+  c.fraction /= static_cast<double>(normals.size());
+  return c;
+}
+
+// The wall fraction above a flat plane that holds `fill` of the sphere: f = 3x^2 - 2x^3.
+double flatCoverage(double fill) {
+  double lo = 0.0, hi = 1.0;
+  for (int it = 0; it < 100; ++it) {
+    const double x = 0.5 * (lo + hi);
+    (3 * x * x - 2 * x * x * x < fill ? lo : hi) = x;
+  }
+  return 0.5 * (lo + hi);
+}
+
+}  // namespace
+
+TEST_CASE("The Young-Laplace reference meets the zero-gravity closed form", "[unit][equilibrium]") {
+  // Two derivations that share nothing: the meridian ODE shot at a vanishing capillary constant
+  // (c R^2 = 1e-6) and the spherical cap on the contact circle. Their difference is the shooting's
+  // resolution (RK4, R / 1000 per step) and the residual gravity: 0.05 points.
+  for (const double theta : {40.0, 90.0, 140.0})
+    for (const double fill : {0.5, 0.8}) {
+      const testref::SphereMeniscus m =
+          testref::youngLaplaceSphere(kR, 1e-6 / (kR * kR), theta * kDeg, 1 - fill);
+      const double closed = testref::zeroGravityWetFraction((180.0 - theta) * kDeg, fill);
+      INFO("theta " << theta << " fill " << fill);
+      CHECK(m.upperWetFraction == Approx(closed).margin(5e-4));
+    }
+}
+
+TEST_CASE("Equilibrium: vanishing tension gives the flat fill plane", "[validation][equilibrium]") {
+  // sigma = 1e-7 N/m makes the Bond number 1e8: the interface is the fill plane, f = 3x^2 - 2x^3.
+  // The plane lies normal to a grid axis, so its last voxel layer is partly filled, and which
+  // voxels of it hold the oil (next to the wall or in the middle) is decided by the tension's
+  // residue: the binary state places the interface to a voxel layer, and the reading near the
+  // wall adds up to another. Bound: two layers, 2 h / (2R) = 4.2 points (coverage changes by
+  // dz / 2R with the height of a horizontal interface). Measured +2.4 to +3.5 points at fill 0.9
+  // and 0.95, 0 at 0.5: the open error of docs/methods/equilibrium.md "Limits".
+  for (const double fill : {0.5, 0.9, 0.95}) {
+    const EquilibriumSolution s =
+        solveEquilibrium(sphereProblem(90, fill, Vec3(0, 0, -kG), kOil, 1e-7));
+    INFO("fill " << fill);
+    CHECK(s.oilVolume / s.cavityVolume == Approx(fill).margin(1e-9));
+    CHECK(std::abs(coverageOf(s, 90).fraction - flatCoverage(fill)) < 0.042);
+  }
+}
+
+TEST_CASE("Equilibrium at Bond 1.2 in a sphere against Young-Laplace",
+          "[validation][equilibrium]") {
+  // The clinical case of the toolkit: the retina's 18 deg, and 40, 90, 140 deg, at 80 and 90 %
+  // fill. Measured errors at 0.5 mm (docs/methods/equilibrium.md, the table and its command):
+  // 18 deg -0.7 / -1.1, 40 deg -3.9 / -4.3, 90 deg -1.3 / -0.9, 140 deg +0.2 / -0.2 points. These
+  // are measured bounds of the method at this voxel, not derived ones, and not the 1 point the
+  // toolkit aims for: 5 points everywhere (the 40 deg error), 1.5 points at the retina's 18 deg
+  // and at 90-140 deg, so that neither can grow unnoticed.
+  for (const double theta : {18.0, 40.0, 90.0, 140.0})
+    for (const double fill : {0.8, 0.9}) {
+      const double c = (kAqueous - kOil) * kG / kSigma;
+      const double reference =
+          testref::youngLaplaceSphere(kR, c, theta * kDeg, 1 - fill).upperWetFraction;
+      const EquilibriumSolution s = solveEquilibrium(sphereProblem(theta, fill, Vec3(0, 0, -kG)));
+      const double measured = coverageOf(s, theta).fraction;
+      INFO("theta " << theta << " fill " << fill << ": " << measured << " vs " << reference);
+      CHECK(s.converged);
+      CHECK(std::abs(measured - reference) < 0.05);
+      if (theta != 40.0) CHECK(std::abs(measured - reference) < 0.015);
+    }
+}
+
+TEST_CASE("Equilibrium without gravity: the spherical cap", "[validation][equilibrium]") {
+  // Zero gravity, 90 and 140 deg at 80 % fill, against the closed form. Measured -1.6 and 0.0
+  // points; bound 2 points. (At 18 deg without gravity the method misses by 20 points: a known
+  // limit, docs/methods/equilibrium.md; no posture has zero gravity and protocols refuse it.)
+  for (const double theta : {90.0, 140.0}) {
+    const EquilibriumSolution s = solveEquilibrium(sphereProblem(theta, 0.8, Vec3::Zero()));
+    const double closed = testref::zeroGravityWetFraction((180.0 - theta) * kDeg, 0.8);
+    INFO("theta " << theta);
+    CHECK(std::abs(coverageOf(s, theta).fraction - closed) < 0.02);
+  }
+}
+
+TEST_CASE("Equilibrium: heavy oil mirrors light oil", "[validation][equilibrium]") {
+  // Swapping the phases (u -> 1 - u) maps a light oil at fill f and angle theta (through the
+  // aqueous) to a heavy one (the same density difference) at fill 1 - f and 180 - theta under the
+  // same gravity, and the energy onto itself up to a constant: the heavy oil covers what the light
+  // oil leaves. The voxels are the same, so only the threshold's tie-breaking differs: 0.5 points.
+  const double light =
+      coverageOf(solveEquilibrium(sphereProblem(40, 0.8, Vec3(0, 0, -kG), kAqueous - 34.0)), 40)
+          .fraction;
+  const double heavy =
+      coverageOf(solveEquilibrium(sphereProblem(140, 0.2, Vec3(0, 0, -kG), kAqueous + 34.0)), 140)
+          .fraction;
+  CHECK(heavy == Approx(1.0 - light).margin(0.005));
+  // And a heavy oil pools below: its covered wall lies on the side gravity points to.
+  const Coverage pooled =
+      coverageOf(solveEquilibrium(sphereProblem(18, 0.3, Vec3(0, 0, -kG), 1060.0)), 18);
+  CHECK(pooled.centroid.z() < -0.5);
+}
+
+TEST_CASE("Equilibrium in a sphere does not depend on the gravity direction",
+          "[validation][equilibrium]") {
+  // The sphere has no preferred direction, so the covered fraction must not change when gravity
+  // turns off the grid axes, and the covered region (oil floats) must face away from gravity.
+  // Bound 1 point: the grid's anisotropy at one voxel.
+  const Vec3 tilted = Vec3(1, 2, -3).normalized() * kG;
+  const Coverage axis = coverageOf(solveEquilibrium(sphereProblem(18, 0.9, Vec3(0, 0, -kG))), 18);
+  const Coverage turned = coverageOf(solveEquilibrium(sphereProblem(18, 0.9, tilted)), 18);
+  CHECK(std::abs(turned.fraction - axis.fraction) < 0.01);
+  const double angle =
+      std::acos(std::clamp(turned.centroid.normalized().dot(-tilted.normalized()), -1.0, 1.0));
+  CHECK(angle < 3.0 * kDeg);
+}
+
+TEST_CASE("Equilibrium refuses problems without a contact line or an interface",
+          "[unit][equilibrium]") {
+  CHECK_THROWS_AS(solveEquilibrium(sphereProblem(0, 0.9, Vec3(0, 0, -kG))), SimError);
+  CHECK_THROWS_AS(solveEquilibrium(sphereProblem(180, 0.9, Vec3(0, 0, -kG))), SimError);
+  CHECK_THROWS_AS(solveEquilibrium(sphereProblem(18, 1.0, Vec3(0, 0, -kG))), SimError);
+  CHECK_THROWS_AS(solveEquilibrium(sphereProblem(18, 0.0, Vec3(0, 0, -kG))), SimError);
+}
+
+TEST_CASE("The equilibrium interface surface lies on the Young-Laplace meridian",
+          "[validation][equilibrium]") {
+  // 90 deg, 90 % fill: every vertex of the extracted surface within 1.5 voxels of the
+  // axisymmetric meridian: a surface-nets vertex is the mean of its cell's edge crossings (up to
+  // half a cell diagonal, 0.87 h, off the interface they sample), and the binary state places the
+  // interface to half a voxel.
+  const double c = (kAqueous - kOil) * kG / kSigma;
+  const testref::SphereMeniscus m = testref::youngLaplaceSphere(kR, c, 90 * kDeg, 0.1);
+  const EquilibriumSolution s = solveEquilibrium(sphereProblem(90, 0.9, Vec3(0, 0, -kG)));
+  const InterfaceSurface surface = interfaceSurface(s);
+  REQUIRE(surface.triangles.size() > 100);
+  double worst = 0.0;
+  for (const Vec3& v : surface.vertices) {
+    const double r = std::hypot(v.x(), v.y());
+    double best = 1e9;
+    for (const auto& [mr, mz] : m.meridian) best = std::min(best, std::hypot(r - mr, v.z() - mz));
+    worst = std::max(worst, best);
+  }
+  CHECK(worst < 1.5 * kVoxel);
+}
