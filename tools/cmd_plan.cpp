@@ -1,11 +1,14 @@
 // `tamponade plan PROTOCOL`: assembles the scenario and prints what a run would do: particles per
 // material, the pipeline stages and why each is there, memory, and run-time estimates per
 // accuracy preset from a cost model calibrated on this machine. Writes nothing.
+#include <cmath>
 #include <cstdio>
 #include <string>
 
 #include "anatomy/anatomy_error.h"
 #include "meshing/mesh_error.h"
+#include "protocols/equilibrium/posture_equilibrium.h"
+#include "protocols/equilibrium/run_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/report/report_format.h"
 #include "protocols/scenario/plan_scenario.h"
@@ -32,6 +35,32 @@ std::string duration(double seconds) {
   if (seconds < 120) return protocols::formatNumber(seconds, 3) + " s";
   if (seconds < 7200) return protocols::formatNumber(seconds / 60, 3) + " min";
   return protocols::formatNumber(seconds / 3600, 3) + " h";
+}
+
+// An equilibrium schedule: one posture solved here and timed, the other presets scaled from it
+// (voxels ~ h^-3, iterations ~ h^-1), beside what simulating a posture would cost instead.
+void printEquilibriumPlan(const protocols::Protocol& protocol, const protocols::Scenario& scenario,
+                          const protocols::ScenarioPlan& plan) {
+  const double voxel = protocols::equilibriumVoxelSpacing(scenario.accuracy.preset);
+  const protocols::CavityVoxels cavity = protocols::voxelizeCavity(scenario, voxel);
+  const protocols::PostureEquilibrium e = protocols::solvePostureEquilibrium(
+      scenario, cavity, protocol.tamponade.fill.value, scenario.schedule.front().gravity);
+  const std::size_t postures = scenario.schedule.size();
+  std::printf(
+      "\nevery posture asks for its static equilibrium (docs/methods/equilibrium.md): the "
+      "estimate above is what simulating %s of nominal hold would cost; '%s' solved here in "
+      "%s s (%d iterations, %d x %d x %d voxels of %s mm)\n",
+      duration(plan.simulatedDuration).c_str(), scenario.schedule.front().label.c_str(),
+      protocols::formatNumber(e.seconds, 3).c_str(), e.solution.iterations, cavity.grid.nx,
+      cavity.grid.ny, cavity.grid.nz, protocols::formatNumber(voxel * 1e3, 2).c_str());
+  std::printf("  %-9s %8s %16s %22s\n", "preset", "voxel", "per posture", "schedule (postures)");
+  for (const char* preset : {"draft", "standard", "fine"}) {
+    const double h = protocols::equilibriumVoxelSpacing(preset);
+    const double seconds = e.seconds * std::pow(voxel / h, 4.0);
+    std::printf("  %-9s %5s mm %16s %16s (%zu)\n", preset,
+                protocols::formatNumber(h * 1e3, 2).c_str(), duration(seconds).c_str(),
+                duration(seconds * static_cast<double>(postures)).c_str(), postures);
+  }
 }
 
 }  // namespace
@@ -142,6 +171,7 @@ int runPlan(Args args) {
                   protocols::formatNumber(e.particleSpacing * 1e3, 3).c_str(), e.particles,
                   protocols::formatNumber(e.timeStep, 3).c_str(), e.steps,
                   duration(e.seconds).c_str());
+    if (protocols::isEquilibriumSchedule(scenario)) printEquilibriumPlan(protocol, scenario, plan);
     return 0;
   } catch (const protocols::ProtocolError& e) {
     return printProtocolError(e);

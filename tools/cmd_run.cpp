@@ -143,9 +143,10 @@ int runRun(Args args) {
       return 2;
     }
     std::filesystem::create_directories(folder);
-    for (const auto& note : scenario.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
+    // The scenario's notes are about the particle simulation, which an equilibrium run skips.
     if (protocols::isEquilibriumSchedule(scenario))
       return runEquilibrium(protocol, scenario, folder);
+    for (const auto& note : scenario.notes) std::fprintf(stderr, "note: %s\n", note.c_str());
 
     ProgressPrinter printer;
     protocols::RunOptions run;

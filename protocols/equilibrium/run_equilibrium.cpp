@@ -54,6 +54,9 @@ RunSummary runEquilibriumSchedule(const Protocol& protocol, Scenario& s, const R
                 e.solution.iterations, e.solution.converged});
   }
 
+  // The scenario's notes are about the particle simulation (wall model, fill, spacing); none
+  // applies to the equilibrium.
+  s.notes.clear();
   RunResults results{frames, last, {}, {}, {}, 0.0, {}};
   ReportInput in = makeRunReportInput(protocol, s, results);
   in.accuracy = {
