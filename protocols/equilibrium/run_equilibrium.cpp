@@ -32,6 +32,7 @@ RunSummary runEquilibriumSchedule(const Protocol& protocol, Scenario& s, const R
   const double fill = protocol.tamponade.fill.value;
 
   std::vector<FrameCoverage> frames;
+  std::vector<ReportEquilibrium> equilibria;
   WallOilFractions last;
   std::vector<std::string> solves;
   double t = 0.0;
@@ -42,6 +43,7 @@ RunSummary runEquilibriumSchedule(const Protocol& protocol, Scenario& s, const R
     frames.push_back(measureFrameCoverage(s.retina, e.wall, t + posture.duration - kFrameInset));
     t += posture.duration;
     last = e.wall;
+    equilibria.push_back({posture.label, frames.back(), e.wall.oilFraction, e.wall.wetting});
     if (!e.interface.empty())
       meshing::writeMesh(
           e.interface,
@@ -59,6 +61,7 @@ RunSummary runEquilibriumSchedule(const Protocol& protocol, Scenario& s, const R
   s.notes.clear();
   RunResults results{frames, last, {}, {}, {}, 0.0, {}};
   ReportInput in = makeRunReportInput(protocol, s, results);
+  in.equilibria = std::move(equilibria);
   in.accuracy = {
       {"method", "static equilibrium (threshold dynamics with wetting)",
        "docs/methods/equilibrium.md; each posture's interface in interface_<k>.ply"},

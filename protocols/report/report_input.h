@@ -56,6 +56,14 @@ struct ReportBreak {
   std::vector<sim::Vec3> outline;  // [m] eye frame, closed ring on the wall
 };
 
+// One posture at its static equilibrium (duration = "equilibrium"): its coverage and wall state.
+struct ReportEquilibrium {
+  std::string label;
+  FrameCoverage coverage;
+  std::vector<double> wallOilFraction;   // [1] #W
+  std::vector<WallWetting> wallWetting;  // #W
+};
+
 struct ReportInput {
   std::string title;
   std::string eyeSide = "OD";           // "OD" or "OS": which side of the map is nasal
@@ -77,6 +85,9 @@ struct ReportInput {
   // Elastic tissue, one sentence each: the decision, maximum displacements, the cavity
   // volume change; one line ("tissue rigid (estimate ...)") when no tissue is elastic.
   std::vector<std::string> tissue;
+  // Postures at their static equilibrium, in schedule order; empty for a simulated run. The
+  // report then gives each posture's coverage and fundus map instead of a time course.
+  std::vector<ReportEquilibrium> equilibria;
 };
 
 }  // namespace protocols

@@ -39,6 +39,43 @@ void writeFile(const std::filesystem::path& path, const std::string& text) {
     throw IoError(path.string(), "", "writing the report file failed", "check the free disk space");
 }
 
+// Equilibrium runs: each posture's coverage per region and break, then its fundus map.
+void renderEquilibria(const ReportInput& in, std::ostringstream& s) {
+  s << "<h2>Coverage at each posture's equilibrium</h2>\n<table>\n<tr><th>region</th>";
+  for (const auto& e : in.equilibria) s << "<th>" << escapeXml(e.label) << "</th>";
+  s << "</tr>\n";
+  for (std::size_t r = 0; r < kReportedRegions.size(); ++r) {
+    s << "<tr><td>" << kReportedRegions[r].name << "</td>";
+    for (const auto& e : in.equilibria)
+      s << "<td class=\"n\">" << formatPercent(e.coverage.regions[r].fraction) << "</td>";
+    s << "</tr>\n";
+  }
+  for (std::size_t b = 0; b < in.breaks.size(); ++b) {
+    s << "<tr><td>break " << escapeXml(in.breaks[b].name) << "</td>";
+    for (const auto& e : in.equilibria) {
+      const bool covered = b < e.coverage.breaks.size() && e.coverage.breaks[b].covered;
+      s << "<td class=\"" << (covered ? "yes\">covered" : "no\">open") << " ("
+        << formatPercent(b < e.coverage.breaks.size() ? e.coverage.breaks[b].area.fraction : 0.0)
+        << ")</td>";
+    }
+    s << "</tr>\n";
+  }
+  s << "</table>\n<p>Each posture's static equilibrium: where the oil-aqueous interface comes to "
+       "rest when the posture is held (docs/methods/equilibrium.md). A wall point counts as "
+       "oil-covered when the equilibrium interface, extended to the wall at the contact angle, "
+       "leaves it on the oil side; a break counts as covered when at least "
+    << formatPercent(kBreakCoveredFraction) << " of its area is.</p>\n";
+  for (const auto& e : in.equilibria) {
+    ReportInput map = in;
+    map.wallOilFraction = e.wallOilFraction;
+    map.wallWetting = e.wallWetting;
+    s << "<h2>Fundus map: " << escapeXml(e.label) << "</h2>\n" << renderFundusMap(map);
+  }
+  s << "<p>The retina unrolled around the posterior pole (azimuthal equidistant projection: the "
+       "distance from the centre is the angle from the posterior pole, seen from the front, "
+       "superior up); dashed lines separate the quadrants.</p>\n";
+}
+
 }  // namespace
 
 std::string renderReportHtml(const ReportInput& in) {
@@ -50,7 +87,15 @@ std::string renderReportHtml(const ReportInput& in) {
 
   s << "<h2>Scenario</h2>\n";
   for (const auto& p : in.scenario) s << "<p>" << escapeXml(p) << "</p>\n";
-  if (!in.frames.empty()) {
+  const bool equilibrium = !in.equilibria.empty();
+  if (equilibrium) {
+    s << "<p>Over the schedule's " << in.equilibria.size()
+      << " postures at equilibrium (each weighted alike; the transients between postures are "
+         "neglected) oil covered on average <strong>"
+      << formatPercent(in.summary.regions[0]) << "</strong> of the retina; in the last posture "
+      << formatPercent(in.frames.back().retina().fraction) << ".</p>\n";
+    renderEquilibria(in, s);
+  } else if (!in.frames.empty()) {
     s << "<p>Over the whole schedule (" << formatNumber(in.summary.duration, 4)
       << " s simulated) oil covered on average <strong>" << formatPercent(in.summary.regions[0])
       << "</strong> of the retina; at the end " << formatPercent(in.frames.back().retina().fraction)
@@ -62,10 +107,14 @@ std::string renderReportHtml(const ReportInput& in) {
   }
 
   s << "<h2>Oil coverage over time</h2>\n" << renderCoverageChart(in);
-  s << "<p>Shaded bands are the postures of the schedule. A wall point counts as oil-covered when "
-       "the SPH-weighted oil fraction of the fluid next to it is at least "
-    << formatPercent(kOilCoveredThreshold) << "; a break counts as covered when at least "
-    << formatPercent(kBreakCoveredFraction) << " of its area is oil-covered.</p>\n";
+  if (equilibrium)
+    s << "<p>Shaded bands are the postures of the schedule, each shown over one nominal second "
+         "at its equilibrium.</p>\n";
+  else
+    s << "<p>Shaded bands are the postures of the schedule. A wall point counts as oil-covered "
+         "when the SPH-weighted oil fraction of the fluid next to it is at least "
+      << formatPercent(kOilCoveredThreshold) << "; a break counts as covered when at least "
+      << formatPercent(kBreakCoveredFraction) << " of its area is oil-covered.</p>\n";
 
   s << "<h2>Coverage by region</h2>\n<table>\n<tr><th>region</th><th>area [mm&#178;]</th>"
        "<th>mean over time</th><th>minimum</th><th>at the end</th><th>dry at the end</th></tr>\n";
@@ -113,19 +162,22 @@ std::string renderReportHtml(const ReportInput& in) {
     s << "</table>\n";
   }
 
-  s << "<h2>Fundus map of oil coverage</h2>\n" << renderFundusMap(in);
-  s << "<p>The retina unrolled around the posterior pole (azimuthal equidistant projection: the "
-       "distance from the centre is the angle from the posterior pole, seen from the front, "
-       "superior up). Dots are wall particles at t = "
-    << formatNumber(in.mapTime, 4) << " s; dashed lines separate the quadrants.</p>\n";
+  if (!equilibrium) {
+    s << "<h2>Fundus map of oil coverage</h2>\n" << renderFundusMap(in);
+    s << "<p>The retina unrolled around the posterior pole (azimuthal equidistant projection: "
+         "the distance from the centre is the angle from the posterior pole, seen from the "
+         "front, superior up). Dots are wall particles at t = "
+      << formatNumber(in.mapTime, 4) << " s; dashed lines separate the quadrants.</p>\n";
+  }
 
-  s << "<h2>Pipeline</h2>\n<table>\n<tr><th>stage</th><th>in use</th><th>why</th>"
-       "<th>time [s]</th><th>calls</th></tr>\n";
+  if (!in.stages.empty())
+    s << "<h2>Pipeline</h2>\n<table>\n<tr><th>stage</th><th>in use</th><th>why</th>"
+         "<th>time [s]</th><th>calls</th></tr>\n";
   for (const auto& st : in.stages)
     s << "<tr><td>" << escapeXml(st.name) << "</td><td>" << (st.active ? "yes" : "no")
       << "</td><td>" << escapeXml(st.reason) << "</td><td class=\"n\">"
       << formatNumber(st.seconds, 4) << "</td><td class=\"n\">" << st.calls << "</td></tr>\n";
-  s << "</table>\n";
+  if (!in.stages.empty()) s << "</table>\n";
 
   s << "<h2>Accuracy settings</h2>\n<table>\n<tr><th>setting</th><th>value</th>"
        "<th>estimated error / source</th></tr>\n";
@@ -208,6 +260,23 @@ std::string renderSummaryJson(const ReportInput& in) {
       << ", \"mean_iterations\": " << formatNumber(ps.meanIterations, 6)
       << ", \"steps_at_iteration_cap_fraction\": " << formatNumber(ps.capFraction, 6)
       << ", \"iteration_cap\": " << ps.iterationCap << ", \"steps\": " << ps.steps << "}";
+  }
+  if (!in.equilibria.empty()) {
+    s << ",\n  \"equilibria\": [\n";
+    for (std::size_t k = 0; k < in.equilibria.size(); ++k) {
+      const ReportEquilibrium& e = in.equilibria[k];
+      s << "    {\"posture\": \"" << escapeJson(e.label) << "\", \"regions\": [";
+      for (std::size_t r = 0; r < kReportedRegions.size(); ++r)
+        s << (r ? ", " : "") << "{\"name\": \"" << kReportedRegions[r].name
+          << "\", \"fraction\": " << formatNumber(e.coverage.regions[r].fraction, 6) << "}";
+      s << "], \"breaks\": [";
+      for (std::size_t b = 0; b < e.coverage.breaks.size() && b < in.breaks.size(); ++b)
+        s << (b ? ", " : "") << "{\"name\": \"" << escapeJson(in.breaks[b].name)
+          << "\", \"fraction\": " << formatNumber(e.coverage.breaks[b].area.fraction, 6)
+          << ", \"covered\": " << (e.coverage.breaks[b].covered ? "true" : "false") << "}";
+      s << "]}" << (k + 1 < in.equilibria.size() ? "," : "") << "\n";
+    }
+    s << "  ]";
   }
   s << "\n}\n";
   return s.str();
