@@ -49,7 +49,10 @@ std::string renderCoverageChart(const ReportInput& input) {
       << "\" font-size=\"11\" text-anchor=\"middle\">" << formatNumber(t, 3) << "</text>\n";
   }
   s << "<text x=\"" << num(kLeft + 0.5 * plotW) << "\" y=\"" << num(kHeight - 6)
-    << "\" font-size=\"12\" text-anchor=\"middle\">simulated time [s]</text>\n";
+    << "\" font-size=\"12\" text-anchor=\"middle\">"
+    << (input.equilibria.empty() ? "simulated time [s]"
+                                 : "postures at equilibrium (one nominal second each)")
+    << "</text>\n";
   s << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(kTop) << "\" width=\"" << num(plotW)
     << "\" height=\"" << num(plotH) << "\" fill=\"none\" stroke=\"#333333\"/>\n";
   // Series.

@@ -146,8 +146,10 @@ std::string renderFundusMap(const ReportInput& input) {
     << "\" font-size=\"11\">rings: 30 deg</text>\n";
   s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 20)
     << "\" font-size=\"11\">from the pole</text>\n";
-  s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 40)
-    << "\" font-size=\"11\">t = " << formatNumber(input.mapTime, 4) << " s</text>\n";
+  s << "<text x=\"" << num(lx) << "\" y=\"" << num(ly + 40) << "\" font-size=\"11\">"
+    << (input.equilibria.empty() ? "t = " + formatNumber(input.mapTime, 4) + " s"
+                                 : std::string("at equilibrium"))
+    << "</text>\n";
   s << "</svg>\n";
   return s.str();
 }

@@ -101,7 +101,11 @@ TEST_CASE("tamponade run writes an equilibrium schedule's report and interfaces"
   CHECK(r.output.find("equilibrium in") != std::string::npos);
   for (const char* file : {"report.html", "summary.json", "coverage.csv", "interface_1.ply"})
     CHECK(std::filesystem::exists(dir / "out" / file));
-  CHECK(protocols_test::readText(dir / "out" / "report.html").find("static equilibrium") !=
+  const std::string report = protocols_test::readText(dir / "out" / "report.html");
+  CHECK(report.find("Coverage at each posture's equilibrium") != std::string::npos);
+  CHECK(report.find("Fundus map: upright") != std::string::npos);
+  CHECK(report.find("s simulated") == std::string::npos);
+  CHECK(protocols_test::readText(dir / "out" / "summary.json").find("\"equilibria\": [") !=
         std::string::npos);
   std::filesystem::remove_all(dir);
 }
