@@ -28,9 +28,12 @@ struct ImportResult {
 };
 
 // Plausible size of an eye cavity after unit conversion: the largest bounding-box extent must lie
-// in [kMinEyeSize, kMaxEyeSize] or the import fails (a mm-vs-m mistake gives 1000x off).
-inline constexpr double kMinEyeSize = 1e-3;  // [m]
-inline constexpr double kMaxEyeSize = 0.1;   // [m]
+// in [kMinEyeSize, kMaxEyeSize] or the import fails (a mm-vs-m mistake gives 1000x off). Eyes
+// are 20-30 mm long, 15 mm in nanophthalmos and up to 36 mm in high myopia (the protocol's
+// eye.axial_length range): 10-50 mm leaves a margin both ways and refuses a 1 mm "cavity" (a few
+// particles) and a mesh in m read as mm.
+inline constexpr double kMinEyeSize = 10e-3;  // [m]
+inline constexpr double kMaxEyeSize = 50e-3;  // [m]
 
 // Throws MeshError (file name, what is wrong, how to fix) for: missing or empty file, unknown
 // format, unreadable content, no triangles, NaN/infinite coordinates, implausible size.

@@ -11,6 +11,19 @@ namespace protocols {
 
 namespace {
 
+// Why `path` cannot be a mesh file, in words ("" when it is a regular file): a directory, a device
+// such as /dev/zero or a symbolic link loop each get their own words, not "not found".
+std::string meshPathProblem(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) return "file not found";
+  if (ec) return "cannot be opened: " + ec.message();
+  if (fs::is_directory(status)) return "is a directory, not a mesh file";
+  if (!fs::is_regular_file(status)) return "is not a regular file (a device, pipe or socket)";
+  return {};
+}
+
 using Table = TomlValueReader::Table;
 
 constexpr double kStandardGravity = 9.80665;   // [m/s^2] CGPM 1901
@@ -150,10 +163,9 @@ void ProtocolParser::readEye(const Table& root, Protocol& p) {
         const std::string_view unit = parameterSpec("eye.mesh_units").choices[meshUnits->value];
         m.units = {std::string(unit), meshUnits->where};
         m.metresPerUnit = findUnit(unit)->toSi;
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(m.path.value, ec))
+        if (const std::string problem = meshPathProblem(m.path.value); !problem.empty())
           reader_.error(
-              meshPath->where, "eye.mesh file not found: " + m.path.value.string(),
+              meshPath->where, "eye.mesh " + problem + ": " + m.path.value.string(),
               "the path is relative to the protocol file's folder (" +
                   (file_.parent_path().empty() ? std::string(".") : file_.parent_path().string()) +
                   ")");
