@@ -77,6 +77,10 @@ struct ReportInput {
   // Elastic tissue (issue 7), one sentence each: the decision, maximum displacements, the cavity
   // volume change; one line ("tissue rigid (estimate ...)") when no tissue is elastic.
   std::vector<std::string> tissue;
+  // A run read back after it was stopped (Ctrl-C, a kill) before the end of its schedule: the
+  // report's headline says so, and every mean is over the part simulated only.
+  bool incomplete = false;
+  double scheduledDuration = 0.0;  // [s] the schedule's full length (set when incomplete)
 };
 
 }  // namespace protocols

@@ -38,6 +38,7 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
   addLimit(pipeline.solver().name(), pipeline.solver().maxTimeStep(world));
   for (const auto& e : pipeline.effects()) addLimit(e->name(), e->maxTimeStep(world));
   const sim::TimeStepInfo first = pipeline.chooseTimeStep(world);
+  requireStartTimeStep(s, first);
   plan.firstTimeStep = first.dt;
   plan.timeStepLimitedBy = first.limitedBy;
   pipeline.step(world);
