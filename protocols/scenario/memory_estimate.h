@@ -23,11 +23,19 @@ struct MemoryEstimate {
 };
 
 // The estimate for a cavity of `volume` [m^3] and wall `area` [m^2] at spacing `d` [m].
-MemoryEstimate estimateMemory(double volume, double area, double d);
+// `withTissue`: the protocol has a sclera or orbital fat table, whose particles, shells and bony
+// orbit the cavity does not show (kTissueFactor in memory_estimate.cpp).
+MemoryEstimate estimateMemory(double volume, double area, double d, bool withTissue = false);
 
 // The smallest spacing [m] (to 1 %) whose estimate stays within `limitBytes`; a finer one does
 // not fit. Rounded up to 0.01 mm so that it can be written into a protocol as printed.
-double smallestSpacingWithin(double volume, double area, double limitBytes);
+double smallestSpacingWithin(double volume, double area, double limitBytes,
+                             bool withTissue = false);
+
+// This process's peak resident size so far [B] (/proc/self/status VmHWM); nothing where that
+// cannot be read. `plan` reports it after assembling and stepping the scene: a run of the same
+// scene peaked 3-10 % above it (tiny.toml at 0.5 and 0.8 mm, paper_sclera_10kpa.toml at 1.2 mm).
+std::optional<double> peakResidentBytes();
 
 // What this process may use [B]: the smaller of the memory the kernel reports available
 // (/proc/meminfo MemAvailable) and the address-space and data limits (ulimit -v, -d); nothing

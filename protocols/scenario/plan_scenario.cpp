@@ -56,6 +56,7 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
     fastest = std::min(fastest, seconds);
   }
   plan.calibrationSteps = options.calibrationSteps;
+  plan.peakResidentBytes = peakResidentBytes().value_or(0.0);
   plan.rejectedSteps = pipeline.rejectedSteps() - rejectedBefore;
   plan.secondsPerParticleStep =
       (options.calibrationSteps > 0 ? fastest : 0.0) /

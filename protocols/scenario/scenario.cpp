@@ -113,9 +113,11 @@ std::string gibibytes(double bytes) { return formatNumber(bytes / 1073741824.0, 
 
 // Refuses, before anything is allocated, a spacing whose scene would not fit in memory.
 void checkMemory(const Protocol& p, const ScenarioOptions& options, Scenario& s, double d) {
-  s.memory = estimateMemory(s.cavityVolume, s.cavityArea, d);
+  const bool tissue = p.eye.sclera.has_value() || p.eye.orbitalFat.has_value();
+  s.memory = estimateMemory(s.cavityVolume, s.cavityArea, d, tissue);
   if (!options.memoryLimit || s.memory.bytes <= *options.memoryLimit) return;
-  const double fits = smallestSpacingWithin(s.cavityVolume, s.cavityArea, *options.memoryLimit);
+  const double fits =
+      smallestSpacingWithin(s.cavityVolume, s.cavityArea, *options.memoryLimit, tissue);
   fail(spacingSource(p),
        "particle spacing " + formatNumber(d * 1e3, 3) + " mm needs about " +
            gibibytes(s.memory.bytes) + " (" + formatNumber(s.memory.fluidParticles, 3) +
