@@ -69,6 +69,7 @@ class ProtocolParser {
 
   void readEye(const Table& root, Protocol& p);
   RetinalBreak readBreak(const Table& t);
+  void checkMeshEye(const EyeSpec& e);
   std::optional<TissueSpec> readTissue(const Table& eye, std::string_view key, bool isSclera);
   void readTamponade(const Table& root, Protocol& p);
   void readSchedule(const Table& root, Protocol& p);
@@ -188,6 +189,27 @@ void ProtocolParser::readEye(const Table& root, Protocol& p) {
                       "give each break its own name: the report lists coverage per break");
   e.sclera = readTissue(*eye, "sclera", true);
   e.orbitalFat = readTissue(*eye, "orbital_fat", false);
+  if (kind && e.kind.value == EyeKind::kMesh) checkMeshEye(e);
+}
+
+// What an imported mesh cannot carry, found by validate rather than at assembly: breaks are
+// placed by clinical coordinates and elastic tissue is sampled from the anatomy, neither of which
+// a mesh has (scenario.cpp and tissue_particles.cpp refuse the same at assembly).
+void ProtocolParser::checkMeshEye(const EyeSpec& e) {
+  if (!e.breaks.empty())
+    reader_.error(e.breaks.front().where,
+                  "retinal break '" + e.breaks.front().name.value +
+                      "' on an imported mesh cavity (kind = \"mesh\")",
+                  "breaks are placed by clinical coordinates, which need a parametric eye (kind "
+                  "= \"emmetropic\", \"myopic\" or \"staphyloma\"); remove the breaks or use one");
+  for (const std::optional<TissueSpec>* tissue : {&e.sclera, &e.orbitalFat})
+    if (*tissue && (*tissue)->mode.value == TissueMode::kElastic)
+      reader_.error((*tissue)->mode.where,
+                    std::string("mode = \"elastic\" for the ") +
+                        (tissue == &e.sclera ? "sclera" : "orbital fat") +
+                        " on an imported mesh cavity, which has no anatomy to sample it from",
+                    "use a parametric eye (kind = \"emmetropic\", \"myopic\" or \"staphyloma\") "
+                    "or set mode = \"rigid\"");
 }
 
 RetinalBreak ProtocolParser::readBreak(const Table& t) {
