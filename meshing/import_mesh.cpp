@@ -23,13 +23,18 @@ namespace meshing {
 LengthUnit parseLengthUnit(std::string_view text) {
   if (text == "mm") return LengthUnit::millimetre;
   if (text == "m") return LengthUnit::metre;
-  throw MeshError("units", "unknown length unit '" + std::string(text) + "'", "use 'mm' or 'm'");
+  if (text == "cm") return LengthUnit::centimetre;
+  if (text == "um") return LengthUnit::micrometre;
+  throw MeshError("units", "unknown length unit '" + std::string(text) + "'",
+                  "use 'mm' or 'm' (or 'cm', 'um')");
 }
 
 const char* toString(LengthUnit unit) {
   switch (unit) {
     case LengthUnit::millimetre: return "mm";
     case LengthUnit::metre: return "m";
+    case LengthUnit::centimetre: return "cm";
+    case LengthUnit::micrometre: return "um";
     case LengthUnit::unknown: break;
   }
   return "unknown";
@@ -39,6 +44,8 @@ double metresPer(LengthUnit unit) {
   switch (unit) {
     case LengthUnit::millimetre: return 1e-3;
     case LengthUnit::metre: return 1.0;
+    case LengthUnit::centimetre: return 1e-2;
+    case LengthUnit::micrometre: return 1e-6;
     case LengthUnit::unknown: break;
   }
   throw MeshError("units", "no length unit given", "declare mm or m");

@@ -12,12 +12,14 @@
 
 namespace meshing {
 
-enum class LengthUnit { unknown, millimetre, metre };
+// The units a mesh may be declared in: those of the protocol's eye.mesh_units (m, cm, mm, um).
+enum class LengthUnit { unknown, millimetre, metre, centimetre, micrometre };
 
-// "mm" / "m" -> the unit; anything else throws MeshError saying which spellings are accepted.
+// "m", "cm", "mm", "um" -> the unit; anything else throws MeshError saying which spellings are
+// accepted.
 LengthUnit parseLengthUnit(std::string_view text);
-const char* toString(LengthUnit unit);  // "mm", "m" or "unknown"
-double metresPer(LengthUnit unit);      // 1e-3, 1, or throws for unknown
+const char* toString(LengthUnit unit);  // "mm", "m", "cm", "um" or "unknown"
+double metresPer(LengthUnit unit);      // 1e-3, 1, 1e-2, 1e-6, or throws for unknown
 
 struct ImportResult {
   TriangleMesh mesh;                      // [m]

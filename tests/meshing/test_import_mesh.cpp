@@ -64,6 +64,13 @@ TEST_CASE("units: declared, guessed from size with a warning", "[unit][import]")
   CHECK(m.unit == LengthUnit::metre);
   CHECK_THAT(m.warnings.at(0), Catch::Contains("assumed m "));
   CHECK(measureMesh(m.mesh).size() == Approx(0.024).epsilon(1e-6));
+  // The protocol's mesh_units also take cm and um (they passed validate and failed at assembly).
+  writeMesh(sphere, dir.file("cm.obj"), 100.0);
+  CHECK(measureMesh(importMesh(dir.file("cm.obj"), parseLengthUnit("cm")).mesh).size() ==
+        Approx(0.024).epsilon(1e-6));
+  writeMesh(sphere, dir.file("um.obj"), 1e6);
+  CHECK(measureMesh(importMesh(dir.file("um.obj"), parseLengthUnit("um")).mesh).size() ==
+        Approx(0.024).epsilon(1e-6));
   CHECK(parseLengthUnit("mm") == LengthUnit::millimetre);
   CHECK_THROWS_WITH(parseLengthUnit("inch"), Catch::Contains("use 'mm' or 'm'"));
 }
