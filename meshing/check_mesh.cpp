@@ -198,6 +198,14 @@ void selectComponent(TriangleMesh& m, std::vector<int>& origin,
       std::max_element(areaOf.begin(), areaOf.end(), [](const auto& a, const auto& b) {
         return a.second < b.second;
       })->first;
+  // Debris next to the cavity (a speck, a loose lens surface) is removed; two components of
+  // similar size (a tie, or two shells such as two overlapping spheres) leave no way to tell
+  // which one is the cavity.
+  constexpr double kSimilarArea = 0.5;  // [1] second-largest over largest at which we refuse
+  double secondArea = 0.0;              // [m^2 or file units^2]
+  for (const auto& [root, area] : areaOf)
+    if (root != largest) secondArea = std::max(secondArea, area);
+  const bool ambiguous = secondArea >= kSimilarArea * areaOf[largest];
   std::ostringstream others;
   int listed = 0;
   for (const auto& [root, area] : areaOf) {
@@ -210,6 +218,14 @@ void selectComponent(TriangleMesh& m, std::vector<int>& origin,
   if (!options.keepLargestComponent) {
     report.refusals.push_back("the mesh has " + what + " (other than the largest: " + others.str() +
                               "); export only the cavity surface or allow keeping the largest");
+    return;
+  }
+  if (ambiguous) {
+    report.refusals.push_back(
+        "the mesh has " + what + " of similar size (the second has " +
+        std::to_string(static_cast<int>(std::lround(100 * secondArea / areaOf[largest]))) +
+        " % of the largest one's area: " + others.str() +
+        "), so which one is the cavity is unclear; export only the cavity surface");
     return;
   }
   std::vector<char> keep(m.faces.size());
@@ -417,6 +433,18 @@ MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options)
   // Phase 4: outward orientation. Closed, consistent, not self-intersecting: the sign of the
   // enclosed volume says whether the normals point out.
   MeshMeasures measures = measureMesh(m);
+  // A closed surface of collapsed (flat or zero-area) faces encloses nothing: a sphere has
+  // |V| / A^1.5 = 0.094, so 1e-6 only catches surfaces that are flat to rounding.
+  constexpr double kFlatRatio = 1e-6;  // [1]
+  if (!(std::abs(measures.signedVolume) > kFlatRatio * std::pow(measures.area, 1.5))) {
+    std::ostringstream sizes;
+    sizes.precision(3);
+    sizes << "area " << measures.area << ", volume " << measures.signedVolume;
+    report.refusals.push_back("the surface encloses no volume (" + sizes.str() +
+                              ": its faces are flat or collapsed); export the cavity as a closed "
+                              "surface around its volume");
+    return report;
+  }
   if (measures.signedVolume < 0) {
     for (Triangle& t : m.faces) std::swap(t[1], t[2]);
     measures.signedVolume = -measures.signedVolume;

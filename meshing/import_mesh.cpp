@@ -8,8 +8,10 @@
 #include <array>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 #include <unordered_map>
 
@@ -21,13 +23,18 @@ namespace meshing {
 LengthUnit parseLengthUnit(std::string_view text) {
   if (text == "mm") return LengthUnit::millimetre;
   if (text == "m") return LengthUnit::metre;
-  throw MeshError("units", "unknown length unit '" + std::string(text) + "'", "use 'mm' or 'm'");
+  if (text == "cm") return LengthUnit::centimetre;
+  if (text == "um") return LengthUnit::micrometre;
+  throw MeshError("units", "unknown length unit '" + std::string(text) + "'",
+                  "use 'mm' or 'm' (or 'cm', 'um')");
 }
 
 const char* toString(LengthUnit unit) {
   switch (unit) {
     case LengthUnit::millimetre: return "mm";
     case LengthUnit::metre: return "m";
+    case LengthUnit::centimetre: return "cm";
+    case LengthUnit::micrometre: return "um";
     case LengthUnit::unknown: break;
   }
   return "unknown";
@@ -37,12 +44,17 @@ double metresPer(LengthUnit unit) {
   switch (unit) {
     case LengthUnit::millimetre: return 1e-3;
     case LengthUnit::metre: return 1.0;
+    case LengthUnit::centimetre: return 1e-2;
+    case LengthUnit::micrometre: return 1e-6;
     case LengthUnit::unknown: break;
   }
   throw MeshError("units", "no length unit given", "declare mm or m");
 }
 
 namespace {
+
+constexpr std::uintmax_t kLargestMeshFile = std::uintmax_t{1} << 30;  // [B] 1 GiB
+constexpr std::size_t kLargestPlyHeader = 64 * 1024;                  // [B]
 
 struct Vec3BitsHash {
   size_t operator()(const std::array<double, 3>& p) const {
@@ -99,6 +111,62 @@ void collectNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& pa
     collectNode(scene, *node.mChildren[c], transform, out);
 }
 
+// A path assimp may open: an existing, non-empty regular file of bounded size (a directory, a
+// device such as /dev/zero or a pipe would be read forever or fail with a misleading message).
+void checkMeshFile(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found)
+    throw MeshError(path, "file not found", "check the path and the working directory");
+  if (ec)
+    throw MeshError(path, "cannot open: " + ec.message(),
+                    "check the path (a symbolic link that points to itself? permissions?)");
+  if (fs::is_directory(status))
+    throw MeshError(path, "is a directory, not a mesh file",
+                    "give the path of a .stl/.obj/.ply/.off file");
+  if (!fs::is_regular_file(status))
+    throw MeshError(path, "is not a regular file (a device, pipe or socket)",
+                    "give the path of a .stl/.obj/.ply/.off file saved on disk");
+  const std::uintmax_t bytes = fs::file_size(path, ec);
+  if (ec) throw MeshError(path, "cannot read its size: " + ec.message(), "check the file");
+  if (bytes == 0)
+    throw MeshError(path, "file is empty (0 bytes)",
+                    "re-export the mesh; the write probably failed");
+  if (bytes > kLargestMeshFile)
+    throw MeshError(path,
+                    "file is " + std::to_string(bytes >> 20) + " MiB, more than the " +
+                        std::to_string(kLargestMeshFile >> 20) + " MiB an eye mesh needs",
+                    "decimate the mesh (an eye cavity needs some 1e4-1e5 triangles)");
+}
+
+// Headers assimp's readers do not bound: an ASCII PLY without `end_header` makes assimp 5.2's
+// PLY reader loop forever, so a PLY must start with "ply" and end its header within the first
+// kLargestPlyHeader bytes.
+void checkFormatHeader(const std::string& path) {
+  if (lowerExtension(path) != ".ply") return;
+  std::ifstream in(path, std::ios::binary);
+  std::string head(kLargestPlyHeader, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  if (!head.starts_with("ply"))
+    throw MeshError(path, "cannot read the file as a mesh: it does not start with 'ply'",
+                    "check that it is a PLY export, not another format renamed");
+  std::istringstream lines(head);
+  std::string line;
+  std::size_t consumed = 0;
+  while (std::getline(lines, line)) {
+    consumed += line.size() + 1;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line == "end_header" && consumed <= head.size()) return;
+  }
+  throw MeshError(path,
+                  "cannot read the file as a mesh: its PLY header has no 'end_header' line "
+                  "within the first " +
+                      std::to_string(kLargestPlyHeader / 1024) + " KiB",
+                  "the file is truncated or not a PLY file: re-export it");
+}
+
 }  // namespace
 
 int joinIdenticalVertices(TriangleMesh& mesh) {
@@ -127,16 +195,8 @@ int joinIdenticalVertices(TriangleMesh& mesh) {
 }
 
 ImportResult importMesh(const std::string& path, LengthUnit unit) {
-  namespace fs = std::filesystem;
-  std::error_code ec;
-  if (!fs::exists(path, ec))
-    throw MeshError(path, "file not found", "check the path and the working directory");
-  if (fs::is_directory(path, ec))
-    throw MeshError(path, "is a directory, not a mesh file",
-                    "give the path of a .stl/.obj/.ply/.off file");
-  if (fs::file_size(path, ec) == 0)
-    throw MeshError(path, "file is empty (0 bytes)",
-                    "re-export the mesh; the write probably failed");
+  checkMeshFile(path);
+  checkFormatHeader(path);
 
   Assimp::Importer importer;
   const std::string ext = lowerExtension(path);

@@ -12,12 +12,14 @@
 
 namespace meshing {
 
-enum class LengthUnit { unknown, millimetre, metre };
+// The units a mesh may be declared in: those of the protocol's eye.mesh_units (m, cm, mm, um).
+enum class LengthUnit { unknown, millimetre, metre, centimetre, micrometre };
 
-// "mm" / "m" -> the unit; anything else throws MeshError saying which spellings are accepted.
+// "m", "cm", "mm", "um" -> the unit; anything else throws MeshError saying which spellings are
+// accepted.
 LengthUnit parseLengthUnit(std::string_view text);
-const char* toString(LengthUnit unit);  // "mm", "m" or "unknown"
-double metresPer(LengthUnit unit);      // 1e-3, 1, or throws for unknown
+const char* toString(LengthUnit unit);  // "mm", "m", "cm", "um" or "unknown"
+double metresPer(LengthUnit unit);      // 1e-3, 1, 1e-2, 1e-6, or throws for unknown
 
 struct ImportResult {
   TriangleMesh mesh;                      // [m]
@@ -28,9 +30,12 @@ struct ImportResult {
 };
 
 // Plausible size of an eye cavity after unit conversion: the largest bounding-box extent must lie
-// in [kMinEyeSize, kMaxEyeSize] or the import fails (a mm-vs-m mistake gives 1000x off).
-inline constexpr double kMinEyeSize = 1e-3;  // [m]
-inline constexpr double kMaxEyeSize = 0.1;   // [m]
+// in [kMinEyeSize, kMaxEyeSize] or the import fails (a mm-vs-m mistake gives 1000x off). Eyes
+// are 20-30 mm long, 15 mm in nanophthalmos and up to 36 mm in high myopia (the protocol's
+// eye.axial_length range): 10-50 mm leaves a margin both ways and refuses a 1 mm "cavity" (a few
+// particles) and a mesh in m read as mm.
+inline constexpr double kMinEyeSize = 10e-3;  // [m]
+inline constexpr double kMaxEyeSize = 50e-3;  // [m]
 
 // Throws MeshError (file name, what is wrong, how to fix) for: missing or empty file, unknown
 // format, unreadable content, no triangles, NaN/infinite coordinates, implausible size.

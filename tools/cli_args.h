@@ -7,6 +7,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 namespace tools {
@@ -38,6 +39,41 @@ inline double parsePositive(const std::string& text, const char* option) {
   if (used != text.size() || !(value > 0) || !std::isfinite(value))
     throw UsageError(std::string(option) + " '" + text + "' must be a positive number");
   return value;
+}
+
+// The whole of `text` as an integer > 0, or a UsageError naming `option` ("abc", "12x", "0" and
+// values beyond long are refused, where atol would read them as 0 or wrap).
+inline long parsePositiveInteger(const std::string& text, const char* option) {
+  std::size_t used = 0;
+  long value = 0;
+  try {
+    value = std::stol(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (text.empty() || used != text.size() || value < 1)
+    throw UsageError(std::string(option) + " '" + text + "' must be a positive whole number");
+  return value;
+}
+
+// A memory size with its unit, "512 MiB", "8GiB", "2 GB", as bytes; a UsageError naming `option`
+// for anything else (a bare number is refused: MB and MiB differ by 5 %).
+inline double parseMemorySize(const std::string& text, const char* option) {
+  std::size_t used = 0;
+  double value = 0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  std::string unit = used > 0 ? text.substr(used) : std::string();
+  if (!unit.empty() && unit.front() == ' ') unit.erase(0, 1);
+  const std::pair<const char*, double> units[] = {
+      {"MiB", 1048576.0}, {"GiB", 1073741824.0}, {"MB", 1e6}, {"GB", 1e9}};
+  for (const auto& [name, bytes] : units)
+    if (used > 0 && unit == name && value > 0 && std::isfinite(value)) return value * bytes;
+  throw UsageError(std::string(option) + " '" + text +
+                   "' must be a positive size with a unit: MiB, GiB, MB or GB (e.g. 4 GiB)");
 }
 
 }  // namespace tools

@@ -14,6 +14,7 @@
 #include "protocols/scenario/plan_scenario.h"
 #include "sim/core/error.h"
 #include "tools/accuracy_option.h"
+#include "tools/cli_args.h"
 #include "tools/commands.h"
 #include "tools/protocol_error_print.h"
 
@@ -21,10 +22,12 @@ namespace tools {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: tamponade plan PROTOCOL.toml [--accuracy draft|standard|fine]\n\n"
+    "usage: tamponade plan PROTOCOL.toml [--accuracy draft|standard|fine] [--max-memory SIZE]\n\n"
     "Assembles the scenario without running it and prints the particle counts per material, the\n"
     "pipeline stages and why each is there, the memory, and an estimated run time per accuracy\n"
     "preset (cost model calibrated by a few steps of this scene on this machine). Writes nothing.\n"
+    "A scene whose estimated memory exceeds what the machine has available (or --max-memory,\n"
+    "e.g. 4 GiB) is refused before anything is allocated, with the spacing that would fit.\n"
     "Bad protocols: every problem as file:line:column, exit code 2.\n";
 
 std::string megabytes(std::size_t bytes) {
@@ -77,6 +80,13 @@ int runPlan(Args args) {
       options.accuracy = tools::parseAccuracyOption("plan", args[k + 1]);
       if (!options.accuracy) return 2;
       ++k;
+    } else if (args[k] == "--max-memory" && k + 1 < args.size()) {
+      try {
+        options.memoryLimit = parseMemorySize(std::string(args[++k]), "--max-memory");
+      } catch (const UsageError& e) {
+        std::fprintf(stderr, "tamponade plan: %s\n", e.what());
+        return 2;
+      }
     } else if (!args[k].starts_with("-") && file.empty()) {
       file = std::string(args[k]);
     } else {
@@ -88,6 +98,7 @@ int runPlan(Args args) {
     std::fputs(kUsage, stderr);
     return 2;
   }
+  if (!options.memoryLimit) options.memoryLimit = protocols::machineMemoryLimit();
   try {
     const protocols::Protocol protocol = protocols::parseProtocol(file);
     protocols::Scenario scenario = protocols::assembleScenario(protocol, options);
@@ -142,9 +153,19 @@ int runPlan(Args args) {
           protocols::formatNumber(*tamponade.contactAngleThroughAqueous, 3).c_str(),
           protocols::formatNumber(180.0 - *tamponade.contactAngleThroughAqueous, 3).c_str());
     std::printf("\n%s\n", plan.pipeline.c_str());
-    std::printf("memory: %s (particle fields %s, wall fields %s, neighbour lists %s)\n\n",
-                megabytes(plan.totalBytes()).c_str(), megabytes(plan.particleFieldBytes).c_str(),
-                megabytes(plan.wallFieldBytes).c_str(), megabytes(plan.neighborListBytes).c_str());
+    // The measured peak covers everything assembly and stepping allocate; the estimate is what
+    // was checked against the memory limit before anything was allocated.
+    const double peak = plan.peakResidentBytes > 0 ? plan.peakResidentBytes : scenario.memory.bytes;
+    std::printf(
+        "memory: %s, the peak of assembling and stepping this scene (a run peaks up to ~10 %% "
+        "higher);"
+        " estimated before assembly %s for %s fluid particles; at the start: particle fields %s, "
+        "wall fields %s, neighbour lists %s\n\n",
+        megabytes(static_cast<std::size_t>(peak)).c_str(),
+        megabytes(static_cast<std::size_t>(scenario.memory.bytes)).c_str(),
+        protocols::formatNumber(scenario.memory.fluidParticles, 3).c_str(),
+        megabytes(plan.particleFieldBytes).c_str(), megabytes(plan.wallFieldBytes).c_str(),
+        megabytes(plan.neighborListBytes).c_str());
     std::printf(
         "cost model: calibrated by %d steps of this scene (%zu dynamic particles) on %d "
         "thread%s after one warm-up step, %s s in all; the fastest step gives %s s per "

@@ -15,10 +15,12 @@
 
 #include "protocols/equilibrium/run_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
+#include "protocols/io/io_error.h"
 #include "protocols/report/report_format.h"
 #include "protocols/scenario/rebuild_report.h"
 #include "protocols/scenario/run_scenario.h"
 #include "tools/accuracy_option.h"
+#include "tools/cli_args.h"
 #include "tools/commands.h"
 #include "tools/progress_printer.h"
 #include "tools/protocol_error_print.h"
@@ -29,7 +31,8 @@ namespace {
 constexpr const char* kUsage =
     "usage: tamponade run PROTOCOL.toml [--out DIR] [--accuracy draft|standard|fine] [--threads "
     "N]\n"
-    "       tamponade run --resume DIR [--threads N]\n\n"
+    "                     [--max-memory SIZE]\n"
+    "       tamponade run --resume DIR [--threads N] [--max-memory SIZE]\n\n"
     "Runs the protocol: frames.h5 + frames.xmf (ParaView), the coverage time series, and\n"
     "report.html, coverage.csv, summary.json in the output folder (default: the protocol's\n"
     "outputs.folder). Checkpoints go to DIR/checkpoint.h5 every 1024 steps and on Ctrl-C or\n"
@@ -39,6 +42,8 @@ constexpr const char* kUsage =
     "Exit codes: 0 done; 2 bad protocol or usage (file:line:column, nothing created); 1 the run\n"
     "failed; 130 stopped by Ctrl-C (SIGINT), 143 stopped by SIGTERM (128 + signal number, the\n"
     "shell convention), each after writing the checkpoint.\n"
+    "A scene whose estimated memory exceeds what the machine has available (or --max-memory,\n"
+    "e.g. 4 GiB) is refused before anything is allocated, with the spacing that would fit.\n"
     "(--stop-after-steps N stops as if interrupted at step N and exits 1: for tests.)\n";
 
 // Set by SIGINT/SIGTERM; the run checkpoints and stops at its next checkpointable step.
@@ -72,6 +77,33 @@ int runEquilibrium(const protocols::Protocol& protocol, protocols::Scenario& sce
   return 0;
 }
 
+// Creates the output folder; why it cannot be used, in words ("" when it can): a file in its
+// place, a parent that is a file, no permission (std::filesystem's own message would name neither
+// the fix nor the option).
+std::string outputFolderProblem(const std::filesystem::path& folder) {
+  std::error_code ec;
+  if (std::filesystem::exists(folder, ec) && !std::filesystem::is_directory(folder, ec))
+    return "exists and is not a folder — choose another --out (or outputs.folder) or remove it";
+  std::filesystem::create_directories(folder, ec);
+  if (ec)
+    return "cannot be created: " + ec.message() +
+           " — choose another --out (or outputs.folder) where you may write";
+  return {};
+}
+
+// What to do about a folder that holds a run already (it may still be running: two runs never
+// share a folder, so nothing is removed here).
+std::string occupiedFolderAdvice(const std::filesystem::path& folder) {
+  if (std::filesystem::exists(folder / "checkpoint.h5"))
+    return "if it was stopped, continue it with tamponade run --resume " + folder.string() +
+           "; otherwise choose another --out or remove the folder";
+  if (!std::filesystem::exists(folder / "summary.json"))
+    return "it has no checkpoint, so it cannot be resumed (stopped before its first one, or "
+           "still running): remove frames.h5 and frames.xmf from it to run into it again, or "
+           "choose another --out";
+  return "choose another --out or remove it";
+}
+
 int usage() {
   std::fputs(kUsage, stderr);
   return 2;
@@ -95,7 +127,19 @@ int runRun(Args args) {
     } else if (args[k] == "--resume" && hasValue) {
       resume = std::string(args[++k]);
     } else if (args[k] == "--stop-after-steps" && hasValue) {
-      stopAfter = std::atol(std::string(args[++k]).c_str());
+      try {
+        stopAfter = parsePositiveInteger(std::string(args[++k]), "--stop-after-steps");
+      } catch (const UsageError& e) {
+        std::fprintf(stderr, "tamponade run: %s\n", e.what());
+        return 2;
+      }
+    } else if (args[k] == "--max-memory" && hasValue) {
+      try {
+        options.memoryLimit = parseMemorySize(std::string(args[++k]), "--max-memory");
+      } catch (const UsageError& e) {
+        std::fprintf(stderr, "tamponade run: %s\n", e.what());
+        return 2;
+      }
     } else if (args[k] == "--threads" && hasValue) {
       try {
         threads = std::stoi(std::string(args[++k]));
@@ -121,11 +165,17 @@ int runRun(Args args) {
 #ifdef _OPENMP
   if (threads > 0) omp_set_num_threads(threads);
 #endif
+  if (!options.memoryLimit) options.memoryLimit = protocols::machineMemoryLimit();
   try {
     if (!resume.empty() &&
         !std::filesystem::exists(std::filesystem::path(resume) / "checkpoint.h5")) {
-      std::fprintf(stderr, "tamponade run: %s has no checkpoint.h5 to resume from\n",
-                   resume.c_str());
+      const bool started = std::filesystem::exists(std::filesystem::path(resume) / "frames.h5");
+      std::fprintf(stderr, "tamponade run: %s has no checkpoint.h5 to resume from%s\n",
+                   resume.c_str(),
+                   started ? ": the run stopped before its first checkpoint (every 1024 steps and "
+                             "on Ctrl-C or SIGTERM); run the protocol again after removing "
+                             "frames.h5 and frames.xmf from the folder"
+                           : "; give the folder of a stopped run");
       return 2;
     }
     const protocols::Protocol protocol = resume.empty()
@@ -136,13 +186,15 @@ int runRun(Args args) {
                                        : out.empty()   ? protocol.outputs.folder.value
                                                        : out);
     if (resume.empty() && std::filesystem::exists(folder / "frames.h5")) {
-      std::fprintf(stderr,
-                   "tamponade run: %s already holds a run (frames.h5); choose another --out "
-                   "or remove it\n",
-                   folder.string().c_str());
+      std::fprintf(stderr, "tamponade run: %s already holds a run (frames.h5); %s\n",
+                   folder.string().c_str(), occupiedFolderAdvice(folder).c_str());
       return 2;
     }
-    std::filesystem::create_directories(folder);
+    if (const std::string problem = outputFolderProblem(folder); !problem.empty()) {
+      std::fprintf(stderr, "tamponade run: output folder %s %s\n", folder.string().c_str(),
+                   problem.c_str());
+      return 2;
+    }
     // The scenario's notes are about the particle simulation, which an equilibrium run skips.
     if (protocols::isEquilibriumSchedule(scenario))
       return runEquilibrium(protocol, scenario, folder);
@@ -186,6 +238,11 @@ int runRun(Args args) {
     return 0;
   } catch (const protocols::ProtocolError& e) {
     return printProtocolError(e);
+  } catch (const protocols::IoError& e) {
+    if (resume.empty()) throw;  // writing a new run failed: exit 1 (main)
+    // A checkpoint or frames file that does not belong to this run, or is damaged, is bad input.
+    std::fprintf(stderr, "tamponade run: cannot resume: %s\n", e.what());
+    return 2;
   }
 }
 

@@ -23,6 +23,14 @@ constexpr std::array<std::string_view, 1> kFormatVersions = {"1"};
 // a real eye: adult axial lengths 20-30 mm with high myopia up to ~35 mm, scleral thickness
 // 0.4-1.0 mm (Vurgese 2012, reference-data.md 4.4), Poisson ratio of an isotropic stable solid in
 // [0, 0.5) (0.5 = incompressible is singular for the linear elastic model).
+// Durations, intervals and windows (simulated time). Floor: 1 ms, a few time steps at the
+// presets' largest step (0.5-2 ms); a shorter frame interval or steady window would only
+// re-sample every step, and a shorter posture would end inside its first step. Ceiling: one day,
+// about 1e8-1e9 steps: longer is no run this toolkit can finish. Both show in the range column of
+// docs/protocols.md's reference.
+constexpr double kShortestTime = 1e-3;  // [s]
+constexpr double kLongestTime = 86400;  // [s]
+
 // clang-format off
 const ParameterSpec kParameters[] = {
   {.key = "format_version", .kind = K::kInteger, .min = 1, .max = 1, .requirement = R::kRequired,
@@ -140,7 +148,7 @@ const ParameterSpec kParameters[] = {
    .min = 0, .max = 100, .minInclusive = false, .defaultText = "1 g = 9.80665 m/s^2", .example = "\"1 g\"",
    .doc = "Magnitude of gravity."},
   {.key = "schedule.steady_window", .kind = K::kQuantity, .dimension = D::kDuration, .displayUnit = "s",
-   .min = 0, .minInclusive = false, .defaultText = "0.5 s", .example = "\"2 s\"",
+   .min = kShortestTime, .max = kLongestTime, .defaultText = "0.5 s", .example = "\"2 s\"",
    .doc = "\"until steady\": simulated time over which the flow must have stayed calm and every region's coverage flat."},
   {.key = "schedule.steady_coverage_change", .kind = K::kQuantity, .dimension = D::kFraction, .min = 0, .max = 1,
    .minInclusive = false, .defaultText = "0.5 %", .example = "\"0.2 %\"",
@@ -156,10 +164,10 @@ const ParameterSpec kParameters[] = {
   {.key = "schedule.postures.label", .kind = K::kString, .defaultText = "the name, or \"custom\"",
    .example = "\"reclined 45 deg\"", .doc = "Label of the posture in the report."},
   {.key = "schedule.postures.duration", .kind = K::kDurationOrSteady, .dimension = D::kDuration,
-   .displayUnit = "s", .min = 0, .minInclusive = false, .requirement = R::kRequired, .example = "\"10 min\"",
+   .displayUnit = "s", .min = kShortestTime, .max = kLongestTime, .requirement = R::kRequired, .example = "\"10 min\"",
    .doc = "How long the posture is held, \"until steady\" (simulated until the coverage stops changing), or \"equilibrium\" (the static equilibrium of the posture, computed directly in seconds; docs/methods/equilibrium.md)."},
   {.key = "schedule.postures.max_duration", .kind = K::kQuantity, .dimension = D::kDuration, .displayUnit = "s",
-   .min = 0, .minInclusive = false, .requirement = R::kConditional, .condition = "only with duration = \"until steady\"",
+   .min = kShortestTime, .max = kLongestTime, .requirement = R::kConditional, .condition = "only with duration = \"until steady\"",
    .defaultText = "10 min", .example = "\"30 min\"", .doc = "Upper bound on an \"until steady\" posture."},
 
   {.key = "effects", .kind = K::kTable, .defaultText = "all inferred",
@@ -183,7 +191,7 @@ const ParameterSpec kParameters[] = {
    .example = "\"draft\"", .doc = "draft / standard / fine: spacing, tolerance and time-step bounds (table above)."},
   {.key = "accuracy.particle_spacing", .kind = K::kQuantity, .dimension = D::kLength, .displayUnit = "mm",
    .min = 0.02e-3, .max = 5e-3, .defaultText = "preset", .example = "\"0.4 mm\"",
-   .doc = "Particle spacing."},
+   .doc = "Particle spacing. `plan` and `run` estimate the memory first and refuse a spacing that needs more than the machine has available (or `--max-memory`), naming the finest that fits."},
   {.key = "accuracy.solver_tolerance", .kind = K::kQuantity, .dimension = D::kFraction, .min = 0, .max = 0.05,
    .minInclusive = false, .defaultText = "preset", .example = "\"0.1 %\"",
    .doc = "Mean relative density error at which the implicit pressure solve (INDSPH, DFSPH, IISPH) stops, within its 100-iteration cap; the report states what it reached. The explicit solvers have none. `tamponade bench accuracy` measures its cost and effect."},
@@ -204,7 +212,7 @@ const ParameterSpec kParameters[] = {
   {.key = "outputs.folder", .kind = K::kString, .defaultText = "runs/<protocol file name>",
    .example = "\"runs/superior_break\"", .doc = "Output folder, relative to the working directory; `tamponade run --out` overrides it."},
   {.key = "outputs.frame_interval", .kind = K::kQuantity, .dimension = D::kDuration, .displayUnit = "s",
-   .min = 0, .minInclusive = false, .defaultText = "1 s", .example = "\"0.5 s\"",
+   .min = kShortestTime, .max = kLongestTime, .defaultText = "1 s", .example = "\"0.5 s\"",
    .doc = "Simulated time between written frames."},
   {.key = "outputs.fields", .kind = K::kStringList, .defaultText = "[\"position\", \"velocity\", \"material\"]",
    .example = "[\"position\", \"velocity\", \"pressure\"]",

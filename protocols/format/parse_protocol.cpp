@@ -12,6 +12,19 @@ namespace protocols {
 
 namespace {
 
+// Why `path` cannot be a mesh file, in words ("" when it is a regular file): a directory, a device
+// such as /dev/zero or a symbolic link loop each get their own words, not "not found".
+std::string meshPathProblem(const std::filesystem::path& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (status.type() == fs::file_type::not_found) return "file not found";
+  if (ec) return "cannot be opened: " + ec.message();
+  if (fs::is_directory(status)) return "is a directory, not a mesh file";
+  if (!fs::is_regular_file(status)) return "is not a regular file (a device, pipe or socket)";
+  return {};
+}
+
 using Table = TomlValueReader::Table;
 
 constexpr double kStandardGravity = 9.80665;   // [m/s^2] CGPM 1901
@@ -57,6 +70,7 @@ class ProtocolParser {
 
   void readEye(const Table& root, Protocol& p);
   RetinalBreak readBreak(const Table& t);
+  void checkMeshEye(const EyeSpec& e);
   std::optional<TissueSpec> readTissue(const Table& eye, std::string_view key, bool isSclera);
   void readTamponade(const Table& root, Protocol& p);
   void readSchedule(const Table& root, Protocol& p);
@@ -153,10 +167,9 @@ void ProtocolParser::readEye(const Table& root, Protocol& p) {
         const std::string_view unit = parameterSpec("eye.mesh_units").choices[meshUnits->value];
         m.units = {std::string(unit), meshUnits->where};
         m.metresPerUnit = findUnit(unit)->toSi;
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(m.path.value, ec))
+        if (const std::string problem = meshPathProblem(m.path.value); !problem.empty())
           reader_.error(
-              meshPath->where, "eye.mesh file not found: " + m.path.value.string(),
+              meshPath->where, "eye.mesh " + problem + ": " + m.path.value.string(),
               "the path is relative to the protocol file's folder (" +
                   (file_.parent_path().empty() ? std::string(".") : file_.parent_path().string()) +
                   ")");
@@ -179,6 +192,27 @@ void ProtocolParser::readEye(const Table& root, Protocol& p) {
                       "give each break its own name: the report lists coverage per break");
   e.sclera = readTissue(*eye, "sclera", true);
   e.orbitalFat = readTissue(*eye, "orbital_fat", false);
+  if (kind && e.kind.value == EyeKind::kMesh) checkMeshEye(e);
+}
+
+// What an imported mesh cannot carry, found by validate rather than at assembly: breaks are
+// placed by clinical coordinates and elastic tissue is sampled from the anatomy, neither of which
+// a mesh has (scenario.cpp and tissue_particles.cpp refuse the same at assembly).
+void ProtocolParser::checkMeshEye(const EyeSpec& e) {
+  if (!e.breaks.empty())
+    reader_.error(e.breaks.front().where,
+                  "retinal break '" + e.breaks.front().name.value +
+                      "' on an imported mesh cavity (kind = \"mesh\")",
+                  "breaks are placed by clinical coordinates, which need a parametric eye (kind "
+                  "= \"emmetropic\", \"myopic\" or \"staphyloma\"); remove the breaks or use one");
+  for (const std::optional<TissueSpec>* tissue : {&e.sclera, &e.orbitalFat})
+    if (*tissue && (*tissue)->mode.value == TissueMode::kElastic)
+      reader_.error((*tissue)->mode.where,
+                    std::string("mode = \"elastic\" for the ") +
+                        (tissue == &e.sclera ? "sclera" : "orbital fat") +
+                        " on an imported mesh cavity, which has no anatomy to sample it from",
+                    "use a parametric eye (kind = \"emmetropic\", \"myopic\" or \"staphyloma\") "
+                    "or set mode = \"rigid\"");
 }
 
 RetinalBreak ProtocolParser::readBreak(const Table& t) {

@@ -311,7 +311,12 @@ std::optional<Located<std::array<double, 3>>> TomlValueReader::direction(const T
     wrongType(t, key, *node, "an array of three numbers [x, y, z]");
     return std::nullopt;
   }
-  const double norm = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+  if (!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2])) {
+    error(where, shownKey(t, key) + " has a NaN or infinite component",
+          "give three finite numbers, e.g. [0, -1, 0] (upright)");
+    return std::nullopt;
+  }
+  const double norm = std::hypot(v[0], v[1], v[2]);  // no overflow for huge components
   if (!(norm > 1e-12) || !std::isfinite(norm)) {
     error(where, shownKey(t, key) + " is a zero vector and has no direction",
           "give the direction gravity pulls in the eye frame, e.g. [0, -1, 0] (upright)");

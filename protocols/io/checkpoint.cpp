@@ -1,7 +1,9 @@
 #include "protocols/io/checkpoint.h"
 
 #include <algorithm>
+#include <bit>
 #include <cstdio>
+#include <cstring>
 #include <set>
 
 #include "protocols/io/field_dataset.h"
@@ -39,6 +41,37 @@ void requireValidName(const std::string& what, const std::string& name, const Pl
                   "use a non-empty name without '/'");
 }
 
+// Word-wise FNV-1a: each 8-byte word (then each remaining byte) is xor-ed in and multiplied by
+// the FNV prime; fast enough for checkpoints of millions of particles.
+class Checksum {
+ public:
+  void add(const void* data, std::size_t bytes) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    std::size_t k = 0;
+    for (; k + 8 <= bytes; k += 8) {
+      std::uint64_t word = 0;
+      std::memcpy(&word, p + k, 8);
+      mix(word);
+    }
+    for (; k < bytes; ++k) mix(p[k]);
+    mix(bytes);  // lengths too, so that moving bytes between items changes the sum
+  }
+  void add(const std::string& text) { add(text.data(), text.size()); }
+  template <class T>
+  void addValue(const T& value) {
+    add(&value, sizeof value);
+  }
+  std::uint64_t value() const { return hash_; }
+
+ private:
+  void mix(std::uint64_t word) { hash_ = (hash_ ^ word) * 1099511628211ull; }
+  std::uint64_t hash_ = 14695981039346656037ull;
+};
+
+std::size_t scalarBytes(sim::ScalarKind kind) {
+  return kind == sim::ScalarKind::kReal ? sizeof(sim::Real) : sizeof(std::int32_t);
+}
+
 void writeContents(hid_t file, const CheckpointState& state, const Place& root) {
   hdf5::writeAttribute(file, "format", std::string(layout::kCheckpointFormat), root);
   hdf5::writeAttribute(file, "format_version", layout::kCheckpointFormatVersion, root);
@@ -46,6 +79,7 @@ void writeContents(hid_t file, const CheckpointState& state, const Place& root) 
   hdf5::writeAttribute(file, "time", state.time, root);
   hdf5::writeAttribute(file, "step", state.step, root);
   hdf5::writeAttribute(file, "dt", state.dt, root);
+  hdf5::writeAttribute(file, "checksum", std::bit_cast<std::int64_t>(contentChecksum(state)), root);
 
   Handle counters = hdf5::openOrCreateGroup(file, "counters", root);
   const Place counterPlace = root.at("counters");
@@ -90,6 +124,42 @@ void writeContents(hid_t file, const CheckpointState& state, const Place& root) 
 }
 
 }  // namespace
+
+std::uint64_t contentChecksum(const CheckpointState& state) {
+  Checksum sum;
+  sum.addValue(state.time);
+  sum.addValue(state.step);
+  sum.addValue(state.dt);
+  for (const auto& [name, value] : state.realCounters) {
+    sum.add(name);
+    sum.addValue(value);
+  }
+  for (const auto& [name, value] : state.integerCounters) {
+    sum.add(name);
+    sum.addValue(value);
+  }
+  for (const auto& [name, bytes] : state.blobs) {
+    sum.add(name);
+    sum.add(bytes.data(), bytes.size());
+  }
+  for (const auto& [name, registry] : state.groups) {
+    sum.add(name);
+    if (registry == nullptr) continue;
+    for (const auto& field : *registry) {
+      if (!field->info().checkpointed) continue;
+      sum.add(field->info().name);
+      sum.add(field->rawData(), field->size() * static_cast<std::size_t>(field->components()) *
+                                    scalarBytes(field->kind()));
+    }
+  }
+  return sum.value();
+}
+
+std::uint64_t textChecksum(const std::string& text) {
+  Checksum sum;
+  sum.add(text);
+  return sum.value();
+}
 
 void writeCheckpoint(const std::filesystem::path& path, const CheckpointState& state) {
   hdf5::silenceErrorPrinting();
@@ -169,6 +239,7 @@ CheckpointState readCheckpoint(const std::filesystem::path& path,
   state.time = hdf5::readDoubleAttribute(file.get(), "time", root);
   state.step = hdf5::readInt64Attribute(file.get(), "step", root);
   state.dt = hdf5::readDoubleAttribute(file.get(), "dt", root);
+  const std::int64_t storedChecksum = hdf5::readInt64Attribute(file.get(), "checksum", root);
   state.groups = restoreInto;
 
   Handle counters = hdf5::openGroup(file.get(), "counters", root);
@@ -268,6 +339,11 @@ CheckpointState readCheckpoint(const std::filesystem::path& path,
         hdf5::restoreFieldDataset(groupHandles[k].get(), *field, place);
     ++k;
   }
+  if (std::bit_cast<std::uint64_t>(storedChecksum) != contentChecksum(state))
+    throw IoError(root.file, "",
+                  "the checkpoint's contents do not match its checksum: it was damaged after it "
+                  "was written",
+                  "start the run afresh (remove the folder or choose another --out)");
   return state;
 }
 

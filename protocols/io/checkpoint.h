@@ -4,14 +4,18 @@
 // new effect is checkpointed without touching this code.
 //
 // Layout of checkpoint.h5:
-//   /                 attributes format = "tamponade-checkpoint", format_version,
-//                     toolkit_version, time [s], step, dt [s]
+//   /                 attributes format = "tamponade-checkpoint", format_version (2),
+//                     toolkit_version, time [s], step, dt [s], checksum (contentChecksum)
 //   /counters         one attribute per counter (float64 or int64)
 //   /blobs/<name>     opaque bytes (uint8), e.g. protocol hash, RNG state
 //   /groups/<g>/<f>   every checkpointed field of group g: rows x components, contiguous
 //
 // Datasets are contiguous and uncompressed: checkpoints are written on Ctrl-C/SIGTERM too, where
 // speed matters more than size, and they are replaced by the next one anyway.
+//
+// The checksum covers time, step, dt, every counter, blob and checkpointed field's bytes: HDF5
+// checksums only its metadata, so a bit flipped in the particle data would otherwise resume as a
+// different run. readCheckpoint refuses a checkpoint whose contents do not match it.
 //
 // Atomic replacement: writeCheckpoint writes <path>.tmp, fsyncs it, renames it over <path> and
 // fsyncs the folder, so a crash at any moment leaves either the previous or the new checkpoint,
@@ -41,6 +45,12 @@ struct CheckpointState {
   std::map<std::string, sim::FieldRegistry*> groups;
 };
 
+// A 64-bit checksum of everything the checkpoint stores for `state` (word-wise FNV-1a: it detects
+// damage, it is not a cryptographic hash).
+std::uint64_t contentChecksum(const CheckpointState& state);
+// The same checksum of a text (e.g. the protocol a checkpoint belongs to).
+std::uint64_t textChecksum(const std::string& text);
+
 // Writes `state` atomically to `path` (conventionally <run folder>/checkpoint.h5). Throws IoError.
 void writeCheckpoint(const std::filesystem::path& path, const CheckpointState& state);
 
@@ -48,7 +58,9 @@ void writeCheckpoint(const std::filesystem::path& path, const CheckpointState& s
 // `restoreInto` (by group name). Every group must exist in the checkpoint with the same particle
 // count, and the checkpointed fields of each registry must be exactly the fields stored for it;
 // otherwise IoError names the group and the missing or extra fields and nothing is restored.
-// Returns the scalars, counters and blobs, with `groups` = `restoreInto`.
+// A checkpoint whose contents do not match its checksum throws IoError (the registries may then
+// hold the damaged values: start afresh). Returns the scalars, counters and blobs, with
+// `groups` = `restoreInto`.
 CheckpointState readCheckpoint(const std::filesystem::path& path,
                                const std::map<std::string, sim::FieldRegistry*>& restoreInto);
 

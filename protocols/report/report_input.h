@@ -88,6 +88,10 @@ struct ReportInput {
   // Postures at their static equilibrium, in schedule order; empty for a simulated run. The
   // report then gives each posture's coverage and fundus map instead of a time course.
   std::vector<ReportEquilibrium> equilibria;
+  // A run read back after it was stopped (Ctrl-C, a kill) before the end of its schedule: the
+  // report's headline says so, and every mean is over the part simulated only.
+  bool incomplete = false;
+  double scheduledDuration = 0.0;  // [s] the schedule's full length (set when incomplete)
 };
 
 }  // namespace protocols

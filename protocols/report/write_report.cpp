@@ -83,7 +83,13 @@ std::string renderReportHtml(const ReportInput& in) {
   s << "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n"
     << "<meta charset=\"utf-8\"/>\n<title>" << escapeXml(in.title) << "</title>\n<style>" << kStyle
     << "</style>\n</head>\n<body>\n";
-  s << "<h1>" << escapeXml(in.title) << "</h1>\n";
+  s << "<h1>" << escapeXml(in.title) << (in.incomplete ? " (incomplete run)" : "") << "</h1>\n";
+  if (in.incomplete)
+    s << "<p><strong>Incomplete run:</strong> it stopped at "
+      << formatNumber(in.summary.duration, 4) << " s of the schedule's "
+      << formatNumber(in.scheduledDuration, 4)
+      << " s, so every figure below covers only the part simulated. Continue it with "
+         "<code>tamponade run --resume</code> on its folder for the whole schedule.</p>\n";
 
   s << "<h2>Scenario</h2>\n";
   for (const auto& p : in.scenario) s << "<p>" << escapeXml(p) << "</p>\n";
@@ -96,10 +102,11 @@ std::string renderReportHtml(const ReportInput& in) {
       << formatPercent(in.frames.back().retina().fraction) << ".</p>\n";
     renderEquilibria(in, s);
   } else if (!in.frames.empty()) {
-    s << "<p>Over the whole schedule (" << formatNumber(in.summary.duration, 4)
-      << " s simulated) oil covered on average <strong>" << formatPercent(in.summary.regions[0])
-      << "</strong> of the retina; at the end " << formatPercent(in.frames.back().retina().fraction)
-      << ".";
+    s << "<p>Over "
+      << (in.incomplete ? "the part of the schedule simulated (" : "the whole schedule (")
+      << formatNumber(in.summary.duration, 4) << " s simulated) oil covered on average <strong>"
+      << formatPercent(in.summary.regions[0]) << "</strong> of the retina; at the end "
+      << formatPercent(in.frames.back().retina().fraction) << ".";
     for (std::size_t b = 0; b < in.breaks.size() && b < in.summary.breakTimeCovered.size(); ++b)
       s << " Break " << escapeXml(in.breaks[b].name) << " was covered "
         << formatPercent(in.summary.breakTimeCovered[b]) << " of the time.";
@@ -219,6 +226,7 @@ std::string renderSummaryJson(const ReportInput& in) {
   std::ostringstream s;
   s << "{\n  \"title\": \"" << escapeJson(in.title) << "\",\n";
   s << "  \"duration_s\": " << formatNumber(in.summary.duration, 9) << ",\n";
+  s << "  \"complete\": " << (in.incomplete ? "false" : "true") << ",\n";
   s << "  \"frames\": " << in.frames.size() << ",\n";
   s << "  \"regions\": [\n";
   for (std::size_t r = 0; r < kReportedRegions.size(); ++r) {

@@ -38,6 +38,7 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
   addLimit(pipeline.solver().name(), pipeline.solver().maxTimeStep(world));
   for (const auto& e : pipeline.effects()) addLimit(e->name(), e->maxTimeStep(world));
   const sim::TimeStepInfo first = pipeline.chooseTimeStep(world);
+  requireStartTimeStep(s, first);
   plan.firstTimeStep = first.dt;
   plan.timeStepLimitedBy = first.limitedBy;
   pipeline.step(world);
@@ -55,6 +56,7 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
     fastest = std::min(fastest, seconds);
   }
   plan.calibrationSteps = options.calibrationSteps;
+  plan.peakResidentBytes = peakResidentBytes().value_or(0.0);
   plan.rejectedSteps = pipeline.rejectedSteps() - rejectedBefore;
   plan.secondsPerParticleStep =
       (options.calibrationSteps > 0 ? fastest : 0.0) /

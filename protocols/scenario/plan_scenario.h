@@ -48,6 +48,9 @@ struct ScenarioPlan {
   std::size_t wallFieldBytes = 0;      // [B]
   std::size_t neighborListBytes = 0;   // [B] CSR lists as built at the start
   std::size_t totalBytes() const { return particleFieldBytes + wallFieldBytes + neighborListBytes; }
+  // [B] this process's peak resident size after assembly and calibration (0 where it cannot be
+  // read): a run of the scene peaks up to ~10 % higher (memory_estimate.h).
+  double peakResidentBytes = 0.0;
   // Calibration.
   int calibrationSteps = 0;
   int threads = 1;

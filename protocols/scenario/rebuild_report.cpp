@@ -73,6 +73,23 @@ WallOilFractions measureWallFractions(const Scenario& s, const std::vector<sim::
   return computeWallOilFractions(retina, {&x, &flags, &volumes}, kernel);
 }
 
+namespace {
+
+// Whether the run behind `reader` ended all `postures` of its schedule: the runner appends a row
+// to the "postures" series as each posture ends, so a run stopped early lacks the last one. Runs
+// written before that series existed are judged by their last frame: a finished run's is at the
+// schedule's end (`scheduled` [s], to the rounding of a sum of durations).
+bool ranWholeSchedule(const FrameReader& reader, std::size_t postures, double lastFrameTime,
+                      double scheduled) {
+  const std::vector<std::string> names = reader.seriesNames();
+  if (std::find(names.begin(), names.end(), "postures") == names.end())
+    return !(lastFrameTime < scheduled * (1 - 1e-9));
+  const std::vector<double> ended = reader.readSeries("postures").column("posture");
+  return std::find(ended.begin(), ended.end(), static_cast<double>(postures - 1)) != ended.end();
+}
+
+}  // namespace
+
 Protocol loadRunProtocol(const std::filesystem::path& folder, ScenarioOptions& options) {
   const RunInfo info = FrameReader(folder / "frames.h5").runInfo();
   std::filesystem::path protocolPath;
@@ -158,7 +175,12 @@ void rebuildReport(const std::filesystem::path& folder) {
           solve.values.begin() + static_cast<std::ptrdiff_t>(solve.rows * width)));
   }
   r.decisions = sim::assemblePipeline(*s.world, s.pipelineOptions).decisions();
-  const ReportInput in = makeRunReportInput(protocol, s, r);
+  ReportInput in = makeRunReportInput(protocol, s, r);
+  const double scheduled = s.totalDuration();  // [s]
+  if (!ranWholeSchedule(reader, s.schedule.size(), lastFrame.time, scheduled)) {
+    in.incomplete = true;
+    in.scheduledDuration = scheduled;
+  }
   writeReport(in, folder);
 }
 

@@ -1,14 +1,19 @@
 #include "protocols/scenario/run_scenario.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
+#include <cmath>
+#include <cstring>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <sstream>
 
 #include "protocols/io/checkpoint.h"
 #include "protocols/io/frame_reader.h"
 #include "protocols/io/frame_writer.h"
+#include "protocols/io/io_error.h"
 #include "protocols/report/write_report.h"
 #include "protocols/scenario/rebuild_report.h"
 #include "sim/core/reduction.h"
@@ -35,7 +40,36 @@ std::vector<std::string> seriesColumns(const RetinaMap& map) {
   return columns;
 }
 
+// What a checkpoint belongs to: the protocol text and the accuracy the scene was assembled at
+// (a command-line preset changes the particles, not the text). A checkpoint copied from another
+// run's folder carries another one and is refused.
+std::vector<std::uint8_t> scenarioIdentity(const Protocol& protocol, const Scenario& s) {
+  const std::uint64_t hash =
+      textChecksum(readText(protocol.file) + '\0' + s.accuracy.preset + '\0' +
+                   std::to_string(std::bit_cast<std::uint64_t>(s.accuracy.particleSpacing)));
+  std::vector<std::uint8_t> bytes(sizeof hash);
+  std::memcpy(bytes.data(), &hash, sizeof hash);
+  return bytes;
+}
+
+constexpr const char* kIdentityBlob = "protocol_hash";
+
 }  // namespace
+
+double nextTimeAfter(double next, double interval, double now) {
+  // Stepping by `interval` keeps the times on the schedule's grid (start + k interval) as before;
+  // far behind (an interval much shorter than the step) or stalled (next + interval == next in
+  // floating point) the next time is taken from now instead, so this always ends.
+  constexpr int kMostIncrements = 64;
+  for (int k = 0; k < kMostIncrements && next <= now; ++k) {
+    const double advanced = next + interval;
+    if (!(advanced > next)) break;
+    next = advanced;
+  }
+  if (next > now) return next;
+  const double fromNow = now + interval;
+  return fromNow > now ? fromNow : std::nextafter(now, std::numeric_limits<double>::infinity());
+}
 
 void applyRecordedPostureEnds(const FrameReader& reader, Scenario& s, double upTo) {
   const std::vector<std::string> names = reader.seriesNames();
@@ -56,6 +90,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
   sim::World& world = *s.world;
   sim::Pipeline pipeline = sim::assemblePipeline(world, s.pipelineOptions);
   pipeline.attach(world);
+  if (!options.resume) requireStartTimeStep(s, pipeline.chooseTimeStep(world));  // before files
   const std::filesystem::path h5 = options.outputFolder / "frames.h5";
   const std::filesystem::path checkpointPath = options.outputFolder / "checkpoint.h5";
   const long sortInterval = world.parameters().zSortInterval;  // [steps]
@@ -85,6 +120,11 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     // The walls' group holds their solver state (INDSPH's wall stiffness on layered walls).
     CheckpointState state = readCheckpoint(
         checkpointPath, {{"fluid", &world.particles.fields}, {"wall", &world.walls.fields}});
+    if (state.blobs[kIdentityBlob] != scenarioIdentity(protocol, s))
+      throw IoError(checkpointPath.string(), std::string("/blobs/") + kIdentityBlob,
+                    "the checkpoint belongs to another protocol or accuracy than this run's "
+                    "frames.h5 (it was copied from another run folder?)",
+                    "resume the folder the checkpoint was written in, or start this run afresh");
     world.time = state.time;
     world.stepCount = state.step;
     world.lastTimeStep = state.dt;
@@ -215,6 +255,7 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
     for (const auto& e : pipeline.timers().entries())
       state.realCounters["stage:" + e.name] = e.seconds;
     solve.save(state.realCounters);
+    state.blobs[kIdentityBlob] = scenarioIdentity(protocol, s);
     state.groups["fluid"] = &world.particles.fields;
     state.groups["wall"] = &world.walls.fields;
     writer->flush();
@@ -268,14 +309,14 @@ RunSummary runScenario(const Protocol& protocol, Scenario& s, const RunOptions& 
       solve.add(pipeline.solver().stats(), world.lastTimeStep);
       if (world.time >= nextFrame) {
         record();
-        while (nextFrame <= world.time) nextFrame += interval;
+        nextFrame = nextTimeAfter(nextFrame, interval, world.time);
       }
       const double endTime = s.totalDuration();
       if (options.progress) options.progress({world.time, endTime, world.stepCount, posture.label});
       bool steady = false;
       if (posture.untilSteady && world.time >= nextSample) {
         samples.push_back(sample());
-        while (nextSample <= world.time) nextSample += criteria.sampleInterval;
+        nextSample = nextTimeAfter(nextSample, criteria.sampleInterval, world.time);
         steady = isSteady(samples, postureStart, criteria);
         // Keep one window: the newest sample at or before the window's start and all after it.
         std::size_t keep = 0;

@@ -69,6 +69,11 @@ struct RunSummary {
 // posture's ScheduledPosture::endedSteady is set (see above).
 RunSummary runScenario(const Protocol& protocol, Scenario& scenario, const RunOptions& options);
 
+// The first of next, next + interval, next + 2 interval, ... after `now` [s]; when that is more
+// than a few dozen intervals away or `interval` is too small to advance `next` in floating point,
+// now + interval (or the next double after now). Always ends, for any interval > 0.
+double nextTimeAfter(double next, double interval, double now);
+
 // Shortens the durations of `scenario`'s postures that ended steady to what the run's "postures"
 // series recorded (rows at or before `upTo` [s]); a run without that series changes nothing.
 void applyRecordedPostureEnds(const FrameReader& reader, Scenario& scenario,

@@ -101,6 +101,31 @@ void buildCavity(const Protocol& p, Scenario& s) {
   s.cavityArea = measures.area;
 }
 
+// Where the spacing came from: the explicit particle_spacing, else the preset line, else the file.
+SourceLocation spacingSource(const Protocol& p) {
+  if (p.accuracy.particleSpacing.where.isInFile()) return p.accuracy.particleSpacing.where;
+  if (p.accuracy.preset.where.isInFile()) return p.accuracy.preset.where;
+  return SourceLocation{p.file.string(), 0, 0};
+}
+
+std::string gibibytes(double bytes) { return formatNumber(bytes / 1073741824.0, 3) + " GiB"; }
+
+// Refuses, before anything is allocated, a spacing whose scene would not fit in memory.
+void checkMemory(const Protocol& p, const ScenarioOptions& options, Scenario& s, double d) {
+  const bool tissue = p.eye.sclera.has_value() || p.eye.orbitalFat.has_value();
+  s.memory = estimateMemory(s.cavityVolume, s.cavityArea, d, tissue);
+  if (!options.memoryLimit || s.memory.bytes <= *options.memoryLimit) return;
+  const double fits =
+      smallestSpacingWithin(s.cavityVolume, s.cavityArea, *options.memoryLimit, tissue);
+  fail(spacingSource(p),
+       "particle spacing " + formatNumber(d * 1e3, 3) + " mm needs about " +
+           gibibytes(s.memory.bytes) + " (" + formatNumber(s.memory.fluidParticles, 3) +
+           " fluid particles in " + formatNumber(s.cavityVolume * 1e6, 3) + " mL), more than the " +
+           gibibytes(*options.memoryLimit) + " available",
+       "use accuracy.particle_spacing = \"" + formatNumber(fits * 1e3, 3) +
+           " mm\" or coarser, which fits, or allow more with --max-memory");
+}
+
 // "42" for 0.42: the fill notes' percentages.
 std::string percent(double fraction) {
   return std::to_string(static_cast<int>(std::lround(100.0 * fraction)));
@@ -350,11 +375,24 @@ double Scenario::totalDuration() const {
   return t;
 }
 
+void requireStartTimeStep(const Scenario& s, const sim::TimeStepInfo& first) {
+  if (first.limitedBy != "min") return;
+  fail(s.accuracy.minTimeStepWhere,
+       "accuracy.min_time_step = " + formatNumber(s.accuracy.minTimeStep, 3) +
+           " s is longer than the time step this scene needs at its start (" +
+           formatNumber(first.wanted, 3) + " s, the " + first.wantedBy +
+           " limit): every step would be too long to be stable",
+       "lower accuracy.min_time_step below " + formatNumber(first.wanted, 3) +
+           " s (the presets use 1e-7 s), or remove it");
+}
+
 bool isImplicitSolver(const std::string& solver) {
   return solver == "dfsph" || solver == "indsph" || solver == "iisph";
 }
 
-Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
+namespace {
+
+Scenario assemble(const Protocol& p, const ScenarioOptions& options) {
   Scenario s;
   s.title = p.title ? p.title->value : p.file.filename().string();
 
@@ -362,12 +400,18 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   const AccuracySpec& a = p.accuracy;
   if (options.accuracy) {
     const AccuracyPresetValues& v = kAccuracyPresets[static_cast<std::size_t>(*options.accuracy)];
-    s.accuracy = {std::string(v.name), v.particleSpacing, v.solverTolerance, v.minTimeStep,
-                  v.maxTimeStep};
+    s.accuracy = {std::string(v.name), v.particleSpacing, v.solverTolerance,
+                  v.minTimeStep,       v.maxTimeStep,     {}};
   } else {
-    s.accuracy = {std::string(toString(a.preset.value)), a.particleSpacing.value,
-                  a.solverTolerance.value, a.minTimeStep.value, a.maxTimeStep.value};
+    s.accuracy = {std::string(toString(a.preset.value)),
+                  a.particleSpacing.value,
+                  a.solverTolerance.value,
+                  a.minTimeStep.value,
+                  a.maxTimeStep.value,
+                  {}};
   }
+  s.accuracy.minTimeStepWhere =
+      a.minTimeStep.where.isInFile() ? a.minTimeStep.where : spacingSource(p);
   const double d = s.accuracy.particleSpacing;  // [m]
   if (d > 1.001 * draftPreset().particleSpacing) s.notes.push_back(coarseSpacingNote(d));
 
@@ -384,6 +428,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
          "the schedule has no postures", "add at least one [[schedule.postures]]");
 
   buildCavity(p, s);
+  checkMemory(p, options, s, d);
 
   // Phases: [0] aqueous, [1] tamponade.
   s.phases.push_back(phaseFromLibrary("aqueous", false));
@@ -397,6 +442,7 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   wp.gravity = s.schedule.front().gravity;
   wp.minTimeStep = s.accuracy.minTimeStep;
   wp.maxTimeStep = s.accuracy.maxTimeStep;
+  wp.stopBelowMinTimeStep = true;  // accuracy.min_time_step: "the run stops as unstable"
   Eigen::AlignedBox3d bounds;
   for (const auto& v : s.cavity.vertices) bounds.extend(v);
   const double pad = 4.0 * wp.supportRadiusFactor * d + tissueDomainPadding(p, d);  // [m]
@@ -634,6 +680,25 @@ Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
   }
   resolveOutputFields(p, s);
   return s;
+}
+
+}  // namespace
+
+Scenario assembleScenario(const Protocol& p, const ScenarioOptions& options) {
+  // Sampling and the engine refuse what they cannot build (a domain with no fluid, a spacing the
+  // sampler cannot resolve) without knowing the protocol: name the line that chose the spacing,
+  // the setting such failures depend on.
+  try {
+    return assemble(p, options);
+  } catch (const meshing::MeshError& error) {
+    fail(spacingSource(p), std::string("the scene cannot be assembled: ") + error.what(),
+         "check the eye's size and accuracy.particle_spacing (an eye needs a spacing well below "
+         "its size)");
+  } catch (const sim::SimError& error) {
+    fail(spacingSource(p), std::string("the scene cannot be assembled: ") + error.what(),
+         "check the eye's size and accuracy.particle_spacing (an eye needs a spacing well below "
+         "its size)");
+  }
 }
 
 }  // namespace protocols

@@ -35,7 +35,9 @@
 #include "meshing/triangle_mesh.h"
 #include "protocols/coverage/frame_coverage.h"
 #include "protocols/format/protocol.h"
+#include "protocols/scenario/memory_estimate.h"
 #include "protocols/scenario/tissue_particles.h"
+#include "sim/world/pipeline.h"
 #include "sim/world/stage_registry.h"
 #include "sim/world/world.h"
 
@@ -92,6 +94,10 @@ struct ScenarioOptions {
   // pinned by the particle arrangement (docs/methods/interface.md, validation 6). false: plain
   // gravity.
   bool removeHydrostaticBackground = true;
+  // [B] refuse (ProtocolError at the spacing) a scene whose estimated memory exceeds this, before
+  // any particle is allocated (memory_estimate.h); unset: no limit. The CLI passes the machine's
+  // available memory or --max-memory.
+  std::optional<double> memoryLimit;
 };
 
 struct FluidPhase {
@@ -125,10 +131,11 @@ struct ScheduledPosture {
 
 struct AccuracySettings {
   std::string preset;
-  double particleSpacing = 0.0;  // [m]
-  double solverTolerance = 0.0;  // [1]
-  double minTimeStep = 0.0;      // [s]
-  double maxTimeStep = 0.0;      // [s]
+  double particleSpacing = 0.0;     // [m]
+  double solverTolerance = 0.0;     // [1]
+  double minTimeStep = 0.0;         // [s]
+  double maxTimeStep = 0.0;         // [s]
+  SourceLocation minTimeStepWhere;  // where minTimeStep was set (the preset's line, or the file)
 };
 
 struct Scenario {
@@ -137,6 +144,7 @@ struct Scenario {
   meshing::TriangleMesh cavity;     // [m] closed, outward, eye frame
   double cavityVolume = 0.0;        // [m^3]
   double cavityArea = 0.0;          // [m^2]
+  MemoryEstimate memory;            // from the cavity and the spacing, before allocation
   std::vector<anatomy::RetinalBreak> breaks;
   RetinaMap retina;                 // per retina sample (the walls as first sampled)
   RetinaSamples retinaSamples;      // where the coverage is measured (may move with a tissue)
@@ -174,6 +182,11 @@ struct Scenario {
 // forced effect this build does not have, a fill that leaves a phase without particles, an
 // outputs.fields name that is not a particle field of the assembled pipeline (with "did you mean").
 Scenario assembleScenario(const Protocol& protocol, const ScenarioOptions& options = {});
+
+// Throws ProtocolError at accuracy.min_time_step when the scene's first step (`first`, chosen by
+// the assembled pipeline before any step) had to be raised to the minimum: every step would be
+// longer than the stages allow, which the engine refuses as unstable once running.
+void requireStartTimeStep(const Scenario& scenario, const sim::TimeStepInfo& first);
 
 // INDSPH's Jacobi relaxation in eye scenes (the engine's default is 0.5; why: scenario.cpp).
 inline constexpr double kEyeIndsphRelaxation = 0.8;

@@ -4,6 +4,7 @@
 #include <limits>
 #include <sstream>
 
+#include "sim/core/error.h"
 #include "sim/core/reduction.h"
 #include "sim/effects/background_pressure.h"
 #include "sim/effects/viscosity_monaghan2005.h"
@@ -57,9 +58,9 @@ TimeStepInfo Pipeline::chooseTimeStep(const World& world) const {
   const Real d = world.particleSpacing();
   const auto& v = world.particles.v;
   const Real vmax = maxSpeed(v);
-  TimeStepInfo info{params.maxTimeStep, "max"};
+  TimeStepInfo info{params.maxTimeStep, "max", 0, {}};
   auto limit = [&](Real dt, const std::string& by) {
-    if (dt < info.dt) info = {dt, by};
+    if (dt < info.dt) info = {dt, by, 0, {}};
   };
   // Advection CFL, plus a body-force bound so a scene starting at rest does not take a step in
   // which gravity alone moves particles by more than cfl * d.
@@ -68,7 +69,7 @@ TimeStepInfo Pipeline::chooseTimeStep(const World& world) const {
   if (g > 0) limit(params.cflNumber * std::sqrt(d / g), "cfl");
   limit(solver_->maxTimeStep(world), std::string(solver_->name()));
   for (const auto& e : effects_) limit(e->maxTimeStep(world), std::string(e->name()));
-  if (info.dt < params.minTimeStep) info = {params.minTimeStep, "min"};
+  if (info.dt < params.minTimeStep) info = {params.minTimeStep, "min", info.dt, info.limitedBy};
   return info;
 }
 
@@ -85,6 +86,7 @@ Real Pipeline::step(World& world) {
     solver_->beginStep(world, StepContext{world.lastTimeStep});
   }
   lastStep_ = chooseTimeStep(world);
+  requireAboveMinimum(world, lastStep_);
   const Real maxDisplacement = world.parameters().maxDisplacement * world.particleSpacing();
   velocityAtStart_ = p.v;
   int attempt = 0;
@@ -101,8 +103,10 @@ Real Pipeline::step(World& world) {
         lastStep_.dt <= world.parameters().minTimeStep)
       break;
     p.v = velocityAtStart_;
-    lastStep_ = {std::max(0.5 * maxDisplacement / vmax, world.parameters().minTimeStep),
-                 "rejected"};
+    const Real shorter = 0.5 * maxDisplacement / vmax;  // [s]
+    if (shorter < world.parameters().minTimeStep)
+      requireAboveMinimum(world, {world.parameters().minTimeStep, "min", shorter, "rejected"});
+    lastStep_ = {std::max(shorter, world.parameters().minTimeStep), "rejected", 0, {}};
   }
   rejectedSteps_ += attempt;
   const Real dt = lastStep_.dt;
@@ -122,6 +126,16 @@ Real Pipeline::step(World& world) {
   world.lastTimeStep = dt;
   ++world.stepCount;
   return dt;
+}
+
+void Pipeline::requireAboveMinimum(const World& world, const TimeStepInfo& step) const {
+  if (!world.parameters().stopBelowMinTimeStep || step.limitedBy != "min") return;
+  std::ostringstream what;
+  what.precision(3);
+  what << "the run stopped as unstable at t = " << world.time << " s: the " << step.wantedBy
+       << " limit needs a time step of " << step.wanted << " s, below the minimum time step "
+       << world.parameters().minTimeStep << " s";
+  throw SimError(what.str());
 }
 
 void Pipeline::advanceVelocities(World& world, const StepContext& context) {

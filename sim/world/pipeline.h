@@ -26,6 +26,10 @@ struct StageDecision {
 struct TimeStepInfo {
   Real dt = 0;            // [s]
   std::string limitedBy;  // "cfl", "max", "min", or the stage name
+  // With limitedBy == "min": the step the stages asked for [s] and which one asked (below the
+  // minimum, so the minimum was taken instead).
+  Real wanted = 0;
+  std::string wantedBy;
 };
 
 class Pipeline {
@@ -62,6 +66,9 @@ class Pipeline {
   std::vector<int> effectSlots_;
   // Non-pressure effects, velocity prediction and pressure solve for one step length.
   void advanceVelocities(World& world, const StepContext& context);
+  // Throws SimError when `step` had to be raised to the minimum and the world's parameters say
+  // to stop then (WorldParameters::stopBelowMinTimeStep).
+  void requireAboveMinimum(const World& world, const TimeStepInfo& step) const;
   // Anchored particles back to velocity 0 after the pressure solve (see pipeline.cpp).
   void constrainFixed(World& world);
 

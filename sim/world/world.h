@@ -23,6 +23,9 @@ struct WorldParameters {
   // spacings is redone with a shorter step (Pipeline::step)
   Real maxDisplacement = 0.3;
   Real minTimeStep = 1e-6;  // [s]
+  // What a step does when its stages need less than minTimeStep: false takes minTimeStep anyway
+  // (the engine's tests bound the step so); true throws SimError, the run stopping as unstable.
+  bool stopBelowMinTimeStep = false;
   Real maxTimeStep = 5e-3;  // [s]
   int zSortInterval = 16;   // [steps] how often particle data are re-sorted in Z-order
 

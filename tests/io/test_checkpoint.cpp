@@ -226,3 +226,29 @@ TEST_CASE("a writer killed while checkpointing leaves the last complete checkpoi
   CHECK(fluid.x == expected.x);
   CHECK(fluid.fields.get<sim::Mat3>("stress") == expected.fields.get<sim::Mat3>("stress"));
 }
+
+TEST_CASE("a checkpoint with a flipped bit in its particle data is refused", "[unit][io]") {
+  iotest::TempDir dir;
+  sim::DynamicParticles fluid, restored;
+  sim::WallParticles walls, restoredWalls;
+  iotest::fillFluid(fluid, 400, 21);
+  iotest::fillWall(walls, 300, 22);
+  const std::filesystem::path path = dir / "checkpoint.h5";
+  writeCheckpoint(path, sampleState(fluid, walls));
+
+  // HDF5 checksums its metadata only: flip one bit inside the stored positions (found by their
+  // bytes; datasets are contiguous), as a damaged disk or a copy gone wrong would.
+  std::string bytes = iotest::readFile(path);
+  const sim::FieldBase& positions = *fluid.fields.find("position");
+  const std::string first(static_cast<const char*>(positions.rawData()), 3 * sizeof(sim::Real));
+  const std::size_t at = bytes.find(first);
+  REQUIRE(at != std::string::npos);
+  bytes[at + 5] = static_cast<char>(bytes[at + 5] ^ 0x10);
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+
+  iotest::fillFluid(restored, 400, 99);
+  iotest::fillWall(restoredWalls, 300, 98);
+  CHECK_THROWS_WITH(
+      readCheckpoint(path, {{"fluid", &restored.fields}, {"wall", &restoredWalls.fields}}),
+      Catch::Contains("checkpoint.h5") && Catch::Contains("do not match its checksum"));
+}

@@ -64,6 +64,13 @@ TEST_CASE("units: declared, guessed from size with a warning", "[unit][import]")
   CHECK(m.unit == LengthUnit::metre);
   CHECK_THAT(m.warnings.at(0), Catch::Contains("assumed m "));
   CHECK(measureMesh(m.mesh).size() == Approx(0.024).epsilon(1e-6));
+  // The protocol's mesh_units also take cm and um (they passed validate and failed at assembly).
+  writeMesh(sphere, dir.file("cm.obj"), 100.0);
+  CHECK(measureMesh(importMesh(dir.file("cm.obj"), parseLengthUnit("cm")).mesh).size() ==
+        Approx(0.024).epsilon(1e-6));
+  writeMesh(sphere, dir.file("um.obj"), 1e6);
+  CHECK(measureMesh(importMesh(dir.file("um.obj"), parseLengthUnit("um")).mesh).size() ==
+        Approx(0.024).epsilon(1e-6));
   CHECK(parseLengthUnit("mm") == LengthUnit::millimetre);
   CHECK_THROWS_WITH(parseLengthUnit("inch"), Catch::Contains("use 'mm' or 'm'"));
 }
@@ -110,10 +117,18 @@ TEST_CASE("unreadable files give MeshError naming the file, the problem and the 
   const float nan = std::numeric_limits<float>::quiet_NaN();
   const float nanCorners[4][3] = {{0, 0, 0}, {20, 0, 0}, {0, 20, nan}, {0, 0, 20}};
   writeBinaryStl(dir.file("nan.stl"), nanCorners);
-  writeMesh(sphere, dir.file("eye_24m.stl"), 1e6);    // a 24 mm eye written in micrometres
-  writeMesh(sphere, dir.file("eye_in_m.obj"), 1.0);   // 0.024 units: metres
-  writeMesh(sphere, dir.file("eye_in_mm.obj"), 1e3);  // 24 units: mm
-  writeMesh(sphere, dir.file("huge.obj"), 1e5);       // 2400 units: neither mm nor m
+  writeMesh(sphere, dir.file("eye_24m.stl"), 1e6);        // a 24 mm eye written in micrometres
+  writeMesh(sphere, dir.file("eye_in_m.obj"), 1.0);       // 0.024 units: metres
+  writeMesh(sphere, dir.file("eye_in_mm.obj"), 1e3);      // 24 units: mm
+  writeMesh(sphere, dir.file("huge.obj"), 1e5);           // 2400 units: neither mm nor m
+  writeMesh(sphere, dir.file("one_m.obj"), 1.0 / 0.024);  // 1 m across, written in m
+  // An ASCII PLY whose header never ends: assimp's reader loops forever on it.
+  meshing_test::writeText(dir.file("no_end_header.ply"),
+                          "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                          "property float y\nproperty float z\n0 0 0\n1 0 0\n0 1 0\n");
+  std::filesystem::create_directories(dir.file("folder.stl"));
+  std::filesystem::create_symlink("loop_b.stl", dir.file("loop_a.stl"));
+  std::filesystem::create_symlink("loop_a.stl", dir.file("loop_b.stl"));
 
   const Case cases[] = {
       {"missing", dir.file("nothing_here.stl"), LengthUnit::millimetre, "file not found"},
@@ -134,6 +149,13 @@ TEST_CASE("unreadable files give MeshError naming the file, the problem and the 
       {"24 m eye (mm file declared m)", dir.file("eye_in_mm.obj"), LengthUnit::metre,
        "probably in mm:"},
       {"cannot guess", dir.file("huge.obj"), LengthUnit::unknown, "implausible for an eye in mm"},
+      {"1 m sphere, no units", dir.file("one_m.obj"), LengthUnit::unknown,
+       "implausible for an eye in mm"},
+      {"PLY without end_header", dir.file("no_end_header.ply"), LengthUnit::millimetre,
+       "no 'end_header' line"},
+      {"directory", dir.file("folder.stl"), LengthUnit::millimetre, "is a directory"},
+      {"device", "/dev/zero", LengthUnit::millimetre, "not a regular file"},
+      {"symbolic link loop", dir.file("loop_a.stl"), LengthUnit::millimetre, "cannot open"},
   };
   for (const Case& c : cases) {
     INFO(c.name);

@@ -17,6 +17,7 @@
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/frame_reader.h"
 #include "protocols/scenario/progress_text.h"
+#include "protocols/scenario/run_scenario.h"
 #include "protocols/scenario/steady_state.h"
 #include "sim/core/particle_set.h"
 #include "tamponade_command.h"
@@ -323,4 +324,16 @@ TEST_CASE("the README's default protocol stays a few-second equilibrium run",
     total += posture.duration.value;
   }
   CHECK(total <= 1.2);
+}
+
+TEST_CASE("the next frame or sample time always advances past now", "[unit][run]") {
+  using protocols::nextTimeAfter;
+  // On the grid start + k interval, as before: the first multiple after now.
+  CHECK(nextTimeAfter(0.1, 0.1, 0.25) == Approx(0.3));
+  CHECK(nextTimeAfter(0.5, 0.1, 0.25) == 0.5);  // already ahead: unchanged
+  // An interval too small to advance the time in floating point (1e-20 s after 1.6 ms) used to
+  // loop forever; far behind, the next time is taken from now.
+  CHECK(nextTimeAfter(1e-3, 1e-20, 1.6e-3) > 1.6e-3);
+  CHECK(nextTimeAfter(0.0, 1e-9, 1.0) == Approx(1.0 + 1e-9));
+  CHECK(nextTimeAfter(0.0, 0.0, 1.0) > 1.0);
 }

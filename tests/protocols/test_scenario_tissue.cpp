@@ -840,7 +840,7 @@ TEST_CASE("tissue: bad input is reported at its place with exit code 2",
            "side = \"OD\"\naxial_length = \"26 mm\"\nstaphyloma_depth = \"1.5 "
            "mm\"\nstaphyloma_width = \"8 mm\"",
            "kind = \"mesh\"\nside = \"OD\"\nmesh = \"" + mesh.string() + "\"\nmesh_units = \"mm\""),
-       "plan", "mode = \"elastic\" for the sclera, but an imported mesh cavity has no anatomy",
+       "plan", "mode = \"elastic\" for the sclera on an imported mesh cavity, which has no anatomy",
        ":32:8"},
   };
   for (const Case& c : cases) {
