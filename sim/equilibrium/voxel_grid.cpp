@@ -61,12 +61,6 @@ void forCorners(const VoxelGrid& grid, const Vec3& x, F&& visit) {
 
 }  // namespace
 
-double interpolate(const VoxelGrid& grid, const std::vector<double>& field, const Vec3& x) {
-  double value = 0.0;
-  forCorners(grid, x, [&](std::size_t v, double c) { value += c * field[v]; });
-  return value;
-}
-
 double weightedInterpolate(const VoxelGrid& grid, const std::vector<double>& field,
                            const std::vector<double>& weight, const Vec3& x) {
   double value = 0.0, total = 0.0;

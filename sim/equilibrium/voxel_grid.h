@@ -46,9 +46,7 @@ std::vector<double> fluidFractionsFromDistance(const VoxelGrid& grid,
                                                const std::function<double(const Vec3&)>& distance);
 
 // Trilinear interpolation of a voxel field at x [m] (values at voxel centres; clamped at the
-// grid's edge).
-double interpolate(const VoxelGrid& grid, const std::vector<double>& field, const Vec3& x);
-// The same with each voxel weighted by `weight` as well: sum w_k c_k a_k / sum w_k c_k (c the
+// grid's edge) with each voxel weighted by `weight` as well: sum w_k c_k a_k / sum w_k c_k (c the
 // trilinear weights); 0 where every weight is 0.
 double weightedInterpolate(const VoxelGrid& grid, const std::vector<double>& field,
                            const std::vector<double>& weight, const Vec3& x);

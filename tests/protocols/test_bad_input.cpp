@@ -269,8 +269,9 @@ TEST_CASE("bad input: refused with exit 2, file:line:column or file, the cause, 
   fs::remove_all(dir);
 }
 
-TEST_CASE("bad input: a checkpoint of another protocol is refused, and a stopped run's report says so",
-          "[unit][cli][bad-input]") {
+TEST_CASE(
+    "bad input: a checkpoint of another protocol is refused, and a stopped run's report says so",
+    "[unit][cli][bad-input]") {
   const fs::path dir = fs::temp_directory_path() / "tamponade_bad_checkpoint_test";
   fs::remove_all(dir);
   fs::create_directories(dir);
