@@ -25,8 +25,15 @@ int runReport(Args args) {
   }
   const std::filesystem::path folder(args[0]);
   if (!std::filesystem::exists(folder / "frames.h5")) {
-    std::fprintf(stderr, "tamponade report: %s has no frames.h5; give the folder of a run\n",
-                 folder.string().c_str());
+    // An equilibrium schedule writes its report, interfaces and no frames: nothing to rebuild.
+    if (std::filesystem::exists(folder / "interface_1.ply"))
+      std::fprintf(stderr,
+                   "tamponade report: %s holds equilibria (duration = \"equilibrium\"), whose "
+                   "report the run wrote; to make it again, run the protocol again (seconds)\n",
+                   folder.string().c_str());
+    else
+      std::fprintf(stderr, "tamponade report: %s has no frames.h5; give the folder of a run\n",
+                   folder.string().c_str());
     return 2;
   }
   try {

@@ -107,6 +107,10 @@ TEST_CASE("tamponade run writes an equilibrium schedule's report and interfaces"
   CHECK(report.find("s simulated") == std::string::npos);
   CHECK(protocols_test::readText(dir / "out" / "summary.json").find("\"equilibria\": [") !=
         std::string::npos);
+  // Nothing to rebuild from: `report` says so instead of asking for frames.h5.
+  const auto rebuilt = protocols_test::runTamponade("report out", dir);
+  CHECK(rebuilt.exitCode == 2);
+  CHECK(rebuilt.output.find("holds equilibria") != std::string::npos);
   std::filesystem::remove_all(dir);
 }
 
