@@ -27,15 +27,24 @@ inline std::vector<std::string> splitList(std::string_view text) {
   return items;
 }
 
+// The number std::stod / std::stol (`parse`) reads at the start of `text`, and in `used` how many
+// characters it took (0 when none: no number, or out of range).
+template <class Parse>
+auto leadingNumber(const std::string& text, std::size_t& used, Parse parse) {
+  used = 0;
+  try {
+    return parse(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+    return decltype(parse(text, &used)){};
+  }
+}
+
 // The whole of `text` as a finite number > 0, or a UsageError naming `option`.
 inline double parsePositive(const std::string& text, const char* option) {
   std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
+  const double value = leadingNumber(
+      text, used, [](const std::string& t, std::size_t* n) { return std::stod(t, n); });
   if (used != text.size() || !(value > 0) || !std::isfinite(value))
     throw UsageError(std::string(option) + " '" + text + "' must be a positive number");
   return value;
@@ -45,12 +54,8 @@ inline double parsePositive(const std::string& text, const char* option) {
 // values beyond long are refused, where atol would read them as 0 or wrap).
 inline long parsePositiveInteger(const std::string& text, const char* option) {
   std::size_t used = 0;
-  long value = 0;
-  try {
-    value = std::stol(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
+  const long value = leadingNumber(
+      text, used, [](const std::string& t, std::size_t* n) { return std::stol(t, n); });
   if (text.empty() || used != text.size() || value < 1)
     throw UsageError(std::string(option) + " '" + text + "' must be a positive whole number");
   return value;
@@ -60,12 +65,8 @@ inline long parsePositiveInteger(const std::string& text, const char* option) {
 // for anything else (a bare number is refused: MB and MiB differ by 5 %).
 inline double parseMemorySize(const std::string& text, const char* option) {
   std::size_t used = 0;
-  double value = 0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
+  const double value = leadingNumber(
+      text, used, [](const std::string& t, std::size_t* n) { return std::stod(t, n); });
   std::string unit = used > 0 ? text.substr(used) : std::string();
   if (!unit.empty() && unit.front() == ' ') unit.erase(0, 1);
   const std::pair<const char*, double> units[] = {
