@@ -21,6 +21,7 @@ int runBench(Args args);   // tools/cmd_bench.cpp
 int runPlan(Args args);    // tools/cmd_plan.cpp
 int runRun(Args args);     // tools/cmd_run.cpp
 int runReport(Args args);  // tools/cmd_report.cpp
+int runSweepCommand(Args args);  // tools/cmd_sweep.cpp
 }  // namespace tools
 
 namespace {
@@ -30,6 +31,10 @@ constexpr std::array kCommands = {
     tools::Command{"plan", "show the assembled scene, pipeline, memory and run-time estimate",
                    tools::runPlan},
     tools::Command{"report", "rebuild a run's report from its files", tools::runReport},
+    tools::Command{"sweep",
+                   "parameter studies: run a protocol over fills, agents, angles, postures, eyes "
+                   "(locally or on Slurm) into one table and plots",
+                   tools::runSweepCommand},
     tools::Command{"validate", "check a protocol file and print it in SI units",
                    tools::runValidate},
     tools::Command{"mesh", "check, repair, sample and generate eye meshes", tools::runMesh},

@@ -4,8 +4,10 @@
 #include <fstream>
 #include <numbers>
 #include <sstream>
+#include <tuple>
 
 #include "protocols/format/edit_distance.h"
+#include "protocols/format/parse_protocol_document.h"
 #include "protocols/format/toml_value_reader.h"
 
 namespace protocols {
@@ -42,6 +44,7 @@ class ProtocolParser {
       : file_(file), reader_(file.string()), defaultAt_{file.string(), 0, 0} {}
 
   Protocol parse(std::string_view text);
+  Protocol parse(const toml::table& document);
 
  private:
   template <class Enum>
@@ -94,6 +97,10 @@ Protocol ProtocolParser::parse(std::string_view text) {
         "fix the syntax (TOML 1.0, https://toml.io); strings need quotes, e.g. fill = \"90 %\"");
     throw ProtocolError(reader_.diagnostics());
   }
+  return parse(document);
+}
+
+Protocol ProtocolParser::parse(const toml::table& document) {
   Protocol p;
   p.file = file_;
   const Table root = reader_.root(document);
@@ -114,7 +121,8 @@ Protocol ProtocolParser::parse(std::string_view text) {
   if (!diagnostics.empty()) {
     std::stable_sort(
         diagnostics.begin(), diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-          return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
+          return std::tie(a.where.file, a.where.line, a.where.column) <
+                 std::tie(b.where.file, b.where.line, b.where.column);
         });
     throw ProtocolError(std::move(diagnostics));
   }
@@ -457,6 +465,10 @@ void ProtocolParser::readOutputs(const Table& root, Protocol& p) {
 
 Protocol parseProtocolText(std::string_view text, const std::filesystem::path& file) {
   return ProtocolParser(file).parse(text);
+}
+
+Protocol parseProtocolDocument(const toml::table& document, const std::filesystem::path& file) {
+  return ProtocolParser(file).parse(document);
 }
 
 Protocol parseProtocol(const std::filesystem::path& file) {

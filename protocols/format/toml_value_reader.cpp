@@ -46,7 +46,9 @@ TomlValueReader::Table TomlValueReader::root(const toml::table& document) const 
 }
 
 SourceLocation TomlValueReader::at(const toml::source_region& region) const {
-  return SourceLocation{file_, static_cast<int>(region.begin.line),
+  // A value moved in from another file (a sweep's [vary]) keeps that file's name.
+  const bool otherFile = region.path && !region.path->empty();
+  return SourceLocation{otherFile ? *region.path : file_, static_cast<int>(region.begin.line),
                         static_cast<int>(region.begin.column)};
 }
 

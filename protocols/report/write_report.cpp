@@ -259,6 +259,11 @@ std::string renderSummaryJson(const ReportInput& in) {
       << "\", \"active\": " << (in.stages[k].active ? "true" : "false")
       << ", \"seconds\": " << formatNumber(in.stages[k].seconds, 6) << "}"
       << (k + 1 < in.stages.size() ? "," : "") << "\n";
+  s << "  ],\n  \"accuracy\": [\n";
+  for (std::size_t k = 0; k < in.accuracy.size(); ++k)
+    s << "    {\"name\": \"" << escapeJson(in.accuracy[k].name) << "\", \"value\": \""
+      << escapeJson(in.accuracy[k].value) << "\", \"note\": \"" << escapeJson(in.accuracy[k].note)
+      << "\"}" << (k + 1 < in.accuracy.size() ? "," : "") << "\n";
   s << "  ]";
   if (in.pressureSolve) {
     const ReportPressureSolve& ps = *in.pressureSolve;
