@@ -1,5 +1,6 @@
 #include "protocols/sweep/sweep_plan.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <fstream>
 #include <map>
@@ -104,6 +105,9 @@ std::string SweepPlan::describe(const SweepPoint& point) const {
 SweepPlan planSweep(const std::filesystem::path& sweepFile, std::size_t maxPoints) {
   std::vector<Diagnostic> problems;
   SweepPlan plan = readSweepFile(sweepFile, problems);
+  std::stable_sort(problems.begin(), problems.end(), [](const Diagnostic& a, const Diagnostic& b) {
+    return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
+  });
   if (!problems.empty()) throw ProtocolError(problems);
   const auto values = combinations(plan, maxPoints, problems);
   if (!problems.empty()) throw ProtocolError(problems);

@@ -32,9 +32,13 @@ std::optional<RangeNumber> readRangeNumber(const toml::node& node) {
   return RangeNumber{value, unit, true, false};
 }
 
+std::string withUnit(double value, const RangeNumber& like) {
+  return shortestNumber(value) + (like.unit.empty() ? "" : " " + like.unit);
+}
+
 std::string valueToml(double value, const RangeNumber& like, bool integers) {
   if (like.isString)
-    return "\"" + shortestNumber(value) + (like.unit.empty() ? "" : " " + like.unit) + "\"";
+    return "\"" + withUnit(value, like) + "\"";
   if (integers) return std::to_string(std::llround(value));
   std::string text = shortestNumber(value);
   if (text.find_first_of(".en") == std::string::npos) text += ".0";  // a TOML float
@@ -95,8 +99,8 @@ std::vector<SweepValue> expandRange(const toml::table& range, const std::string&
     integers = integers && step->isInteger;
     const double span = (to->value - from->value) / step->value;
     if (span < -1e-9)
-      return fail("from " + shortestNumber(from->value) + " to " + shortestNumber(to->value) +
-                  " with step " + shortestNumber(step->value) +
+      return fail("from " + withUnit(from->value, *from) + " to " + withUnit(to->value, *from) +
+                  " with step " + withUnit(step->value, *from) +
                   " has no points (the step goes the other way)");
     if (span > 1e6) return fail("the range has more than a million points");
     const auto steps = static_cast<std::int64_t>(std::floor(span + 1e-9));
