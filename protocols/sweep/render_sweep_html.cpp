@@ -70,21 +70,36 @@ std::string lineOf(const SweepManifest& m, const SweepRow& row) {
   return label.empty() ? "coverage" : label;
 }
 
-void renderPanel(std::ostringstream& s, const SweepManifest& m, const std::vector<SweepRow>& rows,
-                 const std::string& region, const XAxis& axis) {
-  const double plotW = kWidth - kLeft - kRight, plotH = kHeight - kTop - kBottom;
+// The panel's lines: each combination of the other keys' values, with its (x, coverage) points.
+struct PanelLines {
+  std::vector<std::string> labels;  // in sweep order
+  std::map<std::string, std::vector<std::pair<double, double>>> points;
+};
+
+PanelLines panelLines(const SweepManifest& m, const std::vector<SweepRow>& rows,
+                      const std::string& region, const XAxis& axis) {
+  PanelLines lines;
+  for (const SweepRow& row : rows) {
+    const std::string label = lineOf(m, row);
+    if (std::find(lines.labels.begin(), lines.labels.end(), label) == lines.labels.end())
+      lines.labels.push_back(label);
+    for (const SweepRegionResult& r : row.regions)
+      if (r.name == region)
+        lines.points[label].emplace_back(positionOf(axis, row.point.values[0]), r.finalFraction);
+  }
+  for (auto& [label, points] : lines.points) std::sort(points.begin(), points.end());
+  return lines;
+}
+
+void renderAxes(std::ostringstream& s, const SweepManifest& m, const XAxis& axis, double plotW,
+                double plotH) {
   auto px = [&](double v) { return kLeft + (v - axis.min) / (axis.max - axis.min) * plotW; };
-  auto py = [&](double f) { return kTop + (1.0 - f) * plotH; };
-  s << "<figure><svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(kWidth)
-    << "\" height=\"" << num(kHeight) << "\" role=\"img\">\n<text x=\"" << num(kLeft)
-    << "\" y=\"" << num(kTop - 10) << "\" font-size=\"13\" font-weight=\"bold\">"
-    << escapeXml(region) << "</text>\n";
   for (int pct = 0; pct <= 100; pct += 20) {
-    s << "<line x1=\"" << num(kLeft) << "\" x2=\"" << num(kLeft + plotW) << "\" y1=\""
-      << num(py(pct / 100.0)) << "\" y2=\"" << num(py(pct / 100.0))
-      << "\" stroke=\"#cccccc\" stroke-width=\"0.5\"/>\n<text x=\"" << num(kLeft - 6) << "\" y=\""
-      << num(py(pct / 100.0) + 4) << "\" font-size=\"11\" text-anchor=\"end\">" << pct
-      << " %</text>\n";
+    const double y = kTop + (1.0 - pct / 100.0) * plotH;
+    s << "<line x1=\"" << num(kLeft) << "\" x2=\"" << num(kLeft + plotW) << "\" y1=\"" << num(y)
+      << "\" y2=\"" << num(y) << "\" stroke=\"#cccccc\" stroke-width=\"0.5\"/>\n<text x=\""
+      << num(kLeft - 6) << "\" y=\"" << num(y + 4) << "\" font-size=\"11\" text-anchor=\"end\">"
+      << pct << " %</text>\n";
   }
   for (std::size_t k = 0; k < axis.values.size(); ++k)
     s << "<text x=\"" << num(px(axis.at[k])) << "\" y=\"" << num(kTop + plotH + 16)
@@ -93,32 +108,38 @@ void renderPanel(std::ostringstream& s, const SweepManifest& m, const std::vecto
     << "\" font-size=\"12\" text-anchor=\"middle\">" << escapeXml(m.keys.front()) << "</text>\n"
     << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(kTop) << "\" width=\"" << num(plotW)
     << "\" height=\"" << num(plotH) << "\" fill=\"none\" stroke=\"#333333\"/>\n";
-  std::vector<std::string> lines;
-  std::map<std::string, std::vector<std::pair<double, double>>> pointsOf;
-  for (const SweepRow& row : rows) {
-    const std::string line = lineOf(m, row);
-    if (std::find(lines.begin(), lines.end(), line) == lines.end()) lines.push_back(line);
-    for (const SweepRegionResult& r : row.regions)
-      if (r.name == region)
-        pointsOf[line].emplace_back(positionOf(axis, row.point.values[0]), r.finalFraction);
-  }
-  for (std::size_t l = 0; l < lines.size(); ++l) {
-    auto& pts = pointsOf[lines[l]];
-    std::sort(pts.begin(), pts.end());
+}
+
+void renderPanel(std::ostringstream& s, const SweepManifest& m, const std::vector<SweepRow>& rows,
+                 const std::string& region, const XAxis& axis) {
+  const double plotW = kWidth - kLeft - kRight, plotH = kHeight - kTop - kBottom;
+  auto px = [&](double v) { return kLeft + (v - axis.min) / (axis.max - axis.min) * plotW; };
+  auto py = [&](double f) { return kTop + (1.0 - f) * plotH; };
+  const PanelLines lines = panelLines(m, rows, region, axis);
+  const double legendHeight = 16.0 * static_cast<double>(lines.labels.size());
+  s << "<figure><svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(kWidth)
+    << "\" height=\"" << num(kHeight + legendHeight) << "\" role=\"img\">\n<text x=\""
+    << num(kLeft) << "\" y=\"" << num(kTop - 10) << "\" font-size=\"13\" font-weight=\"bold\">"
+    << escapeXml(region) << "</text>\n";
+  renderAxes(s, m, axis, plotW, plotH);
+  for (std::size_t l = 0; l < lines.labels.size(); ++l) {
     const char* colour = kLineColours[l % kLineColours.size()];
+    const auto found = lines.points.find(lines.labels[l]);
+    const auto& pts = found != lines.points.end() ? found->second : decltype(found->second){};
     s << "<polyline fill=\"none\" stroke=\"" << colour << "\" stroke-width=\"2\" points=\"";
     for (const auto& [x, f] : pts) s << num(px(x)) << "," << num(py(f)) << " ";
     s << "\"/>\n";
     for (const auto& [x, f] : pts)
       s << "<circle cx=\"" << num(px(x)) << "\" cy=\"" << num(py(f)) << "\" r=\"3\" fill=\""
         << colour << "\"/>\n";
+    const double y = kHeight - 4 + 16.0 * static_cast<double>(l);
+    s << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(y - 9) << "\" width=\"10\" height=\"10\" fill=\""
+      << colour << "\"/><text x=\"" << num(kLeft + 16) << "\" y=\"" << num(y)
+      << "\" font-size=\"11\">" << escapeXml(lines.labels[l]) << "</text>\n";
   }
   s << "</svg>\n<figcaption>" << escapeXml(region)
-    << " covered at the end of the schedule.";
-  for (std::size_t l = 0; l < lines.size(); ++l)
-    s << " <span style=\"color:" << kLineColours[l % kLineColours.size()] << "\">&#9632; "
-      << escapeXml(lines[l]) << "</span>";
-  s << "</figcaption></figure>\n";
+    << " covered at the end of the schedule, against " << escapeXml(m.keys.front())
+    << ".</figcaption></figure>\n";
 }
 
 }  // namespace
