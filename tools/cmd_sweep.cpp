@@ -73,26 +73,38 @@ SweepArgs parseSweepArgs(Args args) {
       if (k + 1 >= args.size()) throw UsageError(arg + " needs a value");
       return std::string(args[++k]);
     };
-    if (arg == "--out") a.out = value();
-    else if (arg == "--jobs") a.jobs = static_cast<int>(parsePositiveInteger(value(), "--jobs"));
+    if (arg == "--out")
+      a.out = value();
+    else if (arg == "--jobs")
+      a.jobs = static_cast<int>(parsePositiveInteger(value(), "--jobs"));
     else if (arg == "--threads")
       a.threads = static_cast<int>(parsePositiveInteger(value(), "--threads"));
-    else if (arg == "--max-points") a.maxPoints = parsePositiveInteger(value(), "--max-points");
-    else if (arg == "--dry-run") a.dryRun = true;
-    else if (arg == "--slurm") a.slurm = true;
-    else if (arg == "--no-submit") a.slurmOptions.submit = false;
-    else if (arg == "--partition") a.slurmOptions.partition = value();
-    else if (arg == "--account") a.slurmOptions.account = value();
-    else if (arg == "--time") a.slurmOptions.time = value();
-    else if (arg == "--mem") a.slurmOptions.memory = value();
+    else if (arg == "--max-points")
+      a.maxPoints = parsePositiveInteger(value(), "--max-points");
+    else if (arg == "--dry-run")
+      a.dryRun = true;
+    else if (arg == "--slurm")
+      a.slurm = true;
+    else if (arg == "--no-submit")
+      a.slurmOptions.submit = false;
+    else if (arg == "--partition")
+      a.slurmOptions.partition = value();
+    else if (arg == "--account")
+      a.slurmOptions.account = value();
+    else if (arg == "--time")
+      a.slurmOptions.time = value();
+    else if (arg == "--mem")
+      a.slurmOptions.memory = value();
     else if (arg == "--cpus-per-task")
       a.slurmOptions.cpusPerTask =
           static_cast<int>(parsePositiveInteger(value(), "--cpus-per-task"));
     else if (arg == "--max-parallel")
       a.slurmOptions.maxParallel =
           static_cast<int>(parsePositiveInteger(value(), "--max-parallel"));
-    else if (!arg.starts_with("-") && a.file.empty()) a.file = arg;
-    else throw UsageError("unexpected argument '" + arg + "'");
+    else if (!arg.starts_with("-") && a.file.empty())
+      a.file = arg;
+    else
+      throw UsageError("unexpected argument '" + arg + "'");
   }
   if (a.file.empty()) throw UsageError("give the sweep file");
   if (a.out.empty() && !a.dryRun) throw UsageError("give the output folder with --out DIR");
@@ -104,7 +116,8 @@ SweepArgs parseSweepArgs(Args args) {
 
 int listPoints(const protocols::SweepPlan& plan) {
   std::printf("%zu points, every one a valid protocol:\n", plan.points.size());
-  for (const auto& p : plan.points) std::printf("  %s  %s\n", p.id.c_str(), plan.describe(p).c_str());
+  for (const auto& p : plan.points)
+    std::printf("  %s  %s\n", p.id.c_str(), plan.describe(p).c_str());
   return 0;
 }
 
@@ -119,7 +132,8 @@ LocalSweepOptions localOptions(const SweepArgs& a, std::size_t points) {
 }
 
 int runSweep(const SweepArgs& a) {
-  const protocols::SweepPlan plan = protocols::planSweep(a.file, static_cast<std::size_t>(a.maxPoints));
+  const protocols::SweepPlan plan =
+      protocols::planSweep(a.file, static_cast<std::size_t>(a.maxPoints));
   if (a.dryRun) return listPoints(plan);
   const std::filesystem::path folder(a.out);
   const protocols::SweepManifest manifest = protocols::manifestOf(plan);
@@ -150,13 +164,15 @@ int sweepStatus(const std::filesystem::path& folder) {
     ++counts[static_cast<std::size_t>(r.state)];
     if (r.state == protocols::PointState::kFailed || r.state == protocols::PointState::kStopped ||
         r.state == protocols::PointState::kRunning)
-      lines += "  " + point.id + "  " + state +
-               (r.state == protocols::PointState::kFailed ? " (exit " + std::to_string(r.exitCode) + ")" : "") +
-               "  " + (protocols::pointFolder(folder, point.id) / "run.log").string() + "\n";
+      lines +=
+          "  " + point.id + "  " + state +
+          (r.state == protocols::PointState::kFailed ? " (exit " + std::to_string(r.exitCode) + ")"
+                                                     : "") +
+          "  " + (protocols::pointFolder(folder, point.id) / "run.log").string() + "\n";
   }
   std::printf("%s: %zu points: %zu done, %zu running, %zu pending, %zu failed, %zu stopped\n%s",
-              folder.string().c_str(), m.points.size(), counts[2], counts[1], counts[0],
-              counts[3], counts[4], lines.c_str());
+              folder.string().c_str(), m.points.size(), counts[2], counts[1], counts[0], counts[3],
+              counts[4], lines.c_str());
   if (counts[3] + counts[4] + counts[0] > 0 && counts[1] == 0)
     std::printf("run the sweep command again (same file and --out) to run what is not done\n");
   return 0;
@@ -180,13 +196,15 @@ int sweepTask(Args args) {
   const std::filesystem::path folder(args[0]);
   const protocols::SweepManifest m = protocols::readSweepManifest(folder);
   const std::string indexText(args[1]);
-  const bool numeric = !indexText.empty() && indexText.find_first_not_of("0123456789") == std::string::npos;
+  const bool numeric =
+      !indexText.empty() && indexText.find_first_not_of("0123456789") == std::string::npos;
   const std::size_t index = numeric ? std::stoul(indexText) : m.points.size();
   if (index >= m.points.size())
     return usage("task index '" + indexText + "' is not a point of " + folder.string() + " (0 to " +
                  std::to_string(m.points.size() - 1) + ")");
   const int threads =
-      args.size() == 4 ? static_cast<int>(parsePositiveInteger(std::string(args[3]), "--threads")) : 1;
+      args.size() == 4 ? static_cast<int>(parsePositiveInteger(std::string(args[3]), "--threads"))
+                       : 1;
   return runSweepPoint(folder, m, index, threads);
 }
 

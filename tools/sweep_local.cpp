@@ -63,8 +63,8 @@ struct SweepProgress {
     secondsSum += seconds;
     const double perPoint = secondsSum / static_cast<double>(finished);
     const double eta = perPoint * static_cast<double>(queued + running) / std::max(jobs, 1);
-    std::printf("[%zu/%zu] %s %s in %.1f s; %zu running, %zu queued, ETA %.0f s\n", finished,
-                total, id.c_str(), what.c_str(), seconds, running, queued, eta);
+    std::printf("[%zu/%zu] %s %s in %.1f s; %zu running, %zu queued, ETA %.0f s\n", finished, total,
+                id.c_str(), what.c_str(), seconds, running, queued, eta);
     std::fflush(stdout);
   }
 };
@@ -115,15 +115,16 @@ int runSweepLocally(const std::filesystem::path& folder, const protocols::SweepM
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - progress.start).count();
   if (const int signal = gSweepSignal.load(); signal != 0) {
-    std::printf("sweep stopped after %.1f s; run the same command again to continue (finished "
-                "points are kept, stopped ones resume)\n", seconds);
+    std::printf(
+        "sweep stopped after %.1f s; run the same command again to continue (finished "
+        "points are kept, stopped ones resume)\n",
+        seconds);
     return 128 + signal;
   }
   std::printf("sweep finished in %.1f s: %zu of %zu points run, %zu failed\n", seconds,
               progress.finished, progress.total, failed.size());
   for (const std::string& id : failed) std::printf("  failed: %s\n", id.c_str());
-  if (!failed.empty())
-    std::printf("run the same command again to retry the failed points\n");
+  if (!failed.empty()) std::printf("run the same command again to retry the failed points\n");
   std::printf("table: %s\nplots: %s\n", (folder / "sweep.csv").string().c_str(),
               (folder / "sweep.html").string().c_str());
   return failed.empty() ? 0 : 1;

@@ -11,8 +11,8 @@
 namespace tools {
 
 struct LocalSweepOptions {
-  int jobs = 1;               // points at a time
-  int threadsPerPoint = 1;    // OpenMP threads of each point
+  int jobs = 1;                          // points at a time
+  int threadsPerPoint = 1;               // OpenMP threads of each point
   std::optional<double> memoryPerPoint;  // [bytes] each point's --max-memory
 };
 

@@ -14,7 +14,7 @@ namespace {
 
 // Files a run writes into its folder; an attempt that left no checkpoint is started afresh, so
 // they go first (`tamponade run` refuses a folder holding frames).
-constexpr const char* kRunFiles[] = {"frames.h5",  "frames.xmf",   "summary.json",
+constexpr const char* kRunFiles[] = {"frames.h5",   "frames.xmf",   "summary.json",
                                      "report.html", "coverage.csv", "checkpoint.h5"};
 
 void clearEarlierAttempt(const std::filesystem::path& folder) {
@@ -24,9 +24,7 @@ void clearEarlierAttempt(const std::filesystem::path& folder) {
       std::filesystem::remove(entry.path());
 }
 
-std::filesystem::path selfExecutable() {
-  return std::filesystem::read_symlink("/proc/self/exe");
-}
+std::filesystem::path selfExecutable() { return std::filesystem::read_symlink("/proc/self/exe"); }
 
 std::vector<std::string> runArguments(const std::filesystem::path& folder, bool resume,
                                       const PointResources& resources) {
@@ -39,8 +37,8 @@ std::vector<std::string> runArguments(const std::filesystem::path& folder, bool 
   args.insert(args.end(), {"--threads", std::to_string(resources.threads)});
   if (resources.memoryLimit)
     args.insert(args.end(),
-                {"--max-memory", std::to_string(static_cast<long>(*resources.memoryLimit /
-                                                                   1048576.0)) + " MiB"});
+                {"--max-memory",
+                 std::to_string(static_cast<long>(*resources.memoryLimit / 1048576.0)) + " MiB"});
   return args;
 }
 
@@ -83,11 +81,13 @@ bool pointNeedsRun(const std::filesystem::path& sweepFolder, const std::string& 
 PointLaunch launchPoint(const std::filesystem::path& sweepFolder,
                         const protocols::SweepManifest& manifest, std::size_t index,
                         const PointResources& resources) {
-  const std::filesystem::path folder = protocols::pointFolder(sweepFolder, manifest.points[index].id);
+  const std::filesystem::path folder =
+      protocols::pointFolder(sweepFolder, manifest.points[index].id);
   const bool resume = std::filesystem::exists(folder / "checkpoint.h5");
   if (!resume) clearEarlierAttempt(folder);
   const std::vector<std::string> args = runArguments(folder, resume, resources);
-  PointLaunch launch{index, 0, std::chrono::steady_clock::now(), protocols::readPointRecord(folder)};
+  PointLaunch launch{index, 0, std::chrono::steady_clock::now(),
+                     protocols::readPointRecord(folder)};
   std::fflush(nullptr);
   launch.pid = ::fork();
   if (launch.pid < 0) throw std::runtime_error("cannot start a process for the sweep point");
@@ -111,7 +111,7 @@ protocols::PointRecord finishPoint(const std::filesystem::path& sweepFolder,
       std::chrono::duration<double>(std::chrono::steady_clock::now() - launch.start).count();
   r.pid = 0;
   // 130/143: stopped by SIGINT/SIGTERM after writing its checkpoint (`tamponade run --help`).
-  r.state = r.exitCode == 0                         ? protocols::PointState::kDone
+  r.state = r.exitCode == 0                          ? protocols::PointState::kDone
             : r.exitCode == 130 || r.exitCode == 143 ? protocols::PointState::kStopped
                                                      : protocols::PointState::kFailed;
   protocols::writePointRecord(protocols::pointFolder(sweepFolder, manifest.points[launch.index].id),

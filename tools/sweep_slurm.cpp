@@ -114,11 +114,12 @@ int submitSweepToSlurm(const std::filesystem::path& relativeFolder,
     return 1;
   }
   std::ofstream(folder / "slurm" / "jobs.txt", std::ios::app) << output << "\n";
-  std::printf("sweep: submitted Slurm job %s (%zu array tasks); follow it with\n"
-              "  tamponade sweep status %s\nand when it has finished:\n"
-              "  tamponade sweep collect %s\n",
-              output.c_str(), indices.size(), relativeFolder.string().c_str(),
-              relativeFolder.string().c_str());
+  std::printf(
+      "sweep: submitted Slurm job %s (%zu array tasks); follow it with\n"
+      "  tamponade sweep status %s\nand when it has finished:\n"
+      "  tamponade sweep collect %s\n",
+      output.c_str(), indices.size(), relativeFolder.string().c_str(),
+      relativeFolder.string().c_str());
   return 0;
 }
 

@@ -14,7 +14,7 @@ namespace tools {
 struct SlurmOptions {
   std::string partition;  // "" = the cluster's default
   std::string account;
-  std::string time;  // e.g. "01:00:00"; "" = the partition's default
+  std::string time;    // e.g. "01:00:00"; "" = the partition's default
   std::string memory;  // e.g. "4G"; "" = the partition's default
   int cpusPerTask = 1;
   int maxParallel = 0;  // the array's %N throttle; 0 = no throttle

@@ -119,11 +119,11 @@ Protocol ProtocolParser::parse(const toml::table& document) {
 
   std::vector<Diagnostic> diagnostics = std::move(reader_.diagnostics());
   if (!diagnostics.empty()) {
-    std::stable_sort(
-        diagnostics.begin(), diagnostics.end(), [](const Diagnostic& a, const Diagnostic& b) {
-          return std::tie(a.where.file, a.where.line, a.where.column) <
-                 std::tie(b.where.file, b.where.line, b.where.column);
-        });
+    std::stable_sort(diagnostics.begin(), diagnostics.end(),
+                     [](const Diagnostic& a, const Diagnostic& b) {
+                       return std::tie(a.where.file, a.where.line, a.where.column) <
+                              std::tie(b.where.file, b.where.line, b.where.column);
+                     });
     throw ProtocolError(std::move(diagnostics));
   }
   return p;

@@ -3,8 +3,8 @@
 // parse_protocol.h so that only the protocols layer sees toml++.
 #pragma once
 
-#include <filesystem>
 #include <toml++/toml.h>
+#include <filesystem>
 
 #include "protocols/format/protocol.h"
 

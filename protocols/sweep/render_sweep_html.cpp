@@ -117,10 +117,10 @@ void renderPanel(std::ostringstream& s, const SweepManifest& m, const std::vecto
   auto py = [&](double f) { return kTop + (1.0 - f) * plotH; };
   const PanelLines lines = panelLines(m, rows, region, axis);
   const double legendHeight = 16.0 * static_cast<double>(lines.labels.size());
-  s << "<figure><svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(kWidth)
-    << "\" height=\"" << num(kHeight + legendHeight) << "\" role=\"img\">\n<text x=\""
-    << num(kLeft) << "\" y=\"" << num(kTop - 10) << "\" font-size=\"13\" font-weight=\"bold\">"
-    << escapeXml(region) << "</text>\n";
+  s << "<figure><svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << num(kWidth) << "\" height=\""
+    << num(kHeight + legendHeight) << "\" role=\"img\">\n<text x=\"" << num(kLeft) << "\" y=\""
+    << num(kTop - 10) << "\" font-size=\"13\" font-weight=\"bold\">" << escapeXml(region)
+    << "</text>\n";
   renderAxes(s, m, axis, plotW, plotH);
   for (std::size_t l = 0; l < lines.labels.size(); ++l) {
     const char* colour = kLineColours[l % kLineColours.size()];
@@ -133,9 +133,9 @@ void renderPanel(std::ostringstream& s, const SweepManifest& m, const std::vecto
       s << "<circle cx=\"" << num(px(x)) << "\" cy=\"" << num(py(f)) << "\" r=\"3\" fill=\""
         << colour << "\"/>\n";
     const double y = kHeight - 4 + 16.0 * static_cast<double>(l);
-    s << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(y - 9) << "\" width=\"10\" height=\"10\" fill=\""
-      << colour << "\"/><text x=\"" << num(kLeft + 16) << "\" y=\"" << num(y)
-      << "\" font-size=\"11\">" << escapeXml(lines.labels[l]) << "</text>\n";
+    s << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(y - 9)
+      << "\" width=\"10\" height=\"10\" fill=\"" << colour << "\"/><text x=\"" << num(kLeft + 16)
+      << "\" y=\"" << num(y) << "\" font-size=\"11\">" << escapeXml(lines.labels[l]) << "</text>\n";
   }
   s << "</svg>\n<figcaption>" << escapeXml(region)
     << " covered at the end of the schedule, against " << escapeXml(m.keys.front())
@@ -155,8 +155,7 @@ std::string renderSweepHtml(const SweepManifest& manifest, const std::vector<Swe
   std::size_t done = 0;
   for (const SweepRow& row : rows) done += row.hasResults() ? 1 : 0;
   s << "<p>" << done << " of " << rows.size() << " points have results. Sweep file "
-    << escapeXml(manifest.sweepFile) << ", base protocol " << escapeXml(manifest.base)
-    << ".</p>\n";
+    << escapeXml(manifest.sweepFile) << ", base protocol " << escapeXml(manifest.base) << ".</p>\n";
   std::vector<SweepRow> withResults;
   for (const SweepRow& row : rows)
     if (row.hasResults()) withResults.push_back(row);

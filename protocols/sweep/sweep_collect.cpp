@@ -99,7 +99,8 @@ std::string renderSweepCsv(const SweepManifest& manifest, const std::vector<Swee
   s << "point";
   for (const auto& k : manifest.keys) s << "," << csvField(k);
   s << ",state,run_seconds";
-  for (const auto& r : c.regions) s << "," << csvField(r + " final") << "," << csvField(r + " mean");
+  for (const auto& r : c.regions)
+    s << "," << csvField(r + " final") << "," << csvField(r + " mean");
   for (const auto& b : c.breaks)
     s << "," << csvField(b + " covered at end") << "," << csvField(b + " time covered");
   for (const auto& a : c.accuracy) s << "," << csvField(a);

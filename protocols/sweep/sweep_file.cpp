@@ -1,13 +1,13 @@
 #include "protocols/sweep/sweep_file.h"
 
+#include <toml++/toml.h>
 #include <algorithm>
 #include <fstream>
 #include <sstream>
-#include <toml++/toml.h>
 
+#include "protocols/coverage/frame_coverage.h"
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/parameter_table.h"
-#include "protocols/coverage/frame_coverage.h"
 #include "protocols/sweep/sweep_range.h"
 
 namespace protocols {
@@ -110,7 +110,8 @@ struct SweepFileReader {
           plan.plotRegions.push_back(*region);
         } else {
           std::string names;
-          for (const auto& r : kReportedRegions) names += (names.empty() ? "" : ", ") + std::string(r.name);
+          for (const auto& r : kReportedRegions)
+            names += (names.empty() ? "" : ", ") + std::string(r.name);
           error((*list)[k], "[plots] regions: " + shownValue((*list)[k]) + " is not a region",
                 "the regions are: " + names);
         }
@@ -126,8 +127,9 @@ struct SweepFileReader {
       if (std::find(kSweepFileKeys.begin(), kSweepFileKeys.end(), name.str()) ==
           kSweepFileKeys.end())
         error(node, "unknown key '" + std::string(name.str()) + "' in a sweep file",
-              didYouMean(name.str(), kSweepFileKeys) + " a sweep file has base, title, combine, "
-                                                       "[vary] and [plots] (docs/sweeps.md)");
+              didYouMean(name.str(), kSweepFileKeys) +
+                  " a sweep file has base, title, combine, "
+                  "[vary] and [plots] (docs/sweeps.md)");
     readBase(doc, plan);
     if (auto title = doc["title"].value<std::string>()) plan.title = *title;
     if (const toml::node* combine = doc.get("combine")) {
@@ -143,9 +145,11 @@ struct SweepFileReader {
       readVary(*vary, "", plan);
       // toml++ keeps a table's keys sorted; the sweep's key order (the plots' x axis is the first
       // key) is the order of the file.
-      std::stable_sort(plan.keys.begin(), plan.keys.end(), [](const SweepKey& a, const SweepKey& b) {
-        return std::pair(a.where.line, a.where.column) < std::pair(b.where.line, b.where.column);
-      });
+      std::stable_sort(plan.keys.begin(), plan.keys.end(),
+                       [](const SweepKey& a, const SweepKey& b) {
+                         return std::pair(a.where.line, a.where.column) <
+                                std::pair(b.where.line, b.where.column);
+                       });
       if (vary->empty())
         error(*vary, "[vary] is empty", "add a key to vary, e.g. \"tamponade.fill\" = [\"80 %\"]");
     } else {
@@ -163,18 +167,18 @@ struct SweepFileReader {
     const toml::node* base = doc.get("base");
     const auto text = base ? base->value_exact<std::string>() : std::nullopt;
     if (!text) {
-      problems.push_back(Diagnostic{
-          base ? locate(file, base->source()) : SourceLocation{file.string(), 1, 1},
-          "the sweep file needs base = \"<protocol file>\"",
-          "name the protocol every point starts from, relative to this file's folder"});
+      problems.push_back(
+          Diagnostic{base ? locate(file, base->source()) : SourceLocation{file.string(), 1, 1},
+                     "the sweep file needs base = \"<protocol file>\"",
+                     "name the protocol every point starts from, relative to this file's folder"});
       return;
     }
     const std::filesystem::path written(*text);
     plan.base = written.is_absolute() ? written : file.parent_path() / written;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(plan.base, ec))
-      error(*base, "base protocol '" + *text + "' is not a file (looked for " +
-                       plan.base.string() + ")",
+      error(*base,
+            "base protocol '" + *text + "' is not a file (looked for " + plan.base.string() + ")",
             "the path is relative to the sweep file's folder");
   }
 };
@@ -228,8 +232,7 @@ SweepPlan readSweepFile(const std::filesystem::path& file, std::vector<Diagnosti
   std::ifstream in(file, std::ios::binary);
   std::error_code ec;
   if (!in || std::filesystem::is_directory(file, ec)) {
-    problems.push_back(Diagnostic{SourceLocation{file.string(), 0, 0},
-                                  "cannot open the sweep file",
+    problems.push_back(Diagnostic{SourceLocation{file.string(), 0, 0}, "cannot open the sweep file",
                                   "check the path (data/sweeps/ has examples)"});
     return {};
   }

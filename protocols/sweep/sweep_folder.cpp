@@ -91,9 +91,12 @@ void writeSweepFolder(const SweepPlan& plan, const std::filesystem::path& folder
   json points = json::array();
   for (const SweepManifestPoint& p : m.points)
     points.push_back({{"id", p.id}, {"values", p.values}, {"protocol_hash", p.protocolHash}});
-  const json manifest = {{"format", kManifestFormat}, {"title", m.title},
-                         {"sweep_file", m.sweepFile}, {"base", m.base},
-                         {"keys", m.keys},          {"plot_regions", m.plotRegions},
+  const json manifest = {{"format", kManifestFormat},
+                         {"title", m.title},
+                         {"sweep_file", m.sweepFile},
+                         {"base", m.base},
+                         {"keys", m.keys},
+                         {"plot_regions", m.plotRegions},
                          {"points", points}};
   std::filesystem::create_directories(folder / "points");
   for (const SweepPoint& p : plan.points) {

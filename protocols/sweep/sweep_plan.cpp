@@ -43,11 +43,11 @@ std::vector<std::vector<std::size_t>> combinations(const SweepPlan& plan, std::s
   if (count > static_cast<double>(maxPoints)) {
     char shown[32];
     std::snprintf(shown, sizeof shown, "%.0f", count);
-    problems.push_back(Diagnostic{
-        SourceLocation{plan.file.string(), 1, 1},
-        "the sweep has " + std::string(shown) + " points, more than --max-points " +
-            std::to_string(maxPoints),
-        "check the ranges' steps, or raise --max-points if you mean it"});
+    problems.push_back(Diagnostic{SourceLocation{plan.file.string(), 1, 1},
+                                  "the sweep has " + std::string(shown) +
+                                      " points, more than --max-points " +
+                                      std::to_string(maxPoints),
+                                  "check the ranges' steps, or raise --max-points if you mean it"});
   }
   if (!problems.empty()) return {};
   std::vector<std::vector<std::size_t>> points;

@@ -16,9 +16,9 @@ bool isIndex(const std::string& s) {
 toml::table valueAtItsPlace(const SweepValue& value) {
   const int line = std::max(value.where.line, 1);
   const int column = std::max(value.where.column, 3);
-  const std::string text =
-      std::string(static_cast<std::size_t>(line - 1), '\n') +
-      std::string(static_cast<std::size_t>(column - 3), ' ') + "v=" + value.toml + "\n";
+  const std::string text = std::string(static_cast<std::size_t>(line - 1), '\n') +
+                           std::string(static_cast<std::size_t>(column - 3), ' ') +
+                           "v=" + value.toml + "\n";
   return toml::parse(text, value.where.file);
 }
 
@@ -39,8 +39,9 @@ std::string setAt(toml::table& doc, const std::string& path, toml::node& value) 
         return "the base protocol's " + shown + " has " + std::to_string(array->size()) +
                " element(s), numbered from 0, so " + part + " is not one of them";
       if (last) {
-        value.visit([&](auto& v) { array->replace(array->cbegin() + static_cast<long>(index),
-                                                  std::move(v)); });
+        value.visit([&](auto& v) {
+          array->replace(array->cbegin() + static_cast<long>(index), std::move(v));
+        });
         return {};
       }
       at = array->get(index);
@@ -66,8 +67,8 @@ std::string setAt(toml::table& doc, const std::string& path, toml::node& value) 
 
 }  // namespace
 
-toml::table pointDocument(std::string_view baseText, const SweepPlan& plan,
-                          const SweepPoint& point, std::vector<Diagnostic>& problems) {
+toml::table pointDocument(std::string_view baseText, const SweepPlan& plan, const SweepPoint& point,
+                          std::vector<Diagnostic>& problems) {
   toml::table doc = toml::parse(baseText, plan.base.string());
   for (std::size_t k = 0; k < plan.keys.size(); ++k) {
     const SweepKey& key = plan.keys[k];
@@ -86,21 +87,20 @@ std::string pointProtocolText(toml::table document, const SweepPlan& plan,
     const std::filesystem::path written(*mesh);
     if (!written.is_absolute())
       document["eye"].as_table()->insert_or_assign(
-          "mesh", std::filesystem::absolute(plan.base.parent_path() / written)
-                      .lexically_normal()
-                      .string());
+          "mesh",
+          std::filesystem::absolute(plan.base.parent_path() / written).lexically_normal().string());
   }
   const bool titleVaried = std::any_of(plan.keys.begin(), plan.keys.end(),
                                        [](const SweepKey& k) { return k.path == "title"; });
   if (!titleVaried) {
-    const std::string baseTitle = document["title"].value_or(
-        plan.title.empty() ? plan.base.stem().string() : plan.title);
+    const std::string baseTitle =
+        document["title"].value_or(plan.title.empty() ? plan.base.stem().string() : plan.title);
     document.insert_or_assign("title", baseTitle + " [" + plan.describe(point) + "]");
   }
   std::ostringstream text;
   text << "# Sweep point " << point.id << " of " << plan.points.size() << ": "
-       << plan.describe(point) << "\n# made by tamponade sweep from " << plan.file.filename().string()
-       << " (base " << plan.base.filename().string() << ")\n\n"
+       << plan.describe(point) << "\n# made by tamponade sweep from "
+       << plan.file.filename().string() << " (base " << plan.base.filename().string() << ")\n\n"
        << toml::toml_formatter(document) << "\n";
   return text.str();
 }

@@ -3,9 +3,9 @@
 // the line the user wrote it (protocols/format/parse_protocol_document.h).
 #pragma once
 
+#include <toml++/toml.h>
 #include <filesystem>
 #include <string>
-#include <toml++/toml.h>
 #include <vector>
 
 #include "protocols/format/protocol_error.h"
@@ -15,12 +15,11 @@ namespace protocols {
 
 // The base document with the point's values set. A path the base cannot hold (an index past
 // its postures) is appended to `problems`.
-toml::table pointDocument(std::string_view baseText, const SweepPlan& plan,
-                          const SweepPoint& point, std::vector<Diagnostic>& problems);
+toml::table pointDocument(std::string_view baseText, const SweepPlan& plan, const SweepPoint& point,
+                          std::vector<Diagnostic>& problems);
 
 // The point's document as a protocol file of its own: a relative eye.mesh made absolute (the file
 // lives in the sweep's folder), the title naming the point, and a header comment.
-std::string pointProtocolText(toml::table document, const SweepPlan& plan,
-                              const SweepPoint& point);
+std::string pointProtocolText(toml::table document, const SweepPlan& plan, const SweepPoint& point);
 
 }  // namespace protocols

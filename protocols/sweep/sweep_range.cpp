@@ -37,8 +37,7 @@ std::string withUnit(double value, const RangeNumber& like) {
 }
 
 std::string valueToml(double value, const RangeNumber& like, bool integers) {
-  if (like.isString)
-    return "\"" + withUnit(value, like) + "\"";
+  if (like.isString) return "\"" + withUnit(value, like) + "\"";
   if (integers) return std::to_string(std::llround(value));
   std::string text = shortestNumber(value);
   if (text.find_first_of(".en") == std::string::npos) text += ".0";  // a TOML float
@@ -87,10 +86,10 @@ std::vector<SweepValue> expandRange(const toml::table& range, const std::string&
     if (*count > 1'000'000) return fail("count " + std::to_string(*count) + " is too many points");
     integers = false;
     for (std::int64_t k = 0; k < *count; ++k)
-      values.push_back(*count == 1 ? from->value
-                                   : from->value + static_cast<double>(k) *
-                                                       (to->value - from->value) /
-                                                       static_cast<double>(*count - 1));
+      values.push_back(*count == 1
+                           ? from->value
+                           : from->value + static_cast<double>(k) * (to->value - from->value) /
+                                               static_cast<double>(*count - 1));
   } else {
     const auto step = readRangeNumber(*stepNode);
     if (!step || step->unit != from->unit || step->isString != from->isString)

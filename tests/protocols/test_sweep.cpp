@@ -28,14 +28,15 @@ std::filesystem::path sweepFolder(const std::string& name, const std::string& sw
   const auto dir = std::filesystem::temp_directory_path() / ("tamponade_test_sweep_" + name);
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
-  std::ofstream(dir / "base.toml") << "format_version = 1\ntitle = \"Base\"\n"
-                                      "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
-                                      "[[eye.breaks]]\nname = \"superior tear\"\nclock_hour = 12\n"
-                                      "posterior_to_limbus = \"14 mm\"\ndiameter = \"2 mm\"\n"
-                                      "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"90 %\"\n"
-                                      "[[schedule.postures]]\nname = \"upright\"\n"
-                                      "duration = \"equilibrium\"\n"
-                                      "[accuracy]\npreset = \"draft\"\n";
+  std::ofstream(dir / "base.toml")
+      << "format_version = 1\ntitle = \"Base\"\n"
+         "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
+         "[[eye.breaks]]\nname = \"superior tear\"\nclock_hour = 12\n"
+         "posterior_to_limbus = \"14 mm\"\ndiameter = \"2 mm\"\n"
+         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"90 %\"\n"
+         "[[schedule.postures]]\nname = \"upright\"\n"
+         "duration = \"equilibrium\"\n"
+         "[accuracy]\npreset = \"draft\"\n";
   std::ofstream(dir / "sweep.toml") << sweepText;
   return dir;
 }
@@ -72,8 +73,7 @@ TEST_CASE("Sweep ranges include both ends and print their values exactly", "[uni
   // 0.8 + 2 * 0.05 is 0.9000000000000001 in binary: printed as written.
   CHECK(values("{ from = 0.8, to = 0.95, count = 4 }") ==
         std::vector<std::string>{"0.8", "0.85", "0.9", "0.95"});
-  CHECK(values("{ from = 10, to = 40, step = 15 }") ==
-        std::vector<std::string>{"10", "25", "40"});
+  CHECK(values("{ from = 10, to = 40, step = 15 }") == std::vector<std::string>{"10", "25", "40"});
   CHECK(values("{ from = \"40 deg\", to = \"10 deg\", step = \"-15 deg\" }") ==
         std::vector<std::string>{"\"40 deg\"", "\"25 deg\"", "\"10 deg\""});
   CHECK(problems.empty());
@@ -89,14 +89,16 @@ TEST_CASE("Sweep ranges include both ends and print their values exactly", "[uni
 
 TEST_CASE("A sweep's points: every combination in file order, each a valid protocol",
           "[unit][sweep]") {
-  const auto dir = sweepFolder("plan", "base = \"base.toml\"\n[vary]\n"
-                                       "\"tamponade.fill\" = [\"80 %\", \"95 %\"]\n"
-                                       "\"schedule.postures.0.name\" = [\"upright\", \"supine\", "
-                                       "\"face-down\"]\n");
+  const auto dir = sweepFolder("plan",
+                               "base = \"base.toml\"\n[vary]\n"
+                               "\"tamponade.fill\" = [\"80 %\", \"95 %\"]\n"
+                               "\"schedule.postures.0.name\" = [\"upright\", \"supine\", "
+                               "\"face-down\"]\n");
   const SweepPlan plan = planSweep(dir / "sweep.toml");
   REQUIRE(plan.points.size() == 6);
   CHECK(plan.keys[0].path == "tamponade.fill");  // the file's order, not the alphabet's
-  CHECK(plan.describe(plan.points[0]) == "tamponade.fill = 80 %, schedule.postures.0.name = upright");
+  CHECK(plan.describe(plan.points[0]) ==
+        "tamponade.fill = 80 %, schedule.postures.0.name = upright");
   CHECK(plan.describe(plan.points[5]) ==
         "tamponade.fill = 95 %, schedule.postures.0.name = face-down");
   CHECK(plan.points[5].id == "p006");
@@ -109,9 +111,10 @@ TEST_CASE("A sweep's points: every combination in file order, each a valid proto
 }
 
 TEST_CASE("Zipped sweeps pair the lists' values", "[unit][sweep]") {
-  const auto dir = sweepFolder("zip", "base = \"base.toml\"\ncombine = \"zip\"\n[vary]\n"
-                                      "\"tamponade.fill\" = [\"80 %\", \"95 %\"]\n"
-                                      "\"tamponade.agent\" = [\"silicone_oil_1000\", \"densiron_68\"]\n");
+  const auto dir = sweepFolder("zip",
+                               "base = \"base.toml\"\ncombine = \"zip\"\n[vary]\n"
+                               "\"tamponade.fill\" = [\"80 %\", \"95 %\"]\n"
+                               "\"tamponade.agent\" = [\"silicone_oil_1000\", \"densiron_68\"]\n");
   const SweepPlan plan = planSweep(dir / "sweep.toml");
   REQUIRE(plan.points.size() == 2);
   CHECK(plan.describe(plan.points[1]) == "tamponade.fill = 95 %, tamponade.agent = densiron_68");
@@ -119,13 +122,15 @@ TEST_CASE("Zipped sweeps pair the lists' values", "[unit][sweep]") {
 
 TEST_CASE("A sweep point's relative mesh path still finds the mesh from the sweep's folder",
           "[unit][sweep]") {
-  const auto dir = sweepFolder("mesh", "base = \"base.toml\"\n[vary]\n\"tamponade.fill\" = [0.8]\n");
+  const auto dir =
+      sweepFolder("mesh", "base = \"base.toml\"\n[vary]\n\"tamponade.fill\" = [0.8]\n");
   std::filesystem::copy_file(kSource / "data/meshes/emmetropic_al23.58mm.stl", dir / "eye.stl");
-  std::ofstream(dir / "base.toml") << "format_version = 1\n[eye]\nkind = \"mesh\"\nside = \"OD\"\n"
-                                      "mesh = \"eye.stl\"\nmesh_units = \"mm\"\n"
-                                      "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"90 %\"\n"
-                                      "[[schedule.postures]]\nname = \"upright\"\n"
-                                      "duration = \"equilibrium\"\n";
+  std::ofstream(dir / "base.toml")
+      << "format_version = 1\n[eye]\nkind = \"mesh\"\nside = \"OD\"\n"
+         "mesh = \"eye.stl\"\nmesh_units = \"mm\"\n"
+         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"90 %\"\n"
+         "[[schedule.postures]]\nname = \"upright\"\n"
+         "duration = \"equilibrium\"\n";
   const SweepPlan plan = planSweep(dir / "sweep.toml");
   const Protocol p =
       parseProtocolText(plan.points[0].protocolText, dir / "points/p001/protocol.toml");
@@ -174,9 +179,10 @@ TEST_CASE("Bad sweep files are refused before anything runs, at the line of the 
 
 TEST_CASE("tamponade sweep runs every point, resumes, retries failures and collects",
           "[unit][sweep]") {
-  const auto dir = sweepFolder("run", "base = \"base.toml\"\ntitle = \"Fill study\"\n[vary]\n"
-                                      "\"tamponade.fill\" = [\"70 %\", \"80 %\", \"90 %\"]\n"
-                                      "[plots]\nregions = [\"whole retina\", \"macula\"]\n");
+  const auto dir = sweepFolder("run",
+                               "base = \"base.toml\"\ntitle = \"Fill study\"\n[vary]\n"
+                               "\"tamponade.fill\" = [\"70 %\", \"80 %\", \"90 %\"]\n"
+                               "[plots]\nregions = [\"whole retina\", \"macula\"]\n");
   const auto out = dir / "out";
   auto r = runTamponade("sweep sweep.toml --out out --jobs 2", dir);
   INFO(r.output);
@@ -217,8 +223,9 @@ TEST_CASE("tamponade sweep runs every point, resumes, retries failures and colle
 }
 
 TEST_CASE("A sweep folder holding another sweep is refused", "[unit][sweep][bad-input]") {
-  const auto dir = sweepFolder("conflict", "base = \"base.toml\"\n[vary]\n"
-                                           "\"tamponade.fill\" = [\"80 %\"]\n");
+  const auto dir = sweepFolder("conflict",
+                               "base = \"base.toml\"\n[vary]\n"
+                               "\"tamponade.fill\" = [\"80 %\"]\n");
   REQUIRE(runTamponade("sweep sweep.toml --out out", dir).exitCode == 0);
   std::ofstream(dir / "other.toml") << "base = \"base.toml\"\n[vary]\n"
                                        "\"tamponade.fill\" = [\"85 %\"]\n";
@@ -232,8 +239,9 @@ TEST_CASE("A sweep folder holding another sweep is refused", "[unit][sweep][bad-
 
 TEST_CASE("tamponade sweep --slurm writes a job array over the unfinished points",
           "[unit][sweep]") {
-  const auto dir = sweepFolder("slurm", "base = \"base.toml\"\n[vary]\n"
-                                        "\"tamponade.fill\" = [\"70 %\", \"80 %\", \"90 %\"]\n");
+  const auto dir = sweepFolder("slurm",
+                               "base = \"base.toml\"\n[vary]\n"
+                               "\"tamponade.fill\" = [\"70 %\", \"80 %\", \"90 %\"]\n");
   auto r = runTamponade(
       "sweep sweep.toml --out out --slurm --no-submit --partition short --time 00:20:00 "
       "--mem 2G --cpus-per-task 2 --max-parallel 2",
@@ -266,4 +274,30 @@ TEST_CASE("tamponade sweep --slurm writes a job array over the unfinished points
   CHECK(r.exitCode == 1);
   CHECK(r.output.find("Slurm's sbatch is not on PATH, so nothing was submitted") !=
         std::string::npos);
+}
+
+TEST_CASE("A stopped simulated point resumes from its checkpoint to the uninterrupted result",
+          "[unit][sweep]") {
+  // tiny.toml shortened to 2 x 50 ms: about 60 steps at 1.2 mm (a stop request is honoured at
+  // the next checkpointable step, every 16).
+  const auto dir =
+      sweepFolder("resume", "base = \"" + (kSource / "data/protocols/tiny.toml").string() +
+                                "\"\n[vary]\n\"schedule.postures.0.duration\" = [\"0.05 s\"]\n"
+                                "\"schedule.postures.1.duration\" = [\"0.05 s\"]\n");
+  // The folder made without running (--no-submit), then point p001 stopped at step 5 as a Ctrl-C
+  // would leave it.
+  REQUIRE(runTamponade("sweep sweep.toml --out out --slurm --no-submit", dir).exitCode == 0);
+  const auto p1 = dir / "out/points/p001";
+  REQUIRE(runTamponade("run out/points/p001/protocol.toml --out out/points/p001 --threads 1 "
+                       "--stop-after-steps 5",
+                       dir)
+              .exitCode == 1);
+  REQUIRE(std::filesystem::exists(p1 / "checkpoint.h5"));
+  auto r = runTamponade("sweep sweep.toml --out out --jobs 1 --threads 1", dir);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK(readText(p1 / "run.log").find(" run --resume ") != std::string::npos);
+  r = runTamponade("sweep sweep.toml --out whole --jobs 1 --threads 1", dir);
+  REQUIRE(r.exitCode == 0);
+  CHECK(readText(dir / "whole/points/p001/coverage.csv") == readText(p1 / "coverage.csv"));
 }
