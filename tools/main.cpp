@@ -15,12 +15,12 @@ int runVersion(Args) {
   std::printf("tamponade %s\n", TAMPONADE_VERSION);
   return 0;
 }
-int runDemo(Args args);    // tools/cmd_demo.cpp
-int runMesh(Args args);    // tools/cmd_mesh.cpp
-int runBench(Args args);   // tools/cmd_bench.cpp
-int runPlan(Args args);    // tools/cmd_plan.cpp
-int runRun(Args args);     // tools/cmd_run.cpp
-int runReport(Args args);  // tools/cmd_report.cpp
+int runDemo(Args args);          // tools/cmd_demo.cpp
+int runMesh(Args args);          // tools/cmd_mesh.cpp
+int runBench(Args args);         // tools/cmd_bench.cpp
+int runPlan(Args args);          // tools/cmd_plan.cpp
+int runRun(Args args);           // tools/cmd_run.cpp
+int runReport(Args args);        // tools/cmd_report.cpp
 int runSweepCommand(Args args);  // tools/cmd_sweep.cpp
 }  // namespace tools
 
