@@ -15,6 +15,10 @@ check sim 'meshing/|anatomy/|protocols/|tools/|CGAL/|assimp/|hdf5|H5|toml' "sim 
 check meshing 'sim/|anatomy/|protocols/|tools/|toml' "meshing is geometry only"
 check anatomy 'sim/|protocols/|tools/|CGAL/|toml' "anatomy builds on meshing, never on sim"
 check protocols 'tools/|CGAL/' "protocols is below tools; CGAL stays in meshing"
+# Inside protocols: the scenario's data, then tissues, then assembly, then the runner.
+check protocols/scenario 'protocols/(tissue|assembly|run|equilibrium|sweep)/' "scenario/ is the data the layers above share"
+check protocols/tissue 'protocols/(assembly|run|equilibrium|sweep)/' "tissue/ builds on scenario/ only"
+check protocols/assembly 'protocols/(run|equilibrium|sweep)/' "assembly/ is below the runner"
 hdr=$(grep -rln "#include <CGAL/" "$root/meshing" --include='*.h' 2>/dev/null)
 if [ -n "$hdr" ]; then echo "CGAL included from a header (keep it in meshing .cpp files): $hdr"; status=1; fi
 [ $status -eq 0 ] && echo "layering ok"

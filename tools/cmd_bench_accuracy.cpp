@@ -18,10 +18,12 @@
 #include <omp.h>
 #endif
 
+#include "protocols/assembly/assemble_scenario.h"
+#include "protocols/assembly/pipeline_options.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/io_error.h"
 #include "protocols/report/report_format.h"
-#include "protocols/scenario/run_scenario.h"
+#include "protocols/run/run_scenario.h"
 #include "sim/core/error.h"
 #include "tools/cli_args.h"
 #include "tools/commands.h"

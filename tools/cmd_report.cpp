@@ -1,12 +1,12 @@
 // `tamponade report DIR`: rebuilds report.html, coverage.csv and summary.json of a run from its
-// frames.h5 (coverage recomputed from the frames; protocols/scenario/rebuild_report.h).
+// frames.h5 (coverage recomputed from the frames; protocols/run/rebuild_report.h).
 #include <cstdio>
 #include <filesystem>
 #include <string>
 
 #include "protocols/format/protocol_error.h"
 #include "protocols/io/io_error.h"
-#include "protocols/scenario/rebuild_report.h"
+#include "protocols/run/rebuild_report.h"
 #include "tools/commands.h"
 
 namespace tools {

@@ -1,6 +1,6 @@
 // The progress display of every command that runs a protocol (`run`, `bench accuracy`): a bar
 // with ETA on a terminal, redrawn at most ten times a second; plain throttled lines otherwise
-// (a log file has no carriage return). The text itself is protocols/scenario/progress_text.h's.
+// (a log file has no carriage return). The text itself is protocols/run/progress_text.h's.
 #pragma once
 
 #include <unistd.h>
@@ -8,7 +8,7 @@
 #include <chrono>
 #include <cstdio>
 
-#include "protocols/scenario/progress_text.h"
+#include "protocols/run/progress_text.h"
 
 namespace tools {
 

@@ -7,7 +7,7 @@
 #include "protocols/equilibrium/posture_equilibrium.h"
 #include "protocols/report/report_format.h"
 #include "protocols/report/write_report.h"
-#include "protocols/scenario/rebuild_report.h"
+#include "protocols/run/rebuild_report.h"
 
 namespace protocols {
 namespace {

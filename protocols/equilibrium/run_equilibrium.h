@@ -8,7 +8,7 @@
 
 #include <functional>
 
-#include "protocols/scenario/run_scenario.h"
+#include "protocols/run/run_scenario.h"
 
 namespace protocols {
 

@@ -46,7 +46,7 @@ inline constexpr std::array<std::string_view, 3> kAccuracyPresetNames = {"draft"
 enum class SurfaceStressName { kAuto, kCorrected, kSymmetric };
 inline constexpr std::array<std::string_view, 3> kSurfaceStressNames = {"auto", "corrected",
                                                                         "symmetric"};
-// The cavity wall's particles (protocols/scenario/layered_cavity_walls.h): "layered" three
+// The cavity wall's particles (protocols/assembly/layered_cavity_walls.h): "layered" three
 // lattice layers behind the mesh (the fluid fills the cavity up to it), "single_layer" one
 // Akinci layer on the mesh; "auto" layered unless an elastic tissue replaces part of the wall.
 enum class WallModelName { kAuto, kLayered, kSingleLayer };
@@ -139,7 +139,7 @@ inline constexpr double kEquilibriumHold = 1.0;
 struct ScheduleSpec {
   Located<double> gravity;  // [m/s^2] magnitude
   std::vector<Posture> postures;
-  // "until steady" postures (protocols/scenario/steady_state.h): the window [s] and the largest
+  // "until steady" postures (protocols/run/steady_state.h): the window [s] and the largest
   // coverage change [1] of any region or break within it.
   Located<double> steadyWindow;
   Located<double> steadyCoverageChange;

@@ -146,7 +146,7 @@ std::string renderReportHtml(const ReportInput& in) {
     s << "<ul>\n";
     for (const auto& line : in.tissue) s << "<li>" << escapeXml(line) << "</li>\n";
     s << "</ul>\n<p>Displacements from the rest state; the coverage above is measured on the "
-         "retina where the tissue has carried it (protocols/scenario/tissue_particles.h).</p>\n";
+         "retina where the tissue has carried it (protocols/tissue/tissue_particles.h).</p>\n";
   }
 
   s << "<h2>Retinal breaks</h2>\n";

@@ -22,7 +22,10 @@
 //     no solver runs with the format's default, "indsph" (with the older, compressed fill rules:
 //     "wcsph", with a note); one that names a missing solver is an error.
 // Tissues (sclera, orbital fat): decided elastic or rigid and, when elastic, sampled as elastic
-// particles that replace the wall they cover (protocols/scenario/tissue_particles.h).
+// particles that replace the wall they cover (protocols/tissue/tissue_particles.h).
+// Each step is a function of its own, called in this order by assembleScenario
+// (assemble_scenario.cpp): scenario_setup.h, cavity.h, fluid_phases.h (the World), cavity_walls.h,
+// the tissues, interface_physics.h, fluid_fill.h, pipeline_options.h.
 #pragma once
 
 #include <memory>
@@ -36,7 +39,7 @@
 #include "protocols/coverage/frame_coverage.h"
 #include "protocols/format/protocol.h"
 #include "protocols/scenario/memory_estimate.h"
-#include "protocols/scenario/tissue_particles.h"
+#include "protocols/scenario/tissue_body.h"
 #include "sim/world/pipeline.h"
 #include "sim/world/stage_registry.h"
 #include "sim/world/world.h"
@@ -176,40 +179,5 @@ struct Scenario {
   std::vector<std::uint8_t> tamponadeFlags() const;
   double totalDuration() const;  // [s] sum of the schedule's durations
 };
-
-// Throws ProtocolError (file:line:column of the value responsible) when the protocol cannot be
-// made concrete: an anatomy parameter out of its range, a break off the retina, a solver or a
-// forced effect this build does not have, a fill that leaves a phase without particles, an
-// outputs.fields name that is not a particle field of the assembled pipeline (with "did you mean").
-Scenario assembleScenario(const Protocol& protocol, const ScenarioOptions& options = {});
-
-// Throws ProtocolError at accuracy.min_time_step when the scene's first step (`first`, chosen by
-// the assembled pipeline before any step) had to be raised to the minimum: every step would be
-// longer than the stages allow, which the engine refuses as unstable once running.
-void requireStartTimeStep(const Scenario& scenario, const sim::TimeStepInfo& first);
-
-// INDSPH's Jacobi relaxation in eye scenes (the engine's default is 0.5; why: scenario.cpp).
-inline constexpr double kEyeIndsphRelaxation = 0.8;
-
-// Whether the named pressure solver iterates to accuracy.solver_tolerance (DFSPH, INDSPH, IISPH);
-// the explicit solvers (WCSPH, number_density) have no solve to stop.
-bool isImplicitSolver(const std::string& solver);
-
-// Contact angles through the tamponade [deg] at which the wall-wetting model holds the requested
-// angle within 5 deg on a flat wall of layered wall particles (docs/methods/interface.md,
-// validation 3: tests at 30, 60, 90 and 120). The library's oils (18 deg through the aqueous, 162
-// through the oil) lie outside it, where the sessile benchmarks did not settle at the requested
-// angle.
-inline constexpr double kTestedContactAngleMin = 30.0;
-inline constexpr double kTestedContactAngleMax = 120.0;
-// The scenario note for a contact angle outside that range, saying how the model errs there;
-// empty inside it.
-std::string contactAngleRangeNote(double throughTamponadeDeg);
-// What the retina is made of in a scene: the layered cavity wall (accuracy.wall_model, the wall
-// the range above was measured on), one layer of wall particles, or an elastic sclera's lattice.
-enum class RetinaWall { kLayered, kSingleLayer, kElasticSclera };
-// The scenario note for any contact angle on the eye's wall: how well that wall holds it
-// (docs/methods/interface.md, validations 3 and 5).
-std::string contactAngleWallModelNote(RetinaWall wall);
 
 }  // namespace protocols

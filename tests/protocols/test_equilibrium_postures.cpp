@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <string>
 
+#include "protocols/assembly/assemble_scenario.h"
 #include "protocols/equilibrium/run_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/format/protocol_error.h"

@@ -1,4 +1,4 @@
-// The layered cavity wall (protocols/scenario/layered_cavity_walls.h): layers cut from the fluid
+// The layered cavity wall (protocols/assembly/layered_cavity_walls.h): layers cut from the fluid
 // lattice behind the eye's cavity mesh.
 #include <catch2/catch.hpp>
 
@@ -11,7 +11,7 @@
 #include "meshing/mesh_measures.h"
 #include "meshing/mesh_query.h"
 #include "meshing/sample_volume.h"
-#include "protocols/scenario/layered_cavity_walls.h"
+#include "protocols/assembly/layered_cavity_walls.h"
 
 using namespace protocols;
 

@@ -16,9 +16,9 @@
 
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/frame_reader.h"
-#include "protocols/scenario/progress_text.h"
-#include "protocols/scenario/run_scenario.h"
-#include "protocols/scenario/steady_state.h"
+#include "protocols/run/progress_text.h"
+#include "protocols/run/run_scenario.h"
+#include "protocols/run/steady_state.h"
 #include "sim/core/particle_set.h"
 #include "tamponade_command.h"
 #include "xml_checker.h"

@@ -11,9 +11,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "protocols/assembly/assemble_scenario.h"
+#include "protocols/assembly/wall_wetting_notes.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/format/protocol_error.h"
-#include "protocols/scenario/plan_scenario.h"
+#include "protocols/run/plan_scenario.h"
 #include "protocols/scenario/scenario.h"
 
 namespace fs = std::filesystem;

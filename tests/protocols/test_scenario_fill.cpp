@@ -11,8 +11,9 @@
 #include <filesystem>
 
 #include "meshing/mesh_query.h"
+#include "protocols/assembly/assemble_scenario.h"
+#include "protocols/assembly/relax_fill.h"
 #include "protocols/format/parse_protocol.h"
-#include "protocols/scenario/relax_fill.h"
 #include "protocols/scenario/scenario.h"
 #include "sim/world/pipeline.h"
 #include "sim/world/stage_registry.h"

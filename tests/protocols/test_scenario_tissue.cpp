@@ -1,4 +1,4 @@
-// Elastic tissue in eye scenarios (protocols/scenario/tissue_particles.h): the decision
+// Elastic tissue in eye scenarios (protocols/tissue/tissue_particles.h): the decision
 // in both directions, the elastic sclera/fat replacing the wall they cover, the example protocols
 // (validate and plan), a few steps of the paper's experiment with its report, and bad input.
 #include <unistd.h>
@@ -12,14 +12,17 @@
 #include <numbers>
 
 #include "meshing/mesh_query.h"
+#include "protocols/assembly/assemble_scenario.h"
+#include "protocols/assembly/wall_wetting_notes.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/format/protocol_error.h"
 #include "protocols/io/frame_reader.h"
-#include "protocols/scenario/enclosure.h"
+#include "protocols/run/rebuild_report.h"
+#include "protocols/run/run_scenario.h"
 #include "protocols/scenario/point_grid.h"
-#include "protocols/scenario/rebuild_report.h"
-#include "protocols/scenario/run_scenario.h"
 #include "protocols/scenario/scenario.h"
+#include "protocols/tissue/enclosure.h"
+#include "protocols/tissue/tissue_measures.h"
 #include "sim/boundary/wall_layers.h"
 #include "sim/boundary/wetted_surface.h"
 #include "sim/solid/fixed_particles.h"
@@ -421,7 +424,7 @@ TEST_CASE(
   CHECK(wallNearFree == 0);
 }
 
-// The enclosure check itself (protocols/scenario/enclosure.h) on a cube of side 10 d with a
+// The enclosure check itself (protocols/tissue/enclosure.h) on a cube of side 10 d with a
 // point at its centre: its faces sampled on a square lattice at d/2 are closed at clearance d/2
 // (no point of a face farther than 0.35 d from a sample), at d they are open (0.71 d), and a hole
 // of radius d cut into a d/2 face is found, the path passing through it.
@@ -499,7 +502,7 @@ double widestOpening(const Scenario& s, double cell) {
 // into the limbus clamp band left the tissue assembly through openings in the walls around it
 // (the collar, its fan, the backstop, the orbit) near (2.4, -14, 11.6) mm, the nearest wall
 // particle 1.6-2.9 d away, and reached y -19..-21 mm. A geometric check on the assembled scenes
-// (protocols/scenario/enclosure.h, no stepping): the widest opening is the largest clearance from
+// (protocols/tissue/enclosure.h, no stepping): the widest opening is the largest clearance from
 // every wall particle at which a chain of grid points (spacing d/4) leads from a fluid particle to
 // the domain's edge. The reference is the rigid cavity wall of the physiological eye (d/2
 // samples, the same spacing d): it holds the fluid in every rigid run, and by this measure its

@@ -7,8 +7,10 @@
 #include <filesystem>
 #include <map>
 
+#include "protocols/assembly/assemble_scenario.h"
+#include "protocols/assembly/pipeline_options.h"
 #include "protocols/format/parse_protocol.h"
-#include "protocols/scenario/pressure_solve_totals.h"
+#include "protocols/run/pressure_solve_totals.h"
 #include "protocols/scenario/scenario.h"
 #include "sim/world/pipeline.h"
 #include "sim/world/stage_registry.h"

@@ -240,7 +240,7 @@ TEST_CASE(
   CHECK(r.mean.dry == 0.0);
 }
 
-// The eye's case on its layered wall (protocols/scenario/layered_cavity_walls.h: three layers
+// The eye's case on its layered wall (protocols/assembly/layered_cavity_walls.h: three layers
 // cut from the fluid's lattice behind the sphere, the wall a staircase about it): the library
 // oils wet the retina at 18 deg through the aqueous, 162 deg through the oil, and fill most of the
 // eye, so the oil is the larger phase pressed against the wall and the aqueous a wetting lens.

@@ -14,8 +14,9 @@
 
 #include "protocols/coverage/schedule_coverage.h"
 #include "protocols/report/report_input.h"
-#include "protocols/scenario/pressure_solve_totals.h"
+#include "protocols/run/pressure_solve_totals.h"
 #include "protocols/scenario/scenario.h"
+#include "protocols/tissue/tissue_measures.h"
 #include "sim/world/pipeline.h"
 
 namespace protocols {

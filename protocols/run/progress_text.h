@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "protocols/scenario/run_scenario.h"
+#include "protocols/run/run_scenario.h"
 
 namespace protocols {
 

@@ -1,9 +1,10 @@
-#include "protocols/scenario/scenario_report_input.h"
+#include "protocols/run/scenario_report_input.h"
 
 #include <cmath>
 #include <numbers>
 #include <sstream>
 
+#include "protocols/assembly/pipeline_options.h"
 #include "protocols/report/report_format.h"
 
 namespace protocols {

@@ -26,9 +26,9 @@
 #include "protocols/coverage/schedule_coverage.h"
 #include "protocols/format/protocol.h"
 #include "protocols/io/frame_reader.h"
-#include "protocols/scenario/pressure_solve_totals.h"
+#include "protocols/run/pressure_solve_totals.h"
+#include "protocols/run/steady_state.h"
 #include "protocols/scenario/scenario.h"
-#include "protocols/scenario/steady_state.h"
 
 namespace protocols {
 

@@ -1,4 +1,4 @@
-#include "protocols/scenario/relax_fill.h"
+#include "protocols/assembly/relax_fill.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "protocols/scenario/steady_state.h"
+#include "protocols/run/steady_state.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "protocols/scenario/progress_text.h"
+#include "protocols/run/progress_text.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "protocols/scenario/pressure_solve_totals.h"
+#include "protocols/run/pressure_solve_totals.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "protocols/scenario/enclosure.h"
+#include "protocols/tissue/enclosure.h"
 
 #include <algorithm>
 #include <array>

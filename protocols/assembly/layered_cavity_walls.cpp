@@ -1,4 +1,4 @@
-#include "protocols/scenario/layered_cavity_walls.h"
+#include "protocols/assembly/layered_cavity_walls.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,16 +1,18 @@
-#include "protocols/scenario/rebuild_report.h"
+#include "protocols/run/rebuild_report.h"
 
-#include "protocols/scenario/run_scenario.h"
+#include "protocols/run/run_scenario.h"
 
 #include <algorithm>
 #include <fstream>
 #include <sstream>
 
+#include "protocols/assembly/assemble_scenario.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/frame_reader.h"
 #include "protocols/io/io_error.h"
 #include "protocols/report/write_report.h"
-#include "protocols/scenario/scenario_report_input.h"
+#include "protocols/run/scenario_report_input.h"
+#include "protocols/tissue/tissue_measures.h"
 #include "sim/world/stage_registry.h"
 
 namespace protocols {

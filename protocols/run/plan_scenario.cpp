@@ -1,4 +1,5 @@
-#include "protocols/scenario/plan_scenario.h"
+#include "protocols/run/plan_scenario.h"
+#include "protocols/assembly/assemble_scenario.h"
 
 #include <algorithm>
 #include <chrono>
