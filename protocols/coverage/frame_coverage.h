@@ -39,7 +39,7 @@ inline constexpr std::array<ReportedRegion, 9> kReportedRegions = {{
 // interface would flip the answer. 0.5 (most of the break sealed) is the documented choice.
 inline constexpr double kBreakCoveredFraction = 0.5;  // [1]
 
-// The retina as the coverage metrics see it; built once per scenario (protocols/scenario).
+// The retina as the coverage metrics see it; built once per scenario (protocols/assembly).
 struct RetinaMap {
   std::vector<double> areas;                         // [m^2] per wall particle, #W
   std::vector<anatomy::RegionSet> regions;           // per wall particle, #W (0 = not retina)

@@ -6,7 +6,7 @@
 // same coverage twice. The posture's maximum duration (protocol `max_duration`) bounds it anyway.
 //
 // Defaults, and why (emmetropic eye, 90 % SO 1000, d = 1.5 mm, WCSPH, see
-// protocols/scenario/README.md): after the start-up expansion the kinetic energy per mass falls
+// protocols/run/README.md): after the start-up expansion the kinetic energy per mass falls
 // from 0.94 J/kg to 5e-4 at 20 ms and then sits at a floor of 0.3-2e-6 J/kg (r.m.s. speed
 // 1-2 mm/s: the solver's jitter next to the wall). The threshold 5e-6 J/kg is just above that
 // floor. It cannot separate the slow buoyant creep after a posture change (3 % density

@@ -9,7 +9,7 @@
 // from a start's point to a point on the box's faces. With clearance d/2 a wall sampled at d/2
 // has no open point in it (in its plane no point is farther than 0.35 d from a wall particle on
 // a square d/2 lattice), one sampled at d has (0.71 d), which is the wall that leaked in
-// protocols/scenario/README.md. The grid resolves clearances to about cell / 2.
+// protocols/assembly/README.md. The grid resolves clearances to about cell / 2.
 #pragma once
 
 #include <vector>

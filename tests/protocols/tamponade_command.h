@@ -18,7 +18,7 @@ struct CommandResult {
 };
 
 // Passive OpenMP waiting: the CI machine is shared, and spinning threads that wait for a
-// descheduled one made steps 100x slower there (protocols/scenario/README.md). stderr goes to a
+// descheduled one made steps 100x slower there (tools/test.sh). stderr goes to a
 // pipe, so `tamponade run` prints its plain (non-terminal) progress lines.
 inline CommandResult runTamponade(const std::string& arguments,
                                   const std::filesystem::path& workingDirectory) {

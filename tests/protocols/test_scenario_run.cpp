@@ -27,7 +27,7 @@ struct CommandResult {
 };
 CommandResult runTamponade(const std::string& arguments, const fs::path& workingDirectory) {
   // Passive OpenMP waiting: the CI machine is shared, and spinning threads that wait for a
-  // descheduled one made steps 100x slower there (protocols/scenario/README.md).
+  // descheduled one made steps 100x slower there (tools/test.sh).
   const std::string command = "cd '" + workingDirectory.string() +
                               "' && OMP_WAIT_POLICY=passive '" + TAMPONADE_EXECUTABLE "' " +
                               arguments + " 2>&1";
