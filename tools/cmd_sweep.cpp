@@ -6,6 +6,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <thread>
 
@@ -173,8 +174,16 @@ int sweepStatus(const std::filesystem::path& folder) {
   std::printf("%s: %zu points: %zu done, %zu running, %zu pending, %zu failed, %zu stopped\n%s",
               folder.string().c_str(), m.points.size(), counts[2], counts[1], counts[0], counts[3],
               counts[4], lines.c_str());
-  if (counts[3] + counts[4] + counts[0] > 0 && counts[1] == 0)
+  const std::filesystem::path jobs = folder / "slurm" / "jobs.txt";
+  if (std::filesystem::exists(jobs)) {
+    std::ifstream in(jobs);
+    std::string id, last;
+    while (in >> id) last = id;
+    std::printf("submitted to Slurm as job %s: pending points may still be queued (squeue -j %s)\n",
+                last.c_str(), last.c_str());
+  } else if (counts[3] + counts[4] + counts[0] > 0 && counts[1] == 0) {
     std::printf("run the sweep command again (same file and --out) to run what is not done\n");
+  }
   return 0;
 }
 
