@@ -49,14 +49,12 @@ sim::SurfaceStressForm surfaceStressOf(SurfaceStressName name) {
 void setSolverParameters(const Protocol& p, Scenario& s) {
   sim::PipelineOptions& o = s.pipelineOptions;
   // The cavity is filled with oil and aqueous: no free surface (background_pressure's rule).
-  o.closedDomain = sim::Force::kOn;
+  o.closedDomain = sim::StageOverride::kOn;
   o.surfaceStress = surfaceStressOf(p.accuracy.surfaceStress.value);
   // accuracy.solver_tolerance is the mean relative density error every implicit pressure solve
   // stops at (each within its own iteration cap); the explicit solvers have no solve to stop.
-  o.dfsph.densityTolerance = s.accuracy.solverTolerance;
-  o.dfsph.divergenceTolerance = s.accuracy.solverTolerance;
-  o.indsph.tolerance = s.accuracy.solverTolerance;
-  o.iisph.tolerance = s.accuracy.solverTolerance;
+  for (const auto& entry : sim::solverRegistry())
+    if (entry.iterative()) entry.setTolerance(o, s.accuracy.solverTolerance);
   // INDSPH's Jacobi relaxation. The engine's 0.5 (IISPH's choice) under-relaxes the eye's closed,
   // layered cavity: on tiny.toml (docs/methods/solvers.md) it took 30.8 iterations per step
   // at 0.1 % and stalled at 0.022 % when asked for 0.01 % (every step at the 100-iteration cap);
@@ -89,14 +87,16 @@ void forceEffects(const Protocol& p, Scenario& s) {
       continue;
     }
     s.pipelineOptions.forced[name] =
-        setting.value == EffectSetting::kOn ? sim::Force::kOn : sim::Force::kOff;
+        setting.value == EffectSetting::kOn ? sim::StageOverride::kOn : sim::StageOverride::kOff;
   }
 }
 
 }  // namespace
 
 bool isImplicitSolver(const std::string& solver) {
-  return solver == "dfsph" || solver == "indsph" || solver == "iisph";
+  for (const auto& entry : sim::solverRegistry())
+    if (entry.name == solver) return entry.iterative();
+  return false;
 }
 
 void choosePipelineOptions(const Protocol& p, const ScenarioOptions& options, Scenario& s) {

@@ -38,7 +38,7 @@ StageDecision viscosityDecision(const World& w, const PipelineOptions& o, bool i
   const ViscosityTreatment t = chooseViscosityTreatment(w, solverLimit);
   const std::string name = implicitStage ? "implicit_viscosity" : "viscosity";
   const auto other = o.forced.find(implicitStage ? "viscosity" : "implicit_viscosity");
-  if (t.viscous && other != o.forced.end() && other->second == Force::kOn)
+  if (t.viscous && other != o.forced.end() && other->second == StageOverride::kOn)
     return StageDecision{name, false, false, "the other viscosity stage is forced on instead"};
   return StageDecision{name, t.viscous && t.implicit == implicitStage, false, t.reason};
 }
@@ -83,9 +83,10 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
   const char* consequence =
       ": a background pressure would pull the surface in; the surface stress then clumps the "
       "interface and under-states sigma (docs/methods/interface.md, validation 1b)";
-  if (o.closedDomain == Force::kOff)
+  if (o.closedDomain == StageOverride::kOff)
     return {name, false, false, std::string("the scene has a free surface") + consequence};
-  const std::size_t surface = o.closedDomain == Force::kOn ? 0 : countFreeSurfaceParticles(w);
+  const std::size_t surface =
+      o.closedDomain == StageOverride::kOn ? 0 : countFreeSurfaceParticles(w);
   if (surface > 0)
     return {name, false, false,
             std::to_string(surface) +
@@ -94,7 +95,7 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
                 consequence};
   std::ostringstream why;
   why.precision(3);
-  why << (o.closedDomain == Force::kOn ? "closed scene (declared)" : "closed scene")
+  why << (o.closedDomain == StageOverride::kOn ? "closed scene (declared)" : "closed scene")
       << " with interfacial tension under INDSPH: p_bg = " << chosenBackgroundPressure(w, o, *t)
       << " Pa keeps the surface stress from clumping the interface (tensile instability)";
   return {name, true, false, why.str()};
@@ -103,7 +104,8 @@ StageDecision backgroundPressureDecision(const World& w, const PipelineOptions& 
 // Whether effect `name` runs: the protocol's forcing if any, else its rule's decision.
 bool activeAfterForcing(const PipelineOptions& o, const std::string& name, bool ruleActive) {
   const auto f = o.forced.find(name);
-  return f != o.forced.end() && f->second != Force::kAuto ? f->second == Force::kOn : ruleActive;
+  return f != o.forced.end() && f->second != StageOverride::kAuto ? f->second == StageOverride::kOn
+                                                                  : ruleActive;
 }
 
 bool backgroundPressureActive(const World& w, const PipelineOptions& o) {
@@ -117,23 +119,33 @@ const std::vector<SolverEntry>& solverRegistry() {
       {"dfsph", "divergence-free SPH, mass-weighted density (Bender & Koschier 2017)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<DfsphBender2017>(o.dfsph);
+       },
+       [](PipelineOptions& o, Real tolerance) {
+         o.dfsph.densityTolerance = tolerance;
+         o.dfsph.divergenceTolerance = tolerance;
        }},
-      {"wcsph", "weakly compressible SPH, Tait equation (Becker & Teschner 2007)",
+      {"wcsph",
+       "weakly compressible SPH, Tait equation (Becker & Teschner 2007)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<WcsphBecker2007>(o.wcsph);
-       }},
+       },
+       {}},
       {"indsph", "incompressible number-density SPH for multiphase fluids (Wang et al. 2023)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<IndsphWang2023>(o.indsph);
-       }},
+       },
+       [](PipelineOptions& o, Real tolerance) { o.indsph.tolerance = tolerance; }},
       {"iisph", "implicit incompressible SPH, relaxed Jacobi (Ihmsen et al. 2013)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<IisphIhmsen2013>(o.iisph);
-       }},
-      {"number_density", "explicit number-density SPH, Tait EOS (Solenthaler & Pajarola 2008)",
+       },
+       [](PipelineOptions& o, Real tolerance) { o.iisph.tolerance = tolerance; }},
+      {"number_density",
+       "explicit number-density SPH, Tait EOS (Solenthaler & Pajarola 2008)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<NumberDensitySolenthaler2008>(o.wcsph);
-       }},
+       },
+       {}},
   };
   return entries;
 }

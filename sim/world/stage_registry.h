@@ -25,7 +25,8 @@
 
 namespace sim {
 
-enum class Force { kAuto, kOn, kOff };
+// A protocol's (or a test's) override of a stage's own rule: kAuto lets the rule decide.
+enum class StageOverride { kAuto, kOn, kOff };
 
 // Everything a pipeline can be configured with. Stages read the parts they need.
 struct PipelineOptions {
@@ -49,14 +50,18 @@ struct PipelineOptions {
   // stage needs: kOn / kOff as the scene knows it (the eye's filled cavity), kAuto: detected
   // from the number densities at assembly (countFreeSurfaceParticles; a jittered lattice can
   // read as a free surface there).
-  Force closedDomain = Force::kAuto;
-  std::map<std::string, Force> forced;  // effect name -> forced on/off
+  StageOverride closedDomain = StageOverride::kAuto;
+  std::map<std::string, StageOverride> forced;  // effect name -> forced on/off
 };
 
 struct SolverEntry {
   std::string name;
   std::string description;
   std::function<std::unique_ptr<PressureSolver>(const World&, const PipelineOptions&)> create;
+  // Iterative solvers only: sets the relative density error their solve stops at (explicit
+  // solvers have no solve to stop and leave it empty).
+  std::function<void(PipelineOptions&, Real)> setTolerance;
+  bool iterative() const { return static_cast<bool>(setTolerance); }
 };
 
 struct EffectEntry {

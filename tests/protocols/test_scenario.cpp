@@ -209,8 +209,8 @@ TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenari
                                       << rest << "[effects]\ninterfacial_tension = true\n";
   {
     Scenario s = assembleScenario(parseProtocol((dir / "off.toml").string()));
-    CHECK(s.pipelineOptions.forced.at("viscosity") == sim::Force::kOff);
-    CHECK(s.pipelineOptions.forced.at("implicit_viscosity") == sim::Force::kOff);
+    CHECK(s.pipelineOptions.forced.at("viscosity") == sim::StageOverride::kOff);
+    CHECK(s.pipelineOptions.forced.at("implicit_viscosity") == sim::StageOverride::kOff);
     CHECK(s.pipelineOptions.surfaceStress == sim::SurfaceStressForm::kSymmetric);
     const sim::Pipeline pipeline = sim::assemblePipeline(*s.world, s.pipelineOptions);
     CHECK_FALSE(pipeline.hasStage("viscosity"));

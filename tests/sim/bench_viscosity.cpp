@@ -96,8 +96,9 @@ BenchRow runOne(const std::string& scene, long targetParticles, Real nu, Real si
   buildScene(w, scene, targetParticles, nu);
   PipelineOptions options;
   options.solver = "dfsph";
-  options.forced["viscosity"] = implicitViscosity ? Force::kOff : Force::kOn;
-  options.forced["implicit_viscosity"] = implicitViscosity ? Force::kOn : Force::kOff;
+  options.forced["viscosity"] = implicitViscosity ? StageOverride::kOff : StageOverride::kOn;
+  options.forced["implicit_viscosity"] =
+      implicitViscosity ? StageOverride::kOn : StageOverride::kOff;
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
   const auto start = std::chrono::steady_clock::now();

@@ -53,7 +53,7 @@ TEST_CASE("background_pressure runs in closed INDSPH scenes with interfacial ten
   o.backgroundPressure = 0;
   CHECK_FALSE(assemblePipeline(w, o).hasStage("background_pressure"));
   o.backgroundPressure = -1;
-  o.forced["background_pressure"] = Force::kOff;
+  o.forced["background_pressure"] = StageOverride::kOff;
   CHECK_FALSE(assemblePipeline(w, o).hasStage("background_pressure"));
   o.forced.clear();
   // With an elastic material the rule keeps it off (docs/methods/interface.md, validation 1b).
@@ -97,10 +97,10 @@ TEST_CASE("background_pressure stays off where a free surface exists", "[unit][i
   CHECK_FALSE(p.hasStage("background_pressure"));
   CHECK_THAT(decision(p, "background_pressure").reason, Contains("free surface"));
   // A scene that knows better overrides the detection, both ways.
-  o.closedDomain = Force::kOn;
+  o.closedDomain = StageOverride::kOn;
   CHECK(assemblePipeline(w, o).hasStage("background_pressure"));
   auto closed = closedDroplet();
-  o.closedDomain = Force::kOff;
+  o.closedDomain = StageOverride::kOff;
   CHECK_FALSE(assemblePipeline(*closed.world, o).hasStage("background_pressure"));
 }
 

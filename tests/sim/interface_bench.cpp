@@ -545,9 +545,9 @@ int main(int argc, char** argv) {
       else if (key == "g")
         c.gravity = std::atof(value.c_str());
       else if (key == "shift")
-        c.backgroundPressure = value == "off"  ? Force::kOff
-                               : value == "on" ? Force::kOn
-                                               : Force::kAuto;
+        c.backgroundPressure = value == "off"  ? StageOverride::kOff
+                               : value == "on" ? StageOverride::kOn
+                                               : StageOverride::kAuto;
       else if (key == "gref" || key == "form") {
         try {
           if (key == "gref")

@@ -21,7 +21,7 @@ struct LaplaceResult {
 };
 
 struct LaplaceOptions {
-  Force background = Force::kAuto;
+  sim::StageOverride background = StageOverride::kAuto;
   SurfaceStressForm form = SurfaceStressForm::kAuto;
   Real jitter = 0;  // [d] start lattice moved by up to this per axis
 };
@@ -64,11 +64,11 @@ LaplaceResult runLaplace(Real radius, Real sigma, const std::string& solver = "w
   options.forced["background_pressure"] = run.background;
   options.surfaceStress = run.form;
   // The box is full; a jittered start would read as a free surface to the automatic rule.
-  options.closedDomain = Force::kOn;
+  options.closedDomain = StageOverride::kOn;
   Pipeline pipeline = assemblePipeline(w, options);
   REQUIRE(pipeline.hasStage("interfacial_tension"));
   REQUIRE(pipeline.hasStage("background_pressure") ==
-          (solver == "indsph" && run.background != Force::kOff));
+          (solver == "indsph" && run.background != StageOverride::kOff));
   pipeline.attach(w);
   const auto& pressure = w.particles.fields.get<Real>("pressure");
   const Real tau = std::sqrt(1000.0 * radius * radius * radius / sigma);  // [s]
@@ -170,7 +170,7 @@ TEST_CASE("A jittered INDSPH droplet at rest does not propel itself under the co
 // interface's irregular neighbourhoods); any model that held 60 % would be a different finding.
 TEST_CASE("Laplace pressure under INDSPH without the background pressure is under-stated",
           "[validation][interface][laplace][indsph]") {
-  const LaplaceResult r = runLaplace(0.003, 0.040, "indsph", {.background = Force::kOff});
+  const LaplaceResult r = runLaplace(0.003, 0.040, "indsph", {.background = StageOverride::kOff});
   std::printf("Laplace (indsph, no background) R = 3 mm, sigma = 0.040 N/m: dp = %.2f Pa of %.2f\n",
               r.measured, r.expected);
   CHECK(r.measured < 0.6 * r.expected);

@@ -164,7 +164,7 @@ int main(int argc, char** argv) {
   s.maxTimeStep = dtmax;
   s.jitter = jitter;
   // The box is full: a jittered start reads as a free surface to the automatic rule.
-  if (jitter > 0) options.closedDomain = Force::kOn;
+  if (jitter > 0) options.closedDomain = StageOverride::kOn;
   if (bgk > 0) options.backgroundPressure = bgk * sigma / s.spacing;
   if (background == "off")
     options.backgroundPressure = 0;

@@ -40,10 +40,11 @@ struct SessileCase {
   // Measure the angle from the footprint (the first layer's oil disc, capAngleOfFootprint)
   // instead of the cap fit: above 150 deg the cap fit cannot tell the angle (footprintAngle).
   bool footprint = false;
-  int tissueFloorLayers = 0;                // DropletSpec::tissueFloorLayers (an elastic floor)
-  int tissueFreeLayers = 0;                 // DropletSpec::tissueFreeLayers
-  Real tissueYoungsModulus = 5e4;           // [Pa]
-  Force backgroundPressure = Force::kAuto;  // the background_pressure stage (auto: the rule)
+  int tissueFloorLayers = 0;       // DropletSpec::tissueFloorLayers (an elastic floor)
+  int tissueFreeLayers = 0;        // DropletSpec::tissueFreeLayers
+  Real tissueYoungsModulus = 5e4;  // [Pa]
+  StageOverride backgroundPressure =
+      StageOverride::kAuto;  // the background_pressure stage (auto: the rule)
   SurfaceStressForm surfaceStress = SurfaceStressForm::kAuto;  // PipelineOptions::surfaceStress
   // Under gravity (towards the floor) a droplet heavier than the aqueous is pressed onto the
   // floor and is no spherical cap: its outline is then read against the Young-Laplace droplet
@@ -189,9 +190,9 @@ inline SessileResult runSessile(const SessileCase& c) {
   // SPH wall friction pinned it (measured: 2 deg in 0.05 s).
   options.wallFriction = false;
   // The box is full (its jittered start would read as a free surface to the automatic rule).
-  options.closedDomain = Force::kOn;
+  options.closedDomain = StageOverride::kOn;
   options.surfaceStress = c.surfaceStress;
-  if (c.backgroundPressure != Force::kAuto)
+  if (c.backgroundPressure != StageOverride::kAuto)
     options.forced["background_pressure"] = c.backgroundPressure;
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);

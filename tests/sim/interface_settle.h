@@ -93,7 +93,7 @@ AngleRunResult settleContactAngle(World& w, Real tEnd, bool print, Measure measu
   PipelineOptions options;
   options.solver = "indsph";
   options.wallFriction = false;
-  options.closedDomain = Force::kOn;
+  options.closedDomain = StageOverride::kOn;
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
   return stepAndMeasureAngle(w, pipeline, tEnd, print, measure, describe);

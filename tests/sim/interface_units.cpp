@@ -336,7 +336,7 @@ TEST_CASE("Interface stages are assembled only when the scene calls for them",
     CHECK_FALSE(p.hasStage("interfacial_tension"));
     CHECK_FALSE(p.hasStage("wall_adhesion"));
   }
-  options.forced["interfacial_tension"] = Force::kOn;
+  options.forced["interfacial_tension"] = StageOverride::kOn;
   Pipeline forced = assemblePipeline(w, options);
   CHECK_THROWS_WITH(forced.attach(w), Contains("no pair of materials has a tension"));
 }
@@ -349,17 +349,17 @@ TEST_CASE("The wall stress's phase follows the background pressure stage", "[uni
   w.materials.setContactAngle(scene.oil, testing::kFloorTag, 120.0);
   PipelineOptions options;
   options.solver = "indsph";
-  options.closedDomain = Force::kOn;
+  options.closedDomain = StageOverride::kOn;
   CHECK(assemblePipeline(w, options).hasStage("background_pressure"));
   CHECK_THAT(assemblePipeline(w, options).describe(), Contains("liquid with more volume"));
-  options.forced["background_pressure"] = Force::kOff;
+  options.forced["background_pressure"] = StageOverride::kOff;
   CHECK_THAT(assemblePipeline(w, options).describe(), Contains("non-wetting liquid"));
   options.forced.clear();
   options.solver = "wcsph";
   options.wcsph.speedOfSound = 2;
   CHECK_FALSE(assemblePipeline(w, options).hasStage("background_pressure"));
   CHECK_THAT(assemblePipeline(w, options).describe(), Contains("non-wetting liquid"));
-  options.forced["background_pressure"] = Force::kOn;
+  options.forced["background_pressure"] = StageOverride::kOn;
   CHECK_THAT(assemblePipeline(w, options).describe(), Contains("liquid with more volume"));
 }
 

@@ -272,7 +272,7 @@ TEST_CASE("the pipeline runs elasticity exactly when the scene has elastic parti
   world.initialize();
   PipelineOptions options;
   CHECK(assemblePipeline(world, options).hasStage("elasticity"));
-  options.forced["elasticity"] = Force::kOff;
+  options.forced["elasticity"] = StageOverride::kOff;
   CHECK_FALSE(assemblePipeline(world, options).hasStage("elasticity"));
 
   World fluid(solidWorldParameters(d, Box(Vec3::Constant(-1), Vec3::Constant(1)), Vec3::Zero()));

@@ -59,8 +59,8 @@ Real momentumDrift(const std::string& solver, bool viscosity, bool smoothing) {
   PipelineOptions options;
   options.solver = solver;
   options.wcsph.speedOfSound = 2.0;  // [m/s] 40x the largest initial speed
-  options.forced["viscosity"] = viscosity ? Force::kOn : Force::kOff;
-  options.forced["velocity_smoothing"] = smoothing ? Force::kOn : Force::kOff;
+  options.forced["viscosity"] = viscosity ? StageOverride::kOn : StageOverride::kOff;
+  options.forced["velocity_smoothing"] = smoothing ? StageOverride::kOn : StageOverride::kOff;
   if (smoothing) options.velocitySmoothing = 0.5;  // strong, so a defect would be large
   Pipeline pipeline = assemblePipeline(*world, options);
   pipeline.attach(*world);

@@ -86,7 +86,7 @@ TEST_CASE("the pipeline holds only the stages the scene calls for", "[unit][pipe
   }
   SECTION("a protocol can force an effect off or on, and the decision says so") {
     PipelineOptions o;
-    o.forced["viscosity"] = Force::kOff;
+    o.forced["viscosity"] = StageOverride::kOff;
     Pipeline p = assemblePipeline(w, o);
     CHECK_FALSE(p.hasStage("viscosity"));
     const auto it = std::find_if(p.decisions().begin(), p.decisions().end(),
@@ -100,7 +100,7 @@ TEST_CASE("the pipeline holds only the stages the scene calls for", "[unit][pipe
     o.solver = "sph-magic";
     CHECK_THROWS_WITH(assemblePipeline(w, o), Catch::Contains("known: dfsph, wcsph"));
     PipelineOptions f;
-    f.forced["surface_tensionn"] = Force::kOn;
+    f.forced["surface_tensionn"] = StageOverride::kOn;
     CHECK_THROWS_WITH(assemblePipeline(w, f), Catch::Contains("unknown effect"));
   }
 }

@@ -197,7 +197,7 @@ TEST_CASE("implicit viscosity: start-up Couette flow at 1000 cSt matches the clo
   options.solver = "dfsph";
   // XSPH smoothing is numerical damping that would act as extra viscosity near the plates (it
   // sees no wall neighbours); the test measures the physical viscosity alone.
-  options.forced["velocity_smoothing"] = Force::kOff;
+  options.forced["velocity_smoothing"] = StageOverride::kOff;
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
   REQUIRE(pipeline.hasStage("implicit_viscosity"));
@@ -500,7 +500,7 @@ TEST_CASE("viscosity stage rule: explicit for water, implicit for silicone oil",
   SECTION("forcing one viscosity stage on switches the other's automatic choice off") {
     auto w = make(1e-3, 0.001);
     PipelineOptions o;
-    o.forced["viscosity"] = Force::kOn;
+    o.forced["viscosity"] = StageOverride::kOn;
     const Pipeline p = assemblePipeline(*w, o);
     CHECK(p.hasStage("viscosity"));
     CHECK_FALSE(p.hasStage("implicit_viscosity"));
@@ -529,7 +529,7 @@ TEST_CASE("implicit viscosity: two-layer Couette flow matches the piecewise-line
   World& w = *s.world;
   PipelineOptions options;
   options.solver = "dfsph";
-  options.forced["velocity_smoothing"] = Force::kOff;
+  options.forced["velocity_smoothing"] = StageOverride::kOff;
   Pipeline pipeline = assemblePipeline(w, options);
   pipeline.attach(w);
   REQUIRE(pipeline.hasStage("implicit_viscosity"));
