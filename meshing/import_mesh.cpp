@@ -88,11 +88,17 @@ std::string lowerExtension(const std::string& path) {
 }
 
 // Walks the node hierarchy, applying each node's accumulated transform (identity for STL/OBJ/PLY,
-// not for glTF/FBX/DAE).
-void collectNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& parent,
-                 TriangleMesh& out) {
+// not for glTF/FBX/DAE). Polygons are split into fans (v0, vi, vi+1), exact for the convex faces
+// exporters write; points and lines are skipped. This replaces assimp's Triangulate and
+// SortByPType steps, which abort the process (an internal assertion) on a face list that
+// contradicts its header, found by fuzzing (docs/fuzzing.md).
+void collectNode(const std::string& path, const aiScene& scene, const aiNode& node,
+                 const aiMatrix4x4& parent, TriangleMesh& out) {
   const aiMatrix4x4 transform = parent * node.mTransformation;
   for (unsigned k = 0; k < node.mNumMeshes; ++k) {
+    if (node.mMeshes[k] >= scene.mNumMeshes || scene.mMeshes[node.mMeshes[k]] == nullptr)
+      throw MeshError(path, "cannot read the file as a mesh: a node names a missing mesh",
+                      "re-export the mesh");
     const aiMesh& m = *scene.mMeshes[node.mMeshes[k]];
     const int base = static_cast<int>(out.vertices.size());
     for (unsigned v = 0; v < m.mNumVertices; ++v) {
@@ -101,14 +107,21 @@ void collectNode(const aiScene& scene, const aiNode& node, const aiMatrix4x4& pa
     }
     for (unsigned f = 0; f < m.mNumFaces; ++f) {
       const aiFace& face = m.mFaces[f];
-      if (face.mNumIndices != 3) continue;  // points and lines left by SortByPType
-      out.faces.push_back({base + static_cast<int>(face.mIndices[0]),
-                           base + static_cast<int>(face.mIndices[1]),
-                           base + static_cast<int>(face.mIndices[2])});
+      for (unsigned i = 0; i < face.mNumIndices; ++i)
+        if (face.mIndices[i] >= m.mNumVertices)
+          throw MeshError(path,
+                          "face " + std::to_string(f) + " refers to vertex " +
+                              std::to_string(face.mIndices[i]) + " of " +
+                              std::to_string(m.mNumVertices),
+                          "the file is damaged or its header contradicts its data: re-export it");
+      for (unsigned i = 1; i + 1 < face.mNumIndices; ++i)
+        out.faces.push_back({base + static_cast<int>(face.mIndices[0]),
+                             base + static_cast<int>(face.mIndices[i]),
+                             base + static_cast<int>(face.mIndices[i + 1])});
     }
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c)
-    collectNode(scene, *node.mChildren[c], transform, out);
+    collectNode(path, scene, *node.mChildren[c], transform, out);
 }
 
 // A path assimp may open: an existing, non-empty regular file of bounded size (a directory, a
@@ -206,16 +219,12 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
     throw MeshError(path, "unknown mesh format '" + ext + "'",
                     "export as .stl, .obj, .ply or .off (assimp also reads " + list + ")");
   }
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE,
-                              aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  // DropNormals: STL gives every corner its face normal, which stops JoinIdenticalVertices from
-  // merging corners (STACK.md pitfall 8). We join again ourselves across sub-meshes below.
-  const aiScene* scene = importer.ReadFile(
-      path, aiProcess_Triangulate | aiProcess_DropNormals | aiProcess_JoinIdenticalVertices |
-                aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  // Only the reader and its structure check: every post-processing step we need (polygons into
+  // triangles, points and lines dropped, identical vertices joined across sub-meshes) is done
+  // below, where a contradictory file becomes a MeshError instead of an assimp assertion.
+  const aiScene* scene = importer.ReadFile(path, aiProcess_ValidateDataStructure);
   const std::string assimpError = importer.GetErrorString();
-  // SortByPType + SBP_REMOVE drop point and line meshes; nothing left means no triangles.
-  if (scene == nullptr && assimpError.find("No meshes remaining") != std::string::npos)
+  if (scene != nullptr && scene->mNumMeshes == 0)
     throw MeshError(path, "contains no triangles (only points, lines or nothing)",
                     "export the cavity as a closed triangle surface");
   if (scene == nullptr || (scene->mFlags & AI_SCENE_FLAGS_INCOMPLETE) ||
@@ -225,7 +234,7 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
                         " file (not truncated, not another format renamed)");
 
   ImportResult result;
-  collectNode(*scene, *scene->mRootNode, aiMatrix4x4(), result.mesh);
+  collectNode(path, *scene, *scene->mRootNode, aiMatrix4x4(), result.mesh);
   if (result.mesh.faces.empty())
     throw MeshError(path, "contains no triangles (only points, lines or nothing)",
                     "export the cavity as a closed triangle surface");

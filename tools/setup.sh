@@ -10,7 +10,7 @@ packages=(
   libassimp-dev                                 # mesh import: STL, OBJ, PLY, OFF ... (meshing)
   libhdf5-dev hdf5-tools                        # frames and checkpoints; h5dump for inspection
   libtomlplusplus-dev                           # protocol files with exact line/column
-  nlohmann-json3-dev                            # sweep manifests, reading runs' summary.json
+  nlohmann-json3-dev                            # summary.json and sweep manifests
   slurm-wlm munge                               # the sweep's Slurm test: a one-node cluster
   catch2                                        # tests
   clang-format                                  # the format test (tests/check_format.sh)

@@ -1,9 +1,8 @@
-// Number and text formatting shared by the report's HTML, CSV and JSON, so a test can look for
+// Number and text formatting shared by the report's HTML and CSV, so a test can look for
 // exactly the string the report prints.
 #pragma once
 
 #include <string>
-#include <string_view>
 
 #include "protocols/io/xml_escape.h"  // escapeXml, used with these by every report writer
 
@@ -13,7 +12,5 @@ namespace protocols {
 std::string formatPercent(double fraction);
 // "%.*g"-style with `digits` significant digits, e.g. formatNumber(0.000812, 3) = "0.000812".
 std::string formatNumber(double value, int digits = 4);
-// Escapes a string for a JSON string literal (without the quotes).
-std::string escapeJson(std::string_view text);
 
 }  // namespace protocols

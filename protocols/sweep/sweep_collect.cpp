@@ -1,6 +1,7 @@
 #include "protocols/sweep/sweep_collect.h"
 
 #include <fstream>
+#include <limits>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -14,6 +15,11 @@ namespace {
 
 using nlohmann::json;
 
+// A number of summary.json; null (what the report writes for a value that is not finite) -> NaN.
+double numberOf(const json& value) {
+  return value.is_null() ? std::numeric_limits<double>::quiet_NaN() : value.get<double>();
+}
+
 // Reads a point's summary.json into `row`; sets row.problem when it cannot.
 void readSummary(const std::filesystem::path& file, SweepRow& row) {
   std::ifstream in(file, std::ios::binary);
@@ -26,12 +32,12 @@ void readSummary(const std::filesystem::path& file, SweepRow& row) {
     row.complete = j.value("complete", false);
     for (const json& r : j.at("regions"))
       row.regions.push_back(SweepRegionResult{r.at("name").get<std::string>(),
-                                              r.at("final_fraction").get<double>(),
-                                              r.at("mean_fraction").get<double>()});
+                                              numberOf(r.at("final_fraction")),
+                                              numberOf(r.at("mean_fraction"))});
     for (const json& b : j.at("breaks"))
       row.breaks.push_back(SweepBreakResult{b.at("name").get<std::string>(),
                                             b.at("covered_at_end").get<bool>(),
-                                            b.at("time_covered").get<double>()});
+                                            numberOf(b.at("time_covered"))});
     for (const json& a : j.value("accuracy", json::array()))
       row.accuracy.emplace_back(a.at("name").get<std::string>(), a.at("value").get<std::string>());
   } catch (const json::exception& e) {

@@ -5,8 +5,11 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
+
+#include <nlohmann/json.hpp>
 
 #include "protocols/report/render_fundus_map.h"
 #include "protocols/report/report_format.h"
@@ -146,6 +149,22 @@ TEST_CASE("fundus projection is azimuthal equidistant about the posterior pole",
   CHECK(left[0] == Approx(0.5 * 180 / std::numbers::pi).epsilon(1e-12));
 }
 
+TEST_CASE("summary.json stays valid JSON when a run has no averages yet", "[unit][report]") {
+  // A run stopped before its first frame: its averages are not numbers. JSON has no NaN, so they
+  // must read as null, and quotes, backslashes and control characters in names stay strings.
+  ReportInput in = constructedRun();
+  in.frames.clear();
+  in.summary.duration = std::numeric_limits<double>::quiet_NaN();
+  for (double& r : in.summary.regions) r = std::numeric_limits<double>::quiet_NaN();
+  in.title = "eye \"A\"\\ \n\x01";
+  nlohmann::json json;
+  REQUIRE_NOTHROW(json = nlohmann::json::parse(renderSummaryJson(in)));
+  CHECK(json.at("duration_s").is_null());
+  CHECK(json.at("regions").at(0).at("mean_fraction").is_null());
+  CHECK(json.at("title").get<std::string>() == in.title);
+  CHECK(json.at("frames").get<int>() == 0);
+}
+
 TEST_CASE("coverage.csv and summary.json hold the frames and the averages", "[unit][report]") {
   const ReportInput in = constructedRun();
   const auto folder = std::filesystem::temp_directory_path() / "tamponade_test_report";
@@ -166,11 +185,12 @@ TEST_CASE("coverage.csv and summary.json hold the frames and the averages", "[un
           std::count(header.begin(), header.end(), ','));
   }
   CHECK(rows == 3);
-  const std::string json = renderSummaryJson(in);
-  CHECK(json.find("\"mean_fraction\": " + formatNumber(in.summary.regions[0], 6)) !=
-        std::string::npos);
-  CHECK(json.find("\"time_covered\": 1, \"covered_at_end\": true") != std::string::npos);
-  CHECK(json.find("\"title\": \"Test eye <OD> & 90 % fill\"") != std::string::npos);
+  const auto json = nlohmann::json::parse(renderSummaryJson(in));
+  CHECK(json.at("regions").at(0).at("mean_fraction").get<double>() ==
+        std::stod(formatNumber(in.summary.regions[0], 6)));
+  CHECK(json.at("breaks").at(0).at("time_covered").get<double>() == 1.0);
+  CHECK(json.at("breaks").at(0).at("covered_at_end").get<bool>());
+  CHECK(json.at("title").get<std::string>() == "Test eye <OD> & 90 % fill");
   // Bad folder: IoError naming the file.
   CHECK_THROWS_WITH(writeReport(in, folder / "missing"), Catch::Contains("missing/report.html"));
   std::filesystem::remove_all(folder);
