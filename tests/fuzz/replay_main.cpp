@@ -20,7 +20,9 @@ std::vector<std::filesystem::path> inputsOf(const std::filesystem::path& path) {
   std::vector<std::filesystem::path> inputs;
   if (std::filesystem::is_directory(path)) {
     for (const auto& entry : std::filesystem::directory_iterator(path))
-      if (entry.is_regular_file()) inputs.push_back(entry.path());
+      // Dot files (.gitkeep, which keeps an empty regression folder in git) are not inputs.
+      if (entry.is_regular_file() && !entry.path().filename().string().starts_with("."))
+        inputs.push_back(entry.path());
   } else {
     inputs.push_back(path);
   }
