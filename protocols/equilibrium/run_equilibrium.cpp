@@ -4,6 +4,7 @@
 #include <chrono>
 
 #include "meshing/mesh_writer.h"
+#include "protocols/coverage/oil_edge_by_clock_hour.h"
 #include "protocols/equilibrium/posture_equilibrium.h"
 #include "protocols/report/report_format.h"
 #include "protocols/report/write_report.h"
@@ -43,7 +44,10 @@ RunSummary runEquilibriumSchedule(const Protocol& protocol, Scenario& s, const R
     frames.push_back(measureFrameCoverage(s.retina, e.wall, t + posture.duration - kFrameInset));
     t += posture.duration;
     last = e.wall;
-    equilibria.push_back({posture.label, frames.back(), e.wall.oilFraction, e.wall.wetting});
+    equilibria.push_back({posture.label, frames.back(), e.wall.oilFraction, e.wall.wetting, {}});
+    if (s.eye)
+      equilibria.back().oilEdge = oilEdgeByClockHour(*s.eye, s.retinaSamples.restPositions,
+                                                     e.wall.oilFraction, s.retina.regions);
     if (!e.interface.empty())
       meshing::writeMesh(
           e.interface,

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "protocols/coverage/frame_coverage.h"
+#include "protocols/coverage/oil_edge_by_clock_hour.h"
 #include "protocols/coverage/schedule_coverage.h"
 
 namespace protocols {
@@ -62,6 +63,9 @@ struct ReportEquilibrium {
   FrameCoverage coverage;
   std::vector<double> wallOilFraction;   // [1] #W
   std::vector<WallWetting> wallWetting;  // #W
+  // Per clock hour 12, 1, ..., 11: what the oil covers along the meridian; empty for an imported
+  // mesh eye (no ora serrata to measure from).
+  std::vector<ClockHourOilEdge> oilEdge;
 };
 
 struct ReportInput {

@@ -91,7 +91,19 @@ Json equilibriaOf(const ReportInput& in) {
       breaks.push_back({{"name", in.breaks[b].name},
                         {"fraction", number(e.coverage.breaks[b].area.fraction)},
                         {"covered", e.coverage.breaks[b].covered}});
-    equilibria.push_back({{"posture", e.label}, {"regions", regions}, {"breaks", breaks}});
+    Json oilEdge = Json::array();
+    for (const ClockHourOilEdge& edge : e.oilEdge) {
+      Json stretches = Json::array();
+      for (const OilStretch& stretch : edge.oil)
+        stretches.push_back({number(stretch.from * 1e3, 4), number(stretch.to * 1e3, 4)});
+      oilEdge.push_back({{"clock_hour", edge.clockHour},
+                         {"meridian_mm", number(edge.meridianLength * 1e3, 4)},
+                         {"oil_mm_from_ora", stretches}});
+    }
+    equilibria.push_back({{"posture", e.label},
+                          {"regions", regions},
+                          {"breaks", breaks},
+                          {"oil_edge_by_clock_hour", oilEdge}});
   }
   return equilibria;
 }

@@ -7,6 +7,7 @@
 #include "protocols/io/io_error.h"
 #include "protocols/report/render_coverage_chart.h"
 #include "protocols/report/render_fundus_map.h"
+#include "protocols/report/render_oil_edge.h"
 #include "protocols/report/report_format.h"
 
 namespace protocols {
@@ -65,6 +66,7 @@ void renderEquilibria(const ReportInput& in, std::ostringstream& s) {
        "oil-covered when the equilibrium interface, extended to the wall at the contact angle, "
        "leaves it on the oil side; a break counts as covered when at least "
     << formatPercent(kBreakCoveredFraction) << " of its area is.</p>\n";
+  s << renderOilEdgeTable(in);
   for (const auto& e : in.equilibria) {
     ReportInput map = in;
     map.wallOilFraction = e.wallOilFraction;
