@@ -18,6 +18,7 @@
 #include "tools/accuracy_option.h"
 #include "tools/cli_args.h"
 #include "tools/commands.h"
+#include "tools/phase_printer.h"
 #include "tools/protocol_error_print.h"
 
 namespace tools {
@@ -101,9 +102,12 @@ int runPlan(Args args) {
     return 2;
   }
   if (!options.memoryLimit) options.memoryLimit = protocols::machineMemoryLimit();
+  const PhasePrinter phases("plan");
+  options.progress = phases;
   try {
     const protocols::Protocol protocol = protocols::parseProtocol(file);
     protocols::Scenario scenario = protocols::assembleScenario(protocol, options);
+    phases("calibrating the cost model (a few steps of this scene)");
     const protocols::ScenarioPlan plan = protocols::planScenario(scenario);
 
     std::printf("plan for %s: %s\n\n", file.c_str(), scenario.title.c_str());

@@ -23,6 +23,7 @@
 #include "tools/accuracy_option.h"
 #include "tools/cli_args.h"
 #include "tools/commands.h"
+#include "tools/phase_printer.h"
 #include "tools/progress_printer.h"
 #include "tools/protocol_error_print.h"
 
@@ -182,6 +183,7 @@ int runRun(Args args) {
     const protocols::Protocol protocol = resume.empty()
                                              ? protocols::parseProtocol(file)
                                              : protocols::loadRunProtocol(resume, options);
+    options.progress = PhasePrinter("run");
     protocols::Scenario scenario = protocols::assembleScenario(protocol, options);
     const std::filesystem::path folder(!resume.empty() ? resume
                                        : out.empty()   ? protocol.outputs.folder.value

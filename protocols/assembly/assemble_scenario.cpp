@@ -18,23 +18,35 @@ namespace protocols {
 
 namespace {
 
+void announce(const ScenarioOptions& options, std::string_view phase) {
+  if (options.progress) options.progress(phase);
+}
+
 // The phases of assembly, in order (scenario.h describes each; the notes keep this order).
 Scenario assemble(const Protocol& p, const ScenarioOptions& options) {
   Scenario s;
   setUpScenario(p, options, s);
   const double d = s.accuracy.particleSpacing;  // [m]
+  announce(options, "building the cavity");
   buildCavity(p, s);
   checkMemory(p, options, s, d);
   createWorld(p, s);
+  announce(options, "sampling the cavity wall");
   const meshing::SurfaceSamples retinaSamples = buildWalls(p, s, options.wallSpacingFactor * d);
   recordRetinaSamples(s, retinaSamples.points, retinaSamples.normals);
+  announce(options, "adding the tissues");
   addTissues(p, s);  // elastic sclera / orbital fat replace the wall they cover
   s.layeredWalls = chooseLayeredWalls(p, options, s);
-  if (s.layeredWalls) replaceWithLayeredWalls(s, d);
+  if (s.layeredWalls) {
+    announce(options, "layering the cavity wall");
+    replaceWithLayeredWalls(s, d);
+  }
   setInterfacePhysics(s);
+  announce(options, "filling the cavity");
   fillFluid(p, options, s);
   chooseGravityReference(options, s);
   choosePipelineOptions(p, options, s);
+  announce(options, "initialising the simulation (neighbour lists, stages)");
   try {
     s.world->initialize();
   } catch (const sim::SimError& error) {

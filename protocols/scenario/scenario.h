@@ -28,9 +28,11 @@
 // the tissues, interface_physics.h, fluid_fill.h, pipeline_options.h.
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "anatomy/eye.h"
@@ -101,6 +103,10 @@ struct ScenarioOptions {
   // any particle is allocated (memory_estimate.h); unset: no limit. The CLI passes the machine's
   // available memory or --max-memory.
   std::optional<double> memoryLimit;
+  // Called as each assembly phase starts, with what it does ("sampling the cavity wall"); empty:
+  // silent. The command line shows it once assembly has taken a while (at 0.1 mm an eye takes
+  // minutes to assemble).
+  std::function<void(std::string_view phase)> progress;
 };
 
 struct FluidPhase {
