@@ -10,28 +10,11 @@
 
 #include "meshing/mesh_writer.h"
 #include "test_meshes.h"
+#include "tests/support/tamponade_command.h"
 
 using namespace meshing;
 
-namespace {
-
-struct Run {
-  int code;
-  std::string output;  // stdout and stderr together
-};
-
-Run runTamponade(const std::string& arguments) {
-  const std::string command = std::string(TAMPONADE_EXE) + " " + arguments + " 2>&1";
-  std::FILE* pipe = ::popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::string out;
-  char buffer[4096];
-  while (size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
-  const int status = ::pclose(pipe);
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-}  // namespace
+using tamponade_test::runTamponade;
 
 TEST_CASE("mesh check: exit codes and messages for the bad-mesh table", "[unit][cli]") {
   const meshing_test::TempDir dir("cli");
@@ -81,12 +64,12 @@ TEST_CASE("mesh check: exit codes and messages for the bad-mesh table", "[unit][
   for (const Case& c : cases) {
     std::string arguments = c.arguments;
     if (!arguments.empty()) arguments = dir.file("") + arguments;
-    const Run r = runTamponade("mesh check " + arguments);
+    const auto r = runTamponade("mesh check " + arguments);
     INFO("mesh check " << arguments << "\n" << r.output);
-    CHECK(r.code == c.code);
+    CHECK(r.exitCode == c.code);
     CHECK_THAT(r.output, Catch::Contains(c.message));
   }
-  const Run report = runTamponade("mesh check " + dir.file("good.stl") + " --units mm");
+  const auto report = runTamponade("mesh check " + dir.file("good.stl") + " --units mm");
   CHECK_THAT(report.output, Catch::Contains("area:") && Catch::Contains("volume:") &&
                                 Catch::Contains("size:      24 x") &&
                                 Catch::Contains("units:     mm"));
@@ -96,10 +79,10 @@ TEST_CASE("mesh sample: counts, spacing statistics, PLY output and strict length
   const meshing_test::TempDir dir("cli-sample");
   writeMesh(meshing_test::eyeSphere(3), dir.file("eye.stl"), 1000.0);
   const std::string eye = dir.file("eye.stl");
-  const Run ok =
+  const auto ok =
       runTamponade("mesh sample " + eye + " --units mm --spacing 1mm --out " + dir.file("p.ply"));
   INFO(ok.output);
-  CHECK(ok.code == 0);
+  CHECK(ok.exitCode == 0);
   CHECK_THAT(ok.output, Catch::Contains("wall:") && Catch::Contains("interior:") &&
                             Catch::Contains("nearest neighbour min") && Catch::Contains("wrote:"));
   std::ifstream ply(dir.file("p.ply"));
@@ -113,16 +96,15 @@ TEST_CASE("mesh sample: counts, spacing statistics, PLY output and strict length
              {"-1mm", "is not a length with a unit"}, {"0mm", "must be a positive length"},
              {"1mmm", "is not a length with a unit"}, {"abc", "is not a length with a unit"}};
   for (const auto& b : bad) {
-    const Run r = runTamponade("mesh sample " + eye + " --spacing '" + b.spacing + "'");
+    const auto r = runTamponade("mesh sample " + eye + " --spacing '" + b.spacing + "'");
     INFO(b.spacing << "\n" << r.output);
-    CHECK(r.code == 2);
+    CHECK(r.exitCode == 2);
     CHECK_THAT(r.output, Catch::Contains(b.message));
   }
-  CHECK(runTamponade("mesh sample " + eye).code == 2);  // --spacing required
-  CHECK(
-      runTamponade("mesh sample " + eye + " --spacing 1mm --out " + dir.file("nodir/p.ply")).code ==
-      1);
-  CHECK(runTamponade("mesh sample --help").code == 0);
-  CHECK(runTamponade("mesh check --help").code == 0);
-  CHECK(runTamponade("mesh frobnicate x").code == 2);
+  CHECK(runTamponade("mesh sample " + eye).exitCode == 2);  // --spacing required
+  CHECK(runTamponade("mesh sample " + eye + " --spacing 1mm --out " + dir.file("nodir/p.ply"))
+            .exitCode == 1);
+  CHECK(runTamponade("mesh sample --help").exitCode == 0);
+  CHECK(runTamponade("mesh check --help").exitCode == 0);
+  CHECK(runTamponade("mesh frobnicate x").exitCode == 2);
 }

@@ -18,11 +18,11 @@
 
 #include "meshing/make_icosphere.h"
 #include "meshing/mesh_writer.h"
-#include "tamponade_command.h"
+#include "tests/support/tamponade_command.h"
 
 namespace fs = std::filesystem;
-using protocols_test::readText;
-using protocols_test::runTamponade;
+using tamponade_test::readText;
+using tamponade_test::runTamponade;
 
 namespace {
 
@@ -262,7 +262,7 @@ TEST_CASE("bad input: refused with exit 2, file:line:column or file, the cause, 
     INFO(c.name);
     fs::remove(dir / "p.toml");
     if (!c.protocol.empty()) writeText(dir / "p.toml", c.protocol);
-    const protocols_test::CommandResult r = runTamponade(c.arguments, dir);
+    const tamponade_test::CommandResult r = runTamponade(c.arguments, dir);
     INFO(r.output);
     CHECK(r.exitCode == c.exitCode);
     for (const std::string& text : c.mustSay) CHECK(r.output.find(text) != std::string::npos);

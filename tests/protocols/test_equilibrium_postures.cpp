@@ -12,7 +12,7 @@
 #include "protocols/format/parse_protocol.h"
 #include "protocols/format/protocol_error.h"
 #include "protocols/scenario/scenario.h"
-#include "tamponade_command.h"
+#include "tests/support/tamponade_command.h"
 
 using namespace protocols;
 
@@ -44,7 +44,7 @@ std::vector<FrameCoverage> postureCoverages(const std::string& text) {
   std::vector<FrameCoverage> perPosture;
   (void)runEquilibriumSchedule(p, s, options, {});
   // Rebuild per posture from the CSV the run wrote (one row pair per posture).
-  const std::string csv = protocols_test::readText(out / "coverage.csv");
+  const std::string csv = tamponade_test::readText(out / "coverage.csv");
   REQUIRE(std::filesystem::exists(out / "report.html"));
   REQUIRE(std::filesystem::exists(out / "interface_1.ply"));
   std::istringstream lines(csv);
@@ -98,21 +98,21 @@ TEST_CASE("tamponade run writes an equilibrium schedule's report and interfaces"
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   { std::ofstream(dir / "eq.toml") << eyeProtocol(posture("upright")); }
-  const auto r = protocols_test::runTamponade("run eq.toml --out out --threads 1", dir);
+  const auto r = tamponade_test::runTamponade("run eq.toml --out out --threads 1", dir);
   INFO(r.output);
   CHECK(r.exitCode == 0);
   CHECK(r.output.find("equilibrium in") != std::string::npos);
   for (const char* file : {"report.html", "summary.json", "coverage.csv", "interface_1.ply"})
     CHECK(std::filesystem::exists(dir / "out" / file));
-  const std::string report = protocols_test::readText(dir / "out" / "report.html");
+  const std::string report = tamponade_test::readText(dir / "out" / "report.html");
   CHECK(report.find("Coverage at each posture's equilibrium") != std::string::npos);
   CHECK(report.find("Fundus map: upright") != std::string::npos);
   CHECK(report.find("s simulated") == std::string::npos);
   const auto summary =
-      nlohmann::json::parse(protocols_test::readText(dir / "out" / "summary.json"));
+      nlohmann::json::parse(tamponade_test::readText(dir / "out" / "summary.json"));
   CHECK(summary.at("equilibria").size() == 1);
   // Nothing to rebuild from: `report` says so instead of asking for frames.h5.
-  const auto rebuilt = protocols_test::runTamponade("report out", dir);
+  const auto rebuilt = tamponade_test::runTamponade("report out", dir);
   CHECK(rebuilt.exitCode == 2);
   CHECK(rebuilt.output.find("holds equilibria") != std::string::npos);
   std::filesystem::remove_all(dir);

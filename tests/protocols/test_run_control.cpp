@@ -20,14 +20,14 @@
 #include "protocols/run/run_scenario.h"
 #include "protocols/run/steady_state.h"
 #include "sim/core/particle_set.h"
-#include "tamponade_command.h"
+#include "tests/support/tamponade_command.h"
 #include "xml_checker.h"
 
 extern char** environ;
 
 namespace fs = std::filesystem;
-using protocols_test::readText;
-using protocols_test::runTamponade;
+using tamponade_test::readText;
+using tamponade_test::runTamponade;
 
 namespace {
 

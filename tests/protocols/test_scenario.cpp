@@ -17,6 +17,7 @@
 #include "protocols/format/protocol_error.h"
 #include "protocols/run/plan_scenario.h"
 #include "protocols/scenario/scenario.h"
+#include "tests/support/tamponade_command.h"
 
 namespace fs = std::filesystem;
 using namespace protocols;
@@ -37,23 +38,8 @@ PhaseTotals totalsOf(const Scenario& s, int material) {
   return t;
 }
 
-struct CommandResult {
-  int exitCode;
-  std::string output;
-};
-CommandResult runTamponade(const std::string& arguments, const fs::path& workingDirectory) {
-  const std::string command =
-      "cd '" + workingDirectory.string() + "' && '" TAMPONADE_EXECUTABLE "' " + arguments + " 2>&1";
-  CommandResult result{-1, {}};
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::array<char, 4096> buffer{};
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-    result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
+using tamponade_test::CommandResult;
+using tamponade_test::runTamponade;
 
 }  // namespace
 

@@ -17,39 +17,16 @@
 
 #include "protocols/io/frame_reader.h"
 #include "sim/core/particle_set.h"
+#include "tests/support/tamponade_command.h"
 #include "xml_checker.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CommandResult {
-  int exitCode;
-  std::string output;
-};
-CommandResult runTamponade(const std::string& arguments, const fs::path& workingDirectory) {
-  // Passive OpenMP waiting: the CI machine is shared, and spinning threads that wait for a
-  // descheduled one made steps 100x slower there (tools/test.sh).
-  const std::string command = "cd '" + workingDirectory.string() +
-                              "' && OMP_WAIT_POLICY=passive '" + TAMPONADE_EXECUTABLE "' " +
-                              arguments + " 2>&1";
-  CommandResult result{-1, {}};
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::array<char, 4096> buffer{};
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-    result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-std::string readText(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+using tamponade_test::CommandResult;
+using tamponade_test::readText;
+using tamponade_test::runTamponade;
 
 // An uninterrupted run's frames and a stopped-and-resumed one's: the same frames, steps and
 // times, and every frame's positions and velocities bit for bit.

@@ -30,7 +30,7 @@
 #include "sim/solid/fixed_particles.h"
 #include "sim/world/pipeline.h"
 #include "sim/world/stage_registry.h"
-#include "tamponade_command.h"
+#include "tests/support/tamponade_command.h"
 
 namespace fs = std::filesystem;
 using namespace protocols;
@@ -50,7 +50,7 @@ std::size_t countMaterial(const Scenario& s, int material) {
 
 // The paper protocol's text with one line replaced (for bad-input and decision variants).
 std::string paperWith(const std::string& from, const std::string& to) {
-  std::string text = protocols_test::readText(kPaper10);
+  std::string text = tamponade_test::readText(kPaper10);
   const auto at = text.find(from);
   REQUIRE(at != std::string::npos);
   text.replace(at, from.size(), to);
@@ -589,11 +589,11 @@ TEST_CASE("tissue: the example protocols validate, and plan prints each tissue's
   for (const char* name : {"paper_sclera_10kpa.toml", "paper_sclera_100kpa.toml",
                            "paper_sclera_500kpa.toml", "physiological_sclera.toml"}) {
     const auto r =
-        protocols_test::runTamponade("validate '" + (kProtocols / name).string() + "'", work);
+        tamponade_test::runTamponade("validate '" + (kProtocols / name).string() + "'", work);
     INFO(name << "\n" << r.output);
     CHECK(r.exitCode == 0);
   }
-  const auto plan = protocols_test::runTamponade("plan '" + kPhysiological.string() + "'", work);
+  const auto plan = tamponade_test::runTamponade("plan '" + kPhysiological.string() + "'", work);
   INFO(plan.output);
   REQUIRE(plan.exitCode == 0);
   CHECK(plan.output.find("sclera (E 2000 kPa") != std::string::npos);
@@ -631,11 +631,11 @@ const PaperRun& paperRun() {
     RunOptions options;
     options.outputFolder = out;
     r.summary = runScenario(r.protocol, r.scenario, options);
-    r.report = protocols_test::readText(out / "report.html");
-    r.summaryJson = protocols_test::readText(out / "summary.json");
+    r.report = tamponade_test::readText(out / "report.html");
+    r.summaryJson = tamponade_test::readText(out / "summary.json");
     r.series = FrameReader(out / "frames.h5").seriesNames();
     rebuildReport(out);  // recomputes coverage and tissue measures from the frames' ids
-    r.rebuiltSummaryJson = protocols_test::readText(out / "summary.json");
+    r.rebuiltSummaryJson = tamponade_test::readText(out / "summary.json");
     fs::remove_all(out);
     return r;
   }();
@@ -853,7 +853,7 @@ TEST_CASE("tissue: bad input is reported at its place with exit code 2",
   for (const Case& c : cases) {
     const fs::path file = dir / "bad.toml";
     std::ofstream(file) << c.text;
-    const auto r = protocols_test::runTamponade(c.command + " '" + file.string() + "'", dir);
+    const auto r = tamponade_test::runTamponade(c.command + " '" + file.string() + "'", dir);
     INFO(c.name << "\n" << r.output);
     CHECK(r.exitCode == 2);
     CHECK(r.output.find(c.message) != std::string::npos);
@@ -878,7 +878,7 @@ TEST_CASE("tissue: bad input is reported at its place with exit code 2",
 TEST_CASE(
     "tissue: a 2 MPa sclera around the filled cavity stays stable, compressed less than 2 p t / E",
     "[stability][protocol][tissue]") {
-  std::string text = protocols_test::readText(kPhysiological);
+  std::string text = tamponade_test::readText(kPhysiological);
   const std::string autoMode = "mode = \"auto\"";
   REQUIRE(text.find(autoMode) != std::string::npos);
   text.replace(text.find(autoMode), autoMode.size(), "mode = \"elastic\"");  // the sclera's

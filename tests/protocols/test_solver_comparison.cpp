@@ -5,7 +5,7 @@
 #include <filesystem>
 
 #include "protocols/bench/solver_comparison.h"
-#include "tamponade_command.h"
+#include "tests/support/tamponade_command.h"
 
 namespace {
 
@@ -65,8 +65,8 @@ TEST_CASE("bench solvers: CSV and markdown tables from made-up runs", "[unit][be
   const auto dir = std::filesystem::temp_directory_path() / "tamponade_bench_tables";
   std::filesystem::remove_all(dir);
   protocols::writeSolverComparison(runs, dir / "out");
-  CHECK(protocols_test::readText(dir / "out" / "solvers.csv") == csv);
-  CHECK(protocols_test::readText(dir / "out" / "solvers.md") == md);
+  CHECK(tamponade_test::readText(dir / "out" / "solvers.csv") == csv);
+  CHECK(tamponade_test::readText(dir / "out" / "solvers.md") == md);
   CHECK(std::filesystem::exists(dir / "out" / "compression_number_density_1-3.csv"));
   CHECK(std::filesystem::exists(dir / "out" / "iterations_indsph_1-75.csv"));
   std::filesystem::remove_all(dir);

@@ -12,11 +12,11 @@
 #include "protocols/format/protocol_error.h"
 #include "protocols/sweep/sweep_plan.h"
 #include "protocols/sweep/sweep_range.h"
-#include "tamponade_command.h"
+#include "tests/support/tamponade_command.h"
 
 using namespace protocols;
-using protocols_test::readText;
-using protocols_test::runTamponade;
+using tamponade_test::readText;
+using tamponade_test::runTamponade;
 
 namespace {
 

@@ -2,38 +2,15 @@
 // problem as file:line:column for a bad one, creating nothing.
 #include <catch2/catch.hpp>
 
-#include <sys/wait.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "tests/support/tamponade_command.h"
+
 namespace fs = std::filesystem;
 
-namespace {
-
-struct Result {
-  int exitCode;
-  std::string output;  // stdout and stderr
-};
-
-Result runTamponade(const std::string& arguments, const fs::path& workingDirectory) {
-  const std::string command =
-      "cd '" + workingDirectory.string() + "' && '" TAMPONADE_EXECUTABLE "' " + arguments + " 2>&1";
-  Result result{-1, {}};
-  FILE* pipe = popen(command.c_str(), "r");
-  REQUIRE(pipe != nullptr);
-  std::array<char, 4096> buffer{};
-  while (std::size_t n = std::fread(buffer.data(), 1, buffer.size(), pipe))
-    result.output.append(buffer.data(), n);
-  const int status = pclose(pipe);
-  result.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return result;
-}
-
-}  // namespace
+using tamponade_test::runTamponade;
 
 TEST_CASE("tamponade validate: bad protocol exits 2 with file:line:column",
           "[unit][protocol][cli]") {
@@ -53,7 +30,7 @@ TEST_CASE("tamponade validate: bad protocol exits 2 with file:line:column",
                                      "duration = \"10 min\"\n"
                                      "[outputs]\n"
                                      "folder = \"out\"\n";
-  const Result r = runTamponade("validate bad.toml", dir);
+  const auto r = runTamponade("validate bad.toml", dir);
   INFO(r.output);
   CHECK(r.exitCode == 2);
   CHECK(r.output.find("bad.toml:7:8: tamponade.fill = 1.2 is outside the allowed range (0, 1]") !=
@@ -67,7 +44,7 @@ TEST_CASE("tamponade validate: bad protocol exits 2 with file:line:column",
 TEST_CASE("tamponade validate: good protocol exits 0 and prints SI values",
           "[unit][protocol][cli]") {
   const fs::path dir = fs::path(TAMPONADE_SOURCE_DIR) / "data" / "protocols";
-  const Result r = runTamponade("validate emmetropic_superior_break.toml", dir);
+  const auto r = runTamponade("validate emmetropic_superior_break.toml", dir);
   INFO(r.output);
   CHECK(r.exitCode == 0);
   CHECK(r.output.find("tamponade.fill = 0.9") != std::string::npos);
@@ -80,7 +57,7 @@ TEST_CASE("tamponade validate: usage errors exit 2", "[unit][protocol][cli]") {
   CHECK(runTamponade("validate", dir).exitCode == 2);
   CHECK(runTamponade("validate a.toml b.toml", dir).exitCode == 2);
   CHECK(runTamponade("validate --help", dir).exitCode == 0);
-  const Result missing = runTamponade("validate /no/such/file.toml", dir);
+  const auto missing = runTamponade("validate /no/such/file.toml", dir);
   CHECK(missing.exitCode == 2);
   CHECK(missing.output.find("/no/such/file.toml: cannot open the protocol file") !=
         std::string::npos);

@@ -1,4 +1,6 @@
-// Runs the `tamponade` executable from a test, in a working directory, and captures its output.
+// Runs the `tamponade` executable from a test, in a working directory, and captures its output:
+// the one helper every command-line test uses (TAMPONADE_EXECUTABLE is the built binary's path,
+// defined by each test target's CMakeLists).
 #pragma once
 
 #include <sys/wait.h>
@@ -10,7 +12,7 @@
 #include <sstream>
 #include <string>
 
-namespace protocols_test {
+namespace tamponade_test {
 
 struct CommandResult {
   int exitCode = -1;
@@ -21,7 +23,7 @@ struct CommandResult {
 // descheduled one made steps 100x slower there (tools/test.sh). stderr goes to a
 // pipe, so `tamponade run` prints its plain (non-terminal) progress lines.
 inline CommandResult runTamponade(const std::string& arguments,
-                                  const std::filesystem::path& workingDirectory) {
+                                  const std::filesystem::path& workingDirectory = ".") {
   const std::string command = "cd '" + workingDirectory.string() +
                               "' && OMP_WAIT_POLICY=passive '" + TAMPONADE_EXECUTABLE "' " +
                               arguments + " 2>&1";
@@ -43,4 +45,4 @@ inline std::string readText(const std::filesystem::path& path) {
   return s.str();
 }
 
-}  // namespace protocols_test
+}  // namespace tamponade_test
