@@ -20,6 +20,7 @@
 
 #include "protocols/assembly/assemble_scenario.h"
 #include "protocols/assembly/pipeline_options.h"
+#include "protocols/equilibrium/start_from_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/io_error.h"
 #include "protocols/report/report_format.h"
@@ -197,7 +198,7 @@ int runBenchAccuracy(Args args) {
         protocols::Protocol p = protocol;
         p.accuracy.particleSpacing.value = spacing;
         p.accuracy.solverTolerance.value = tolerance;
-        protocols::Scenario scenario = protocols::assembleScenario(p);
+        protocols::Scenario scenario = protocols::assembleStartingScenario(p);
         solver = scenario.pipelineOptions.solver;
         AccuracyRun r;
         r.spacing = spacing;

@@ -11,6 +11,7 @@
 #include "protocols/assembly/pipeline_options.h"
 #include "protocols/equilibrium/posture_equilibrium.h"
 #include "protocols/equilibrium/run_equilibrium.h"
+#include "protocols/equilibrium/start_from_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/report/report_format.h"
 #include "protocols/run/plan_scenario.h"
@@ -106,7 +107,7 @@ int runPlan(Args args) {
   options.progress = phases;
   try {
     const protocols::Protocol protocol = protocols::parseProtocol(file);
-    protocols::Scenario scenario = protocols::assembleScenario(protocol, options);
+    protocols::Scenario scenario = protocols::assembleStartingScenario(protocol, options);
     phases("calibrating the cost model (a few steps of this scene)");
     const protocols::ScenarioPlan plan = protocols::planScenario(scenario);
 

@@ -15,6 +15,7 @@
 
 #include "protocols/assembly/assemble_scenario.h"
 #include "protocols/equilibrium/run_equilibrium.h"
+#include "protocols/equilibrium/start_from_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/io_error.h"
 #include "protocols/report/report_format.h"
@@ -184,7 +185,7 @@ int runRun(Args args) {
                                              ? protocols::parseProtocol(file)
                                              : protocols::loadRunProtocol(resume, options);
     options.progress = PhasePrinter("run");
-    protocols::Scenario scenario = protocols::assembleScenario(protocol, options);
+    protocols::Scenario scenario = protocols::assembleStartingScenario(protocol, options);
     const std::filesystem::path folder(!resume.empty() ? resume
                                        : out.empty()   ? protocol.outputs.folder.value
                                                        : out);

@@ -105,6 +105,9 @@ std::string describeProtocol(const Protocol& p) {
 
   out.add("schedule.gravity", formatQuantity(p.schedule.gravity.value, Dimension::kAcceleration),
           p.schedule.gravity.where);
+  if (p.schedule.start.value != StartName::kFillPlane)
+    out.add("schedule.start", quoted(std::string(toString(p.schedule.start.value))),
+            p.schedule.start.where);
   bool anySteady = false;
   for (const Posture& posture : p.schedule.postures) anySteady = anySteady || posture.untilSteady;
   if (anySteady) {

@@ -308,8 +308,10 @@ void ProtocolParser::readTamponade(const Table& root, Protocol& p) {
 void ProtocolParser::readSchedule(const Table& root, Protocol& p) {
   p.schedule.steadyWindow = {kDefaultSteadyWindow, defaultAt_};
   p.schedule.steadyCoverageChange = {kDefaultSteadyCoverageChange, defaultAt_};
+  p.schedule.start = {StartName::kFillPlane, defaultAt_};
   const std::optional<Table> t = reader_.table(root, "schedule");
   if (!t) return;
+  p.schedule.start = choiceOr(*t, "start", StartName::kFillPlane);
   p.schedule.gravity = quantityOr(*t, "gravity", kStandardGravity);
   p.schedule.steadyWindow = quantityOr(*t, "steady_window", kDefaultSteadyWindow);
   p.schedule.steadyCoverageChange =
@@ -361,28 +363,34 @@ void ProtocolParser::readSchedule(const Table& root, Protocol& p) {
 }
 
 // An equilibrium schedule: every posture or none (a simulated posture does not start from an
-// equilibrium yet), and a contact angle with a contact line (0 and 180 deg are complete wetting).
+// equilibrium posture yet; schedule.start = "equilibrium" starts it from its own), and a contact
+// angle with a contact line (0 and 180 deg are complete wetting).
 void ProtocolParser::checkEquilibriumPostures(const Protocol& p) {
   const auto& postures = p.schedule.postures;
   const auto first = std::find_if(postures.begin(), postures.end(),
                                   [](const Posture& x) { return x.equilibrium; });
-  if (first == postures.end()) return;
-  for (const Posture& posture : postures)
-    if (!posture.equilibrium) {
-      reader_.error(posture.duration.where.isInFile() ? posture.duration.where : posture.where,
-                    "the schedule mixes duration = \"equilibrium\" (" + first->label.value +
-                        ") with a simulated posture (" + posture.label.value + ")",
-                    "give every posture duration = \"equilibrium\", or none: a simulated "
-                    "posture cannot start from an equilibrium yet");
-      return;
-    }
+  const bool startsAtEquilibrium = p.schedule.start.value == StartName::kEquilibrium;
+  if (first == postures.end() && !startsAtEquilibrium) return;
+  if (first != postures.end())
+    for (const Posture& posture : postures)
+      if (!posture.equilibrium) {
+        reader_.error(posture.duration.where.isInFile() ? posture.duration.where : posture.where,
+                      "the schedule mixes duration = \"equilibrium\" (" + first->label.value +
+                          ") with a simulated posture (" + posture.label.value + ")",
+                      "give every posture duration = \"equilibrium\", or none: a simulated "
+                      "posture cannot start from an equilibrium posture (schedule.start = "
+                      "\"equilibrium\" starts the first one from its own equilibrium)");
+        return;
+      }
+  const std::string needs = first != postures.end()
+                                ? "the equilibrium of duration = \"equilibrium\""
+                                : "schedule.start = \"equilibrium\"";
   if (const auto& angle = p.tamponade.contactAngle;
       angle && (angle->value <= 0.0 || angle->value >= std::numbers::pi))
     reader_.error(
         angle->where,
         "tamponade.contact_angle = " + std::to_string(angle->value * 180.0 / std::numbers::pi) +
-            " deg: complete wetting has no contact line, and the equilibrium of "
-            "duration = \"equilibrium\" needs one",
+            " deg: complete wetting has no contact line, and " + needs + " needs one",
         "give an angle strictly between 0 and 180 deg (the retina's is about 18 deg "
         "through the aqueous)");
 }

@@ -35,6 +35,7 @@ std::string_view toString(SolverName v) { return nameOf(v, kSolverNames); }
 std::string_view toString(AccuracyPreset v) { return nameOf(v, kAccuracyPresetNames); }
 std::string_view toString(SurfaceStressName v) { return nameOf(v, kSurfaceStressNames); }
 std::string_view toString(WallModelName v) { return nameOf(v, kWallModelNames); }
+std::string_view toString(StartName v) { return nameOf(v, kStartNames); }
 
 std::optional<AccuracyPreset> accuracyPresetFromName(std::string_view name) {
   for (std::size_t k = 0; k < kAccuracyPresetNames.size(); ++k)

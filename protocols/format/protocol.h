@@ -52,6 +52,11 @@ inline constexpr std::array<std::string_view, 3> kSurfaceStressNames = {"auto", 
 enum class WallModelName { kAuto, kLayered, kSingleLayer };
 inline constexpr std::array<std::string_view, 3> kWallModelNames = {"auto", "layered",
                                                                     "single_layer"};
+// Where a simulated schedule's fluid starts (protocols/equilibrium/start_from_equilibrium.h):
+// "fill_plane" the oil above a flat plane at the fill level, "equilibrium" the oil where the first
+// posture's static equilibrium puts it, so the run spends no time relaxing a flat fill.
+enum class StartName { kFillPlane, kEquilibrium };
+inline constexpr std::array<std::string_view, 2> kStartNames = {"fill_plane", "equilibrium"};
 // Tamponade agents of the material library (anatomy's data/materials), plus "custom".
 inline constexpr std::array<std::string_view, 6> kTamponadeAgentNames = {
     "silicone_oil_1000", "silicone_oil_5000",  "densiron_68",
@@ -143,6 +148,7 @@ struct ScheduleSpec {
   // coverage change [1] of any region or break within it.
   Located<double> steadyWindow;
   Located<double> steadyCoverageChange;
+  Located<StartName> start;  // where the fluid starts (simulated postures)
 };
 
 struct EffectSwitches {
@@ -213,6 +219,7 @@ std::string_view toString(SolverName v);
 std::string_view toString(AccuracyPreset v);
 std::string_view toString(SurfaceStressName v);
 std::string_view toString(WallModelName v);
+std::string_view toString(StartName v);
 // The preset called `name` ("draft", "standard", "fine"), or nothing for any other name.
 std::optional<AccuracyPreset> accuracyPresetFromName(std::string_view name);
 
