@@ -1,0 +1,135 @@
+// Coverage below the particle spacing (sim/measure/wall_oil_extended.h) on a static lattice whose
+// phases are the axisymmetric Young-Laplace equilibrium in a sphere of R = 12 mm
+// (young_laplace_sphere.h: clinical oil 970 in aqueous 1004 kg/m^3, sigma = 40 mN/m, 1 g, 10 %
+// aqueous): the oil-covered share of the wall read from the particles against the exact share
+// above the contact line. The same lattice read next to the wall (the colour at the wall point, as
+// a particle reading does) is shown alongside for what the extension changes.
+#include <catch2/catch.hpp>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <vector>
+
+#include "sim/equilibrium/threshold_dynamics_xu2017.h"
+#include "sim/equilibrium/voxel_grid.h"
+#include "sim/measure/wall_oil_extended.h"
+#include "young_laplace_sphere.h"
+
+using namespace sim;
+
+namespace {
+
+constexpr double kR = 12e-3, kSigma = 0.04, kOil = 970.0, kAqueous = 1004.0, kG = 9.81;
+constexpr double kSpacing = 1.2e-3;  // [m] the draft runs' trial spacing
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+// The meniscus height at radius r (the meridian runs outward from the apex), or +inf beyond the
+// contact radius (no interface there: above the contact line, so oil).
+double meniscusHeight(const testref::SphereMeniscus& m, double r) {
+  for (std::size_t k = 1; k < m.meridian.size(); ++k) {
+    const auto [r0, z0] = m.meridian[k - 1];
+    const auto [r1, z1] = m.meridian[k];
+    if (r >= r0 && r <= r1) return z0 + (z1 - z0) * (r - r0) / (r1 - r0);
+  }
+  return std::numeric_limits<double>::infinity();
+}
+
+struct Lattice {
+  std::vector<Vec3> x;
+  std::vector<std::uint8_t> isOil;
+};
+
+// A cubic lattice at kSpacing inside the sphere (half a spacing from the wall); aqueous below the
+// meniscus.
+Lattice latticeWith(const testref::SphereMeniscus& m) {
+  Lattice l;
+  const int n = static_cast<int>(kR / kSpacing) + 1;
+  for (int i = -n; i < n; ++i)
+    for (int j = -n; j < n; ++j)
+      for (int k = -n; k < n; ++k) {
+        const Vec3 x = kSpacing * Vec3(i + 0.5, j + 0.5, k + 0.5);
+        if (x.norm() > kR - 0.5 * kSpacing) continue;
+        const double r = std::hypot(x.x(), x.y());
+        const bool aqueous = r <= m.meridian.back().first && x.z() < meniscusHeight(m, r);
+        l.x.push_back(x);
+        l.isOil.push_back(aqueous ? 0 : 1);
+      }
+  return l;
+}
+
+// Wall points spread evenly over the sphere (Fibonacci lattice) and their outward normals.
+std::vector<Vec3> sphereNormals(int count) {
+  std::vector<Vec3> n;
+  for (int i = 0; i < count; ++i) {
+    const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(1.0 - z * z);
+    const double phi = i * std::numbers::pi * (3.0 - std::sqrt(5.0));
+    n.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
+  }
+  return n;
+}
+
+// The particles read at the wall point itself: the Shepard colour of the lattice within `support`
+// (cubic spline), oil when at least one half; what a reading of the particles next to the wall
+// sees.
+double readAtWall(const Lattice& l, const std::vector<Vec3>& wall, double support) {
+  double covered = 0.0;
+  for (const Vec3& w : wall) {
+    double weighted = 0.0, weights = 0.0;
+    for (std::size_t i = 0; i < l.x.size(); ++i) {
+      const double q = 2.0 * (l.x[i] - w).norm() / support;  // cubic spline on [0, 2]
+      if (q >= 2.0) continue;
+      const double k = q < 1.0 ? 1.0 - 1.5 * q * q + 0.75 * q * q * q : 0.25 * std::pow(2.0 - q, 3);
+      weighted += k * l.isOil[i];
+      weights += k;
+    }
+    covered += weights > 0.0 && weighted >= 0.5 * weights ? 1.0 : 0.0;
+  }
+  return covered / static_cast<double>(wall.size());
+}
+
+double share(const std::vector<std::uint8_t>& oil) {
+  double sum = 0.0;
+  for (std::uint8_t o : oil) sum += o;
+  return sum / static_cast<double>(oil.size());
+}
+
+}  // namespace
+
+TEST_CASE("Coverage read below the spacing matches the Young-Laplace contact line",
+          "[unit][interface]") {
+  const double c = (kAqueous - kOil) * kG / kSigma;
+  const std::vector<Vec3> normals = sphereNormals(20000);
+  std::vector<Vec3> wall;
+  for (const Vec3& n : normals) wall.push_back(kR * n);
+  const auto grid =
+      equilibrium::gridAround(Vec3::Constant(-kR), Vec3::Constant(kR), 0.5 * kSpacing, 2);
+  const std::vector<double> fluid =
+      equilibrium::fluidFractionsFromDistance(grid, [](const Vec3& x) { return x.norm() - kR; });
+  // Support and offset 1.5 spacings, voxel half a spacing: of the settings tried (support 1.2-2,
+  // offset 1-2 spacings, voxel 0.25-0.5 spacing) the one closest to the reference at every angle.
+  ExtendedWallReadingOptions options;
+  options.supportRadius = 1.5 * kSpacing;
+  options.offset = 1.5 * kSpacing;
+  for (double theta : {18.0, 40.0, 90.0}) {
+    const testref::SphereMeniscus m = testref::youngLaplaceSphere(kR, c, theta * kDeg, 0.1);
+    const Lattice lattice = latticeWith(m);
+    options.contactAngle = theta * kDeg;
+    const double extended = share(
+        wallOilByExtendedInterface(grid, fluid, lattice.x, lattice.isOil, wall, normals, options));
+    const double atWall = readAtWall(lattice, wall, options.supportRadius);
+    INFO("theta " << theta << " deg: exact " << m.upperWetFraction << ", extended " << extended
+                  << ", read at the wall " << atWall);
+    // The lattice places the interface to about half a spacing, and the contact height moves the
+    // covered share by dz / (2 R): 0.6 mm / 24 mm = 2.5 points. At 90 deg the extension adds
+    // nothing, so the lattice's error is all there is.
+    if (theta == 90.0) CHECK(std::abs(extended - m.upperWetFraction) <= 0.025);
+    // At small angles the reading at the wall calls the aqueous wedge oil (+9.6 points at 18 deg,
+    // +4.0 at 40, measured); the extension halves that (+4.7, +1.9). Held at "a third less at
+    // least", so that the extension cannot silently stop helping. What is left is the planar
+    // extension over 1.5 spacings of a curved meniscus (docs/methods/interface.md).
+    if (theta < 90.0)
+      CHECK(std::abs(extended - m.upperWetFraction) <=
+            2.0 / 3.0 * std::abs(atWall - m.upperWetFraction));
+  }
+}
