@@ -15,6 +15,7 @@
 #include "sim/equilibrium/interface_surface.h"
 #include "sim/equilibrium/threshold_dynamics_xu2017.h"
 #include "sim/equilibrium/wall_oil.h"
+#include "sphere_points.h"
 #include "young_laplace_sphere.h"
 
 using namespace sim;
@@ -40,16 +41,7 @@ EquilibriumProblem sphereProblem(double thetaDeg, double fill, const Vec3& gravi
   return p;
 }
 
-// Unit normals spread evenly over the sphere (Fibonacci lattice).
-std::vector<Vec3> sphereNormals(int count) {
-  std::vector<Vec3> n;
-  for (int i = 0; i < count; ++i) {
-    const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(1.0 - z * z);
-    const double phi = i * std::numbers::pi * (3.0 - std::sqrt(5.0));
-    n.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
-  }
-  return n;
-}
+using testref::sphereNormals;
 
 struct Coverage {
   double fraction = 0.0;         // [1] of the wall, oil-covered

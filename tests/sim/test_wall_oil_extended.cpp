@@ -14,6 +14,7 @@
 #include "sim/equilibrium/threshold_dynamics_xu2017.h"
 #include "sim/equilibrium/voxel_grid.h"
 #include "sim/measure/wall_oil_extended.h"
+#include "sphere_points.h"
 #include "young_laplace_sphere.h"
 
 using namespace sim;
@@ -58,16 +59,7 @@ Lattice latticeWith(const testref::SphereMeniscus& m) {
   return l;
 }
 
-// Wall points spread evenly over the sphere (Fibonacci lattice) and their outward normals.
-std::vector<Vec3> sphereNormals(int count) {
-  std::vector<Vec3> n;
-  for (int i = 0; i < count; ++i) {
-    const double z = 1.0 - (2.0 * i + 1.0) / count, r = std::sqrt(1.0 - z * z);
-    const double phi = i * std::numbers::pi * (3.0 - std::sqrt(5.0));
-    n.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
-  }
-  return n;
-}
+using testref::sphereNormals;
 
 // The particles read at the wall point itself: the Shepard colour of the lattice within `support`
 // (cubic spline), oil when at least one half; what a reading of the particles next to the wall
