@@ -34,8 +34,11 @@ constexpr const char* kUsage =
     "e.g. 4 GiB) is refused before anything is allocated, with the spacing that would fit.\n"
     "Bad protocols: every problem as file:line:column, exit code 2.\n";
 
+// "182 MiB", "1.06 GiB": three significant digits without an exponent.
 std::string megabytes(std::size_t bytes) {
-  return protocols::formatNumber(static_cast<double>(bytes) / (1024.0 * 1024.0), 3) + " MiB";
+  const double mib = static_cast<double>(bytes) / (1024.0 * 1024.0);
+  if (mib >= 1000.0) return protocols::formatNumber(mib / 1024.0, 3) + " GiB";
+  return protocols::formatNumber(mib, 3) + " MiB";
 }
 
 std::string duration(double seconds) {
