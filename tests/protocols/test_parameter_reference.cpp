@@ -9,6 +9,8 @@
 #include <string>
 
 #include "protocols/format/parameter_table.h"
+#include "protocols/format/protocol.h"
+#include "sim/world/stage_registry.h"
 
 namespace {
 
@@ -61,4 +63,21 @@ TEST_CASE("the parameter table is complete and consistent", "[unit][protocol]") 
     if (!isContainer) CHECK_FALSE(spec.example.empty());
   }
   CHECK_THROWS_AS(protocols::parameterSpec("no.such.key"), std::logic_error);
+}
+
+TEST_CASE("the protocol's solver and effect names are the engine registry's", "[unit][protocol]") {
+  // The protocol format lists its choices as constants (the parameter table and the error
+  // messages need them at compile time); the engine's registries are what runs. A solver or
+  // effect added to one and not the other fails here instead of at a user's protocol.
+  std::set<std::string_view> registered;
+  for (const auto& entry : sim::solverRegistry()) registered.insert(entry.name);
+  const std::set<std::string_view> offered(protocols::kSolverNames.begin(),
+                                           protocols::kSolverNames.end());
+  CHECK(offered == registered);
+  std::set<std::string_view> effects;
+  for (const auto& entry : sim::effectRegistry()) effects.insert(entry.name);
+  for (std::string_view name : protocols::kEffectNames) {
+    INFO("[effects] " << name);
+    CHECK(effects.count(name) == 1);
+  }
 }
