@@ -74,116 +74,115 @@ std::string pressureSolveNote(const ReportPressureSolve& solve) {
          "buoyancy)";
 }
 
-ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
-  ReportInput in;
-  in.title = s.title;
-  in.eyeSide = std::string(toString(p.eye.side.value));
+namespace {
 
-  // The scenario in words.
-  {
-    std::ostringstream eye;
-    eye << "Eye: " << (p.eye.side.value == EyeSide::kOd ? "right (OD)" : "left (OS)") << ", "
-        << toString(p.eye.kind.value) << " vitreous cavity of "
-        << formatNumber(s.cavityVolume * 1e6, 3) << " mL";
-    if (p.eye.axialLength) eye << ", axial length " << millimetres(p.eye.axialLength->value);
-    if (p.eye.staphylomaDepth)
-      eye << ", staphyloma " << millimetres(p.eye.staphylomaDepth->value) << " deep";
-    eye << ". " << p.eye.breaks.size() << (p.eye.breaks.size() == 1 ? " break." : " breaks.");
-    in.scenario.push_back(eye.str());
-    std::ostringstream fill;
-    const FluidPhase& oil = s.phases[1];
-    fill << "Tamponade: " << oil.material << " (" << formatNumber(oil.density, 4) << " kg/m\u00b3, "
-         << formatNumber(oil.dynamicViscosity, 3) << " Pa s), "
-         << formatPercent(p.tamponade.fill.value) << " fill; the rest is aqueous ("
-         << formatNumber(s.phases[0].density, 4) << " kg/m\u00b3). The "
-         << (oil.density < s.phases[0].density ? "oil floats (lighter than aqueous)."
-                                               : "tamponade sinks (heavier than aqueous).");
-    fill << " Kinematic viscosity " << formatNumber(oil.dynamicViscosity / oil.density * 1e6, 4)
-         << " cSt (aqueous "
-         << formatNumber(s.phases[0].dynamicViscosity / s.phases[0].density * 1e6, 3) << " cSt).";
-    if (oil.interfacialTension)
-      fill << " Interfacial tension against aqueous "
-           << formatNumber(*oil.interfacialTension * 1e3, 3) << " mN/m.";
-    if (oil.contactAngleThroughAqueous)
-      fill << " Contact angle on the retina " << formatNumber(*oil.contactAngleThroughAqueous, 3)
-           << "\u00b0 through the aqueous ("
-           << formatNumber(180.0 - *oil.contactAngleThroughAqueous, 3)
-           << "\u00b0 through the tamponade).";
-    in.scenario.push_back(fill.str());
-    std::ostringstream schedule;
-    schedule << "Posture schedule:";
-    for (std::size_t k = 0; k < s.schedule.size(); ++k) {
-      const ScheduledPosture& posture = s.schedule[k];
-      const std::string seconds = formatNumber(posture.duration, 4) + " s";
-      schedule << (k == 0 ? " " : ", then ") << posture.label;
-      if (posture.equilibrium)
-        schedule << " at its static equilibrium";
-      else if (!posture.untilSteady)
-        schedule << " for " << seconds;
-      else if (!posture.endedSteady)
-        schedule << " until steady, at most " << seconds;
-      else if (*posture.endedSteady)
-        schedule << " until steady (reached after " << seconds << ")";
-      else
-        schedule << " until steady (not reached; stopped at the maximum, " << seconds << ")";
-    }
-    schedule << ".";
-    in.scenario.push_back(schedule.str());
-    if (p.description) in.scenario.push_back(p.description->value);
-    for (const auto& note : s.notes) in.scenario.push_back("Note: " + note + ".");
+std::string eyeSentence(const Protocol& p, const Scenario& s) {
+  std::ostringstream eye;
+  eye << "Eye: " << (p.eye.side.value == EyeSide::kOd ? "right (OD)" : "left (OS)") << ", "
+      << toString(p.eye.kind.value) << " vitreous cavity of "
+      << formatNumber(s.cavityVolume * 1e6, 3) << " mL";
+  if (p.eye.axialLength) eye << ", axial length " << millimetres(p.eye.axialLength->value);
+  if (p.eye.staphylomaDepth)
+    eye << ", staphyloma " << millimetres(p.eye.staphylomaDepth->value) << " deep";
+  eye << ". " << p.eye.breaks.size() << (p.eye.breaks.size() == 1 ? " break." : " breaks.");
+  return eye.str();
+}
+
+std::string tamponadeSentence(const Protocol& p, const Scenario& s) {
+  std::ostringstream fill;
+  const FluidPhase& oil = s.phases[1];
+  fill << "Tamponade: " << oil.material << " (" << formatNumber(oil.density, 4) << " kg/m\u00b3, "
+       << formatNumber(oil.dynamicViscosity, 3) << " Pa s), "
+       << formatPercent(p.tamponade.fill.value) << " fill; the rest is aqueous ("
+       << formatNumber(s.phases[0].density, 4) << " kg/m\u00b3). The "
+       << (oil.density < s.phases[0].density ? "oil floats (lighter than aqueous)."
+                                             : "tamponade sinks (heavier than aqueous).");
+  fill << " Kinematic viscosity " << formatNumber(oil.dynamicViscosity / oil.density * 1e6, 4)
+       << " cSt (aqueous "
+       << formatNumber(s.phases[0].dynamicViscosity / s.phases[0].density * 1e6, 3) << " cSt).";
+  if (oil.interfacialTension)
+    fill << " Interfacial tension against aqueous "
+         << formatNumber(*oil.interfacialTension * 1e3, 3) << " mN/m.";
+  if (oil.contactAngleThroughAqueous)
+    fill << " Contact angle on the retina " << formatNumber(*oil.contactAngleThroughAqueous, 3)
+         << "\u00b0 through the aqueous ("
+         << formatNumber(180.0 - *oil.contactAngleThroughAqueous, 3)
+         << "\u00b0 through the tamponade).";
+  return fill.str();
+}
+
+std::string scheduleSentence(const Scenario& s) {
+  std::ostringstream schedule;
+  schedule << "Posture schedule:";
+  for (std::size_t k = 0; k < s.schedule.size(); ++k) {
+    const ScheduledPosture& posture = s.schedule[k];
+    const std::string seconds = formatNumber(posture.duration, 4) + " s";
+    schedule << (k == 0 ? " " : ", then ") << posture.label;
+    if (posture.equilibrium)
+      schedule << " at its static equilibrium";
+    else if (!posture.untilSteady)
+      schedule << " for " << seconds;
+    else if (!posture.endedSteady)
+      schedule << " until steady, at most " << seconds;
+    else if (*posture.endedSteady)
+      schedule << " until steady (reached after " << seconds << ")";
+    else
+      schedule << " until steady (not reached; stopped at the maximum, " << seconds << ")";
   }
+  schedule << ".";
+  return schedule.str();
+}
 
-  double t = 0.0;
-  for (const auto& posture : s.schedule) {
-    in.postures.push_back({posture.label, t, t + posture.duration});
-    t += posture.duration;
+// The scenario in words, one paragraph each.
+std::vector<std::string> scenarioParagraphs(const Protocol& p, const Scenario& s) {
+  std::vector<std::string> paragraphs{eyeSentence(p, s), tamponadeSentence(p, s),
+                                      scheduleSentence(s)};
+  if (p.description) paragraphs.push_back(p.description->value);
+  for (const auto& note : s.notes) paragraphs.push_back("Note: " + note + ".");
+  return paragraphs;
+}
+
+// A break: where it is in words, and a ring of its radius around its centre in the tangent
+// plane, projected to the wall.
+ReportBreak reportBreak(const anatomy::RetinalBreak& br, const anatomy::CavityShape& shape) {
+  ReportBreak rb;
+  rb.name = br.name();
+  std::ostringstream where;
+  const anatomy::ClinicalPosition& pos = br.spec().position;
+  where << formatNumber(pos.clockHour, 3) << " o'clock, " << millimetres(pos.distance)
+        << " posterior to the "
+        << (pos.from == anatomy::DistanceReference::kLimbus ? "limbus" : "ora serrata") << ", "
+        << millimetres(br.spec().diameter) << " across";
+  rb.where = where.str();
+  const sim::Vec3 c = br.centre().position, n = br.centre().normal;
+  const sim::Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
+  const double r = 0.5 * br.spec().diameter;
+  for (int k = 0; k < 32; ++k) {
+    const double a = 2.0 * std::numbers::pi * k / 32;
+    const sim::Vec3 q = c + r * (std::cos(a) * t1 + std::sin(a) * t2);
+    rb.outline.push_back(shape.wallPoint(shape.closestWallCoordinate(q)));
   }
+  return rb;
+}
 
-  // Breaks: a ring of the break's radius around its centre in the tangent plane, projected to
-  // the wall.
-  for (std::size_t b = 0; b < s.breaks.size(); ++b) {
-    const anatomy::RetinalBreak& br = s.breaks[b];
-    ReportBreak rb;
-    rb.name = br.name();
-    std::ostringstream where;
-    const anatomy::ClinicalPosition& pos = br.spec().position;
-    where << formatNumber(pos.clockHour, 3) << " o'clock, " << millimetres(pos.distance)
-          << " posterior to the "
-          << (pos.from == anatomy::DistanceReference::kLimbus ? "limbus" : "ora serrata") << ", "
-          << millimetres(br.spec().diameter) << " across";
-    rb.where = where.str();
-    const sim::Vec3 c = br.centre().position, n = br.centre().normal;
-    const sim::Vec3 t1 = n.unitOrthogonal(), t2 = n.cross(t1);
-    const double r = 0.5 * br.spec().diameter;
-    const anatomy::CavityShape& shape = s.eye->cavity();
-    for (int k = 0; k < 32; ++k) {
-      const double a = 2.0 * std::numbers::pi * k / 32;
-      const sim::Vec3 q = c + r * (std::cos(a) * t1 + std::sin(a) * t2);
-      rb.outline.push_back(shape.wallPoint(shape.closestWallCoordinate(q)));
-    }
-    in.breaks.push_back(std::move(rb));
+// The fundus map's landmarks: ora serrata, equator, posterior pole and macula.
+std::vector<ReportOutline> landmarkOutlines(const anatomy::Eye& eye) {
+  const anatomy::CavityShape& shape = eye.cavity();
+  ReportOutline ora{"ora serrata", {}, true}, equator{"equator", {}, true};
+  for (int k = 0; k < kOutlinePoints; ++k) {
+    const double m = 2.0 * std::numbers::pi * k / kOutlinePoints;
+    ora.points.push_back(shape.wallPoint(eye.wallCoordinateAt(m, eye.landmarks().oraFromLimbus)));
+    equator.points.push_back(shape.wallPoint({0.5 * std::numbers::pi, m}));
   }
+  return {std::move(ora),
+          std::move(equator),
+          {"posterior pole", ringAroundPole(eye, eye.landmarks().posteriorPoleRadius), true},
+          {"macula", ringAroundPole(eye, 0.5 * eye.landmarks().maculaDiameter), true}};
+}
 
-  // Landmarks.
-  if (s.eye) {
-    const anatomy::Eye& eye = *s.eye;
-    const anatomy::CavityShape& shape = eye.cavity();
-    ReportOutline ora{"ora serrata", {}, true}, equator{"equator", {}, true};
-    for (int k = 0; k < kOutlinePoints; ++k) {
-      const double m = 2.0 * std::numbers::pi * k / kOutlinePoints;
-      ora.points.push_back(shape.wallPoint(eye.wallCoordinateAt(m, eye.landmarks().oraFromLimbus)));
-      equator.points.push_back(shape.wallPoint({0.5 * std::numbers::pi, m}));
-    }
-    in.outlines.push_back(std::move(ora));
-    in.outlines.push_back(std::move(equator));
-    in.outlines.push_back(
-        {"posterior pole", ringAroundPole(eye, eye.landmarks().posteriorPoleRadius), true});
-    in.outlines.push_back(
-        {"macula", ringAroundPole(eye, 0.5 * eye.landmarks().maculaDiameter), true});
-  }
-
+std::vector<ReportSetting> accuracyRows(const Scenario& s) {
   const AccuracySettings& a = s.accuracy;
-  in.accuracy = {
+  return {
       {"preset", a.preset, "draft / standard / fine (docs/accuracy.md)"},
       {"particle spacing", millimetres(a.particleSpacing),
        "coverage boundaries are resolved to about one spacing; the flat-interface test bounds "
@@ -205,6 +204,24 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
        "fluid started at " + formatNumber(s.fillCompression, 3) +
            " x rest density so that it fills the cavity (protocols/scenario/scenario.h MassRule)"},
   };
+}
+
+}  // namespace
+
+ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
+  ReportInput in;
+  in.title = s.title;
+  in.eyeSide = std::string(toString(p.eye.side.value));
+  in.scenario = scenarioParagraphs(p, s);
+  double t = 0.0;
+  for (const auto& posture : s.schedule) {
+    in.postures.push_back({posture.label, t, t + posture.duration});
+    t += posture.duration;
+  }
+  for (const anatomy::RetinalBreak& br : s.breaks)
+    in.breaks.push_back(reportBreak(br, s.eye->cavity()));
+  if (s.eye) in.outlines = landmarkOutlines(*s.eye);
+  in.accuracy = accuracyRows(s);
   return in;
 }
 
