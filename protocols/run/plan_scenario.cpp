@@ -11,12 +11,11 @@
 
 namespace protocols {
 
-ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
-  sim::World& world = *s.world;
-  sim::Pipeline pipeline = sim::assemblePipeline(world, s.pipelineOptions);
-  pipeline.attach(world);
+namespace {
 
-  ScenarioPlan plan;
+// What the scene holds and what its fields and neighbour lists take.
+void describeScene(const Scenario& s, const sim::Pipeline& pipeline, ScenarioPlan& plan) {
+  const sim::World& world = *s.world;
   plan.pipeline = pipeline.describe();
   plan.decisions = pipeline.decisions();
   plan.dynamicParticles = world.particles.size();
@@ -31,8 +30,13 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
 #ifdef _OPENMP
   plan.threads = omp_get_max_threads();
 #endif
+}
 
-  // Calibration: one warm-up step (first-touch allocations), then the timed steps.
+// One warm-up step (first-touch allocations), then the timed steps. Returns the first step's
+// time-step choice.
+sim::TimeStepInfo calibrate(Scenario& s, sim::Pipeline& pipeline, const PlanOptions& options,
+                            ScenarioPlan& plan) {
+  sim::World& world = *s.world;
   const auto addLimit = [&](std::string_view name, double limit) {
     if (std::isfinite(limit)) plan.stageTimeStepLimits.emplace_back(std::string(name), limit);
   };
@@ -62,14 +66,18 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
   plan.secondsPerParticleStep =
       (options.calibrationSteps > 0 ? fastest : 0.0) /
       static_cast<double>(std::max<std::size_t>(1, plan.dynamicParticles));
+  return first;
+}
 
-  const double d = s.accuracy.particleSpacing;  // [m]
+// Each preset's particles, time step and run time, scaled from this scene's spacing and first
+// step by what limited that step.
+void estimatePresets(double spacing, const sim::TimeStepInfo& first, ScenarioPlan& plan) {
   for (std::size_t k = 0; k < kAccuracyPresets.size(); ++k) {
     const AccuracyPresetValues& v = kAccuracyPresets[k];
     PresetEstimate& e = plan.presets[k];
     e.preset = std::string(v.name);
     e.particleSpacing = v.particleSpacing;
-    const double ratio = d / v.particleSpacing;  // [1]
+    const double ratio = spacing / v.particleSpacing;  // [1]
     e.particles = static_cast<double>(plan.dynamicParticles) * ratio * ratio * ratio;
     double dt = first.dt;
     if (first.limitedBy == "max")
@@ -84,6 +92,17 @@ ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
     e.steps = std::ceil(plan.simulatedDuration / e.timeStep);
     e.seconds = e.steps * e.particles * plan.secondsPerParticleStep;
   }
+}
+
+}  // namespace
+
+ScenarioPlan planScenario(Scenario& s, const PlanOptions& options) {
+  sim::Pipeline pipeline = sim::assemblePipeline(*s.world, s.pipelineOptions);
+  pipeline.attach(*s.world);
+  ScenarioPlan plan;
+  describeScene(s, pipeline, plan);
+  const sim::TimeStepInfo first = calibrate(s, pipeline, options, plan);
+  estimatePresets(s.accuracy.particleSpacing, first, plan);
   return plan;
 }
 
