@@ -6,7 +6,7 @@
 namespace sim::equilibrium {
 namespace {
 
-constexpr double kReachVoxels = 4.0;   // D is resolved to 4 h: beyond delta + 1 h of the angle term
+constexpr double kReachVoxels = 4.0;  // D is resolved to 4 h, or delta + 2.5 h when delta is larger
 constexpr double kWholeVoxel = 0.999;  // [1] fluid fraction of a voxel the wall does not cut
 
 // Points where u crosses 1/2 between fluid voxels adjacent along an axis.
@@ -34,10 +34,12 @@ std::vector<Vec3> crossingPoints(const VoxelGrid& g, const std::vector<double>& 
 
 }  // namespace
 
-WallOilReader::WallOilReader(const EquilibriumSolution& s, double contactAngle, double offsetVoxels)
-    : grid_(s.grid), u_(s.oil), f_(s.fluidFraction) {
+WallOilReader::WallOilReader(const EquilibriumSolution& s, double contactAngle, double offsetVoxels,
+                             WallExtension extension)
+    : grid_(s.grid), u_(s.oil), f_(s.fluidFraction), extension_(extension) {
   offset_ = offsetVoxels * grid_.spacing;
-  reach_ = kReachVoxels * grid_.spacing;
+  reach_ = std::max(kReachVoxels, offsetVoxels + 2.5) * grid_.spacing;
+  theta_ = contactAngle;
   cosTheta_ = std::cos(contactAngle);
   // Only whole fluid voxels: the voxels the wall cuts hold slivers of fluid that the scheme
   // assigns by the wall term alone (at 18 deg they read as an aqueous film over the oil's wall).
@@ -103,19 +105,19 @@ std::size_t WallOilReader::nearestPoint(const Vec3& x) const {
   return nearest;
 }
 
-double WallOilReader::distanceToInterface(const Vec3& x) const {
-  const std::size_t q = nearestPoint(x);
-  if (q == points_.size()) return reach_;
-  // The distance to the interface's tangent plane at the nearest point: the points stand about a
-  // voxel apart, and the distance to the point itself would overstate D by up to h / 8 at D = h.
-  if (normals_[q].squaredNorm() == 0.0) return (points_[q] - x).norm();
-  return std::abs(normals_[q].dot(x - points_[q]));
-}
-
 double WallOilReader::wallSignedDistance(const Vec3& w, const Vec3& n) const {
   const Vec3 p = w - offset_ * n;
   const double side = oilShare(p) >= 0.5 ? 1.0 : -1.0;
-  return side * distanceToInterface(p) - offset_ * cosTheta_;
+  const std::size_t q = nearestPoint(p);
+  if (q == points_.size()) return side * reach_ - offset_ * cosTheta_;
+  const Vec3& m = normals_[q];
+  // The distance to the interface's tangent plane at the nearest point: the points stand about a
+  // voxel apart, and the distance to the point itself would overstate D by up to h / 8 at D = h.
+  if (m.squaredNorm() == 0.0) return side * (points_[q] - p).norm() - offset_ * cosTheta_;
+  const double atOffset = side * std::abs(m.dot(p - points_[q]));
+  if (extension_ == WallExtension::kPlanar) return atOffset - offset_ * cosTheta_;
+  const double psi = std::acos(std::clamp(-m.dot(n), -1.0, 1.0));
+  return atOffset - offset_ * std::sin(psi) / std::tan(0.5 * (psi + theta_));
 }
 
 }  // namespace sim::equilibrium

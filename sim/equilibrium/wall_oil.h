@@ -9,7 +9,12 @@
 //     the tangent plane of the nearest interface point (positive in oil; the sign from u(p));
 //     delta = 1.5 h reaches past the voxels the wall cuts;
 //  3. the interface meets the wall at theta through the aqueous, so its normal m (into the oil)
-//     has m . n = -cos(theta) there and D(w) = D(p) - delta cos(theta): exact for a planar wedge.
+//     has m . n = -cos(theta) there and D(w) = D(p) - delta cos(theta): exact for a planar wedge
+//     (WallExtension::kPlanar). WallExtension::kArc instead lets the interface turn from its own
+//     angle psi at p (cos psi = -m . n) to theta at the wall along a circular arc, whose run along
+//     the wall is delta cot(a), a = (psi + theta) / 2: D(w) = D(p) - delta sin(psi) cot(a).
+//     Exact for a meniscus of constant curvature in the wall's normal section; equal to kPlanar
+//     when psi = theta.
 // The wall point is oil-covered when D(w) > 0. docs/methods/equilibrium.md gives the reading's
 // measured error on imposed Young-Laplace states.
 #pragma once
@@ -20,11 +25,13 @@
 
 namespace sim::equilibrium {
 
+enum class WallExtension { kPlanar, kArc };
+
 class WallOilReader {
  public:
   // `contactAngle` [rad] through the aqueous; `offsetVoxels` delta / h.
-  WallOilReader(const EquilibriumSolution& solution, double contactAngle,
-                double offsetVoxels = 1.5);
+  WallOilReader(const EquilibriumSolution& solution, double contactAngle, double offsetVoxels = 1.5,
+                WallExtension extension = WallExtension::kPlanar);
 
   // [m] D(w), the signed distance of wall point `w` [m] (outward unit normal `n`) from the
   // interface extended to the wall; > 0: oil-covered.
@@ -35,8 +42,7 @@ class WallOilReader {
   const std::vector<Vec3>& interfacePoints() const { return points_; }  // [m]
 
  private:
-  double distanceToInterface(const Vec3& x) const;  // [m] unsigned, capped at reach_
-  std::size_t nearestPoint(const Vec3& x) const;    // points_.size() if none within reach_
+  std::size_t nearestPoint(const Vec3& x) const;  // points_.size() if none within reach_
 
   VoxelGrid grid_;
   std::vector<double> u_, f_;
@@ -46,7 +52,9 @@ class WallOilReader {
   std::vector<std::size_t> cellStart_, cellPoints_;
   double reach_ = 0.0;   // [m] farthest distance resolved
   double offset_ = 0.0;  // [m] delta
+  double theta_ = 0.0;   // [rad]
   double cosTheta_ = 0.0;
+  WallExtension extension_ = WallExtension::kPlanar;
 };
 
 }  // namespace sim::equilibrium

@@ -61,7 +61,7 @@ std::vector<std::uint8_t> wallOilByExtendedInterface(const equilibrium::VoxelGri
   colour.fluidFraction = fluidFraction;
   colour.oil = colourAtVoxels(grid, fluidFraction, particles, isOil, options.supportRadius);
   const equilibrium::WallOilReader reader(colour, options.contactAngle,
-                                          options.offset / grid.spacing);
+                                          options.offset / grid.spacing, options.extension);
   std::vector<std::uint8_t> oil(wallPoints.size(), 0);
 #pragma omp parallel for schedule(static)
   for (std::size_t w = 0; w < wallPoints.size(); ++w)

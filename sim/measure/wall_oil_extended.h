@@ -14,6 +14,7 @@
 
 #include "sim/core/types.h"
 #include "sim/equilibrium/voxel_grid.h"
+#include "sim/equilibrium/wall_oil.h"
 
 namespace sim {
 
@@ -21,6 +22,8 @@ struct ExtendedWallReadingOptions {
   Real supportRadius = 0.0;  // [m] of the colour interpolation (> the particle spacing)
   Real contactAngle = 0.0;   // [rad] through the aqueous
   Real offset = 0.0;         // [m] where the interface is read before it is extended
+  // How the interface runs from the offset to the wall (sim/equilibrium/wall_oil.h).
+  equilibrium::WallExtension extension = equilibrium::WallExtension::kArc;
 };
 
 // `fluidFraction`: per voxel of `grid`, the share inside the fluid region. `particles` [m] with

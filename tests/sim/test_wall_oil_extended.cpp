@@ -41,15 +41,15 @@ struct Lattice {
   std::vector<std::uint8_t> isOil;
 };
 
-// A cubic lattice at kSpacing inside the sphere (half a spacing from the wall); aqueous below the
-// meniscus.
-Lattice latticeWith(const testref::SphereMeniscus& m) {
+// A cubic lattice at kSpacing inside the sphere (at least half a spacing from the wall), shifted by
+// `shift` spacings along z; aqueous below the meniscus.
+Lattice latticeWith(const testref::SphereMeniscus& m, double shift) {
   Lattice l;
   const int n = static_cast<int>(kR / kSpacing) + 1;
   for (int i = -n; i < n; ++i)
     for (int j = -n; j < n; ++j)
       for (int k = -n; k < n; ++k) {
-        const Vec3 x = kSpacing * Vec3(i + 0.5, j + 0.5, k + 0.5);
+        const Vec3 x = kSpacing * Vec3(i + 0.5, j + 0.5, k + 0.5 + shift);
         if (x.norm() > kR - 0.5 * kSpacing) continue;
         const double r = std::hypot(x.x(), x.y());
         const bool aqueous = r <= m.meridian.back().first && x.z() < meniscusHeight(m, r);
@@ -98,30 +98,37 @@ TEST_CASE("Coverage read below the spacing matches the Young-Laplace contact lin
       equilibrium::gridAround(Vec3::Constant(-kR), Vec3::Constant(kR), 0.5 * kSpacing, 2);
   const std::vector<double> fluid =
       equilibrium::fluidFractionsFromDistance(grid, [](const Vec3& x) { return x.norm() - kR; });
-  // Support and offset 1.5 spacings, voxel half a spacing: of the settings tried (support 1.2-2,
-  // offset 1-2 spacings, voxel 0.25-0.5 spacing) the one closest to the reference at every angle.
+  // The reader's defaults (docs/methods/interface.md): support 1.5 spacings; offset 2 spacings, so
+  // that the colour is read where its kernel clears the particle-free shell next to the wall.
   ExtendedWallReadingOptions options;
   options.supportRadius = 1.5 * kSpacing;
-  options.offset = 1.5 * kSpacing;
-  for (double theta : {18.0, 40.0, 90.0}) {
-    const testref::SphereMeniscus m = testref::youngLaplaceSphere(kR, c, theta * kDeg, 0.1);
-    const Lattice lattice = latticeWith(m);
-    options.contactAngle = theta * kDeg;
-    const double extended = share(
-        wallOilByExtendedInterface(grid, fluid, lattice.x, lattice.isOil, wall, normals, options));
-    const double atWall = readAtWall(lattice, wall, options.supportRadius);
-    INFO("theta " << theta << " deg: exact " << m.upperWetFraction << ", extended " << extended
-                  << ", read at the wall " << atWall);
-    // The lattice places the interface to about half a spacing, and the contact height moves the
-    // covered share by dz / (2 R): 0.6 mm / 24 mm = 2.5 points. At 90 deg the extension adds
-    // nothing, so the lattice's error is all there is.
-    if (theta == 90.0) CHECK(std::abs(extended - m.upperWetFraction) <= 0.025);
-    // At small angles the reading at the wall calls the aqueous wedge oil (+9.6 points at 18 deg,
-    // +4.0 at 40, measured); the extension halves that (+4.7, +1.9). Held at "a third less at
-    // least", so that the extension cannot silently stop helping. What is left is the planar
-    // extension over 1.5 spacings of a curved meniscus (docs/methods/interface.md).
-    if (theta < 90.0)
-      CHECK(std::abs(extended - m.upperWetFraction) <=
-            2.0 / 3.0 * std::abs(atWall - m.upperWetFraction));
-  }
+  options.offset = 2.0 * kSpacing;
+  for (const double fill : {0.8, 0.9})
+    for (const double theta : {18.0, 40.0, 90.0}) {
+      const testref::SphereMeniscus m = testref::youngLaplaceSphere(kR, c, theta * kDeg, 1 - fill);
+      options.contactAngle = theta * kDeg;
+      // Three alignments of the lattice along gravity: where the interface falls between particle
+      // layers moves the lattice's own contact line by up to 1.5 points at 1.2 mm (measured at
+      // 90 deg, where the extension changes nothing), so each alignment is held to 3 points and
+      // their mean, where that scatter averages out, to 1 point. Measured: mean -0.1 to +0.8,
+      // single alignments -2.0 to +2.6 points.
+      double sum = 0.0, atWallSum = 0.0;
+      for (const double shift : {0.0, 0.25, 0.5}) {
+        const Lattice lattice = latticeWith(m, shift);
+        const double extended = share(wallOilByExtendedInterface(
+            grid, fluid, lattice.x, lattice.isOil, wall, normals, options));
+        INFO("fill " << fill << ", theta " << theta << " deg, shift " << shift << ": exact "
+                     << m.upperWetFraction << ", extended " << extended);
+        CHECK(std::abs(extended - m.upperWetFraction) <= 0.03);
+        sum += extended;
+        if (theta == 18.0) atWallSum += readAtWall(lattice, wall, options.supportRadius);
+      }
+      const double mean = sum / 3.0;
+      INFO("fill " << fill << ", theta " << theta << " deg: exact " << m.upperWetFraction
+                   << ", extended (mean of 3 alignments) " << mean);
+      CHECK(std::abs(mean - m.upperWetFraction) <= 0.01);
+      // At the retina's angle a reading next to the wall calls the aqueous wedge oil (+9 points
+      // measured): what the extension exists to remove.
+      if (theta == 18.0) CHECK(atWallSum / 3.0 - m.upperWetFraction > 0.05);
+    }
 }
