@@ -19,6 +19,7 @@ check protocols 'tools/|CGAL/' "protocols is below tools; CGAL stays in meshing"
 check protocols/scenario 'protocols/(tissue|assembly|run|equilibrium|sweep)/' "scenario/ is the data the layers above share"
 check protocols/tissue 'protocols/(assembly|run|equilibrium|sweep)/' "tissue/ builds on scenario/ only"
 check protocols/assembly 'protocols/(run|equilibrium|sweep)/' "assembly/ is below the runner"
+check protocols/equilibrium 'protocols/(run|sweep)/' "equilibrium/ solves postures; the runner runs schedules of them"
 hdr=$(grep -rln "#include <CGAL/" "$root/meshing" --include='*.h' 2>/dev/null)
 if [ -n "$hdr" ]; then echo "CGAL included from a header (keep it in meshing .cpp files): $hdr"; status=1; fi
 [ $status -eq 0 ] && echo "layering ok"

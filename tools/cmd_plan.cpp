@@ -10,7 +10,6 @@
 #include "protocols/assembly/assemble_scenario.h"
 #include "protocols/assembly/pipeline_options.h"
 #include "protocols/equilibrium/posture_equilibrium.h"
-#include "protocols/equilibrium/run_equilibrium.h"
 #include "protocols/equilibrium/start_from_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/report/report_format.h"

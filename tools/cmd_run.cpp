@@ -14,12 +14,13 @@
 #endif
 
 #include "protocols/assembly/assemble_scenario.h"
-#include "protocols/equilibrium/run_equilibrium.h"
+#include "protocols/equilibrium/posture_equilibrium.h"
 #include "protocols/equilibrium/start_from_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/io_error.h"
 #include "protocols/report/report_format.h"
 #include "protocols/run/rebuild_report.h"
+#include "protocols/run/run_equilibrium.h"
 #include "protocols/run/run_scenario.h"
 #include "tools/accuracy_option.h"
 #include "tools/cli_args.h"

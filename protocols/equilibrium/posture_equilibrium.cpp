@@ -1,5 +1,6 @@
 #include "protocols/equilibrium/posture_equilibrium.h"
 
+#include <algorithm>
 #include <chrono>
 #include <numbers>
 
@@ -9,6 +10,12 @@
 #include "sim/equilibrium/wall_oil.h"
 
 namespace protocols {
+
+bool isEquilibriumSchedule(const Scenario& s) {
+  return !s.schedule.empty() &&
+         std::all_of(s.schedule.begin(), s.schedule.end(),
+                     [](const ScheduledPosture& p) { return p.equilibrium; });
+}
 
 double equilibriumVoxelSpacing(const std::string& preset) {
   if (preset == "fine") return 0.3e-3;

@@ -13,6 +13,9 @@
 
 namespace protocols {
 
+// Whether every posture of the schedule asks for its equilibrium.
+bool isEquilibriumSchedule(const Scenario& scenario);
+
 // Voxel spacing per accuracy preset [m] (the solver's sqrt(t) is 1.5 voxels). Measured in a
 // 12 mm sphere against Young-Laplace: docs/methods/equilibrium.md.
 double equilibriumVoxelSpacing(const std::string& preset);

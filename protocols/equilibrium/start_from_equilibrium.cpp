@@ -8,7 +8,6 @@
 
 #include "protocols/assembly/assemble_scenario.h"
 #include "protocols/equilibrium/posture_equilibrium.h"
-#include "protocols/equilibrium/run_equilibrium.h"
 #include "protocols/report/report_format.h"
 
 namespace protocols {

@@ -16,6 +16,13 @@ struct ReportPosture {
   std::string label;   // e.g. "face-down"
   double start = 0.0;  // [s]
   double end = 0.0;    // [s]
+  // An "until steady" posture: whether it settled before its maximum (absent for a fixed
+  // duration, an equilibrium posture, or a run stopped before the posture ended).
+  std::optional<bool> endedSteady = std::nullopt;
+  // A posture that ended unsteady at its maximum: the retina's oil-covered share at its end, and
+  // at the posture's static equilibrium when the equilibrium solver can give one [1].
+  std::optional<double> retinaAtEnd = std::nullopt;
+  std::optional<double> equilibriumRetina = std::nullopt;
 };
 
 struct ReportStage {

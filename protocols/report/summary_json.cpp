@@ -79,6 +79,27 @@ Json pressureSolveOf(const ReportPressureSolve& ps) {
           {"steps", ps.steps}};
 }
 
+Json optionalNumber(const std::optional<double>& value) {
+  return value ? number(*value) : Json(nullptr);
+}
+
+// The schedule as run; "ended_steady" is null for postures that were not "until steady".
+Json posturesOf(const ReportInput& in) {
+  Json postures = Json::array();
+  for (const ReportPosture& p : in.postures) {
+    Json posture = {{"name", p.label},
+                    {"start_s", number(p.start, 9)},
+                    {"end_s", number(p.end, 9)},
+                    {"ended_steady", p.endedSteady ? Json(*p.endedSteady) : Json(nullptr)}};
+    if (p.endedSteady && !*p.endedSteady) {
+      posture["retina_coverage_at_end"] = optionalNumber(p.retinaAtEnd);
+      posture["equilibrium_retina_coverage"] = optionalNumber(p.equilibriumRetina);
+    }
+    postures.push_back(posture);
+  }
+  return postures;
+}
+
 Json equilibriaOf(const ReportInput& in) {
   Json equilibria = Json::array();
   for (const ReportEquilibrium& e : in.equilibria) {
@@ -112,10 +133,10 @@ Json equilibriaOf(const ReportInput& in) {
 
 std::string renderSummaryJson(const ReportInput& in) {
   Json summary = {{"title", in.title},          {"duration_s", number(in.summary.duration, 9)},
-                  {"complete", !in.incomplete}, {"frames", in.frames.size()},
-                  {"regions", regionsOf(in)},   {"breaks", breaksOf(in)},
-                  {"tissue", in.tissue},        {"stages", stagesOf(in)},
-                  {"accuracy", accuracyOf(in)}};
+                  {"complete", !in.incomplete}, {"postures", posturesOf(in)},
+                  {"frames", in.frames.size()}, {"regions", regionsOf(in)},
+                  {"breaks", breaksOf(in)},     {"tissue", in.tissue},
+                  {"stages", stagesOf(in)},     {"accuracy", accuracyOf(in)}};
   if (in.pressureSolve) summary["pressure_solve"] = pressureSolveOf(*in.pressureSolve);
   if (!in.equilibria.empty()) summary["equilibria"] = equilibriaOf(in);
   // Invalid UTF-8 in a title or break name (protocol text is not checked for it) is replaced

@@ -1,6 +1,7 @@
 #include "protocols/report/write_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -78,6 +79,23 @@ void renderEquilibria(const ReportInput& in, std::ostringstream& s) {
        "superior up); dashed lines separate the quadrants.</p>\n";
 }
 
+// A posture that stopped at its maximum before it settled, in the headline: its figures are a
+// transient's, and how far that is from where the posture comes to rest.
+void renderUnsteadyPosture(const ReportPosture& p, std::ostringstream& s) {
+  s << "<p><strong>Not steady:</strong> the posture " << escapeXml(p.label)
+    << " reached its maximum (" << formatNumber(p.end - p.start, 4)
+    << " s) before it settled, so its figures are those of a transient.";
+  if (p.retinaAtEnd && p.equilibriumRetina) {
+    const double points = 100.0 * (*p.retinaAtEnd - *p.equilibriumRetina);
+    s << " At its end oil covered " << formatPercent(*p.retinaAtEnd)
+      << " of the retina; at the posture's static equilibrium it covers "
+      << formatPercent(*p.equilibriumRetina) << ", " << formatNumber(std::abs(points), 3)
+      << " points " << (points >= 0.0 ? "less" : "more")
+      << ". <code>duration = \"equilibrium\"</code> gives the resting state in seconds.";
+  }
+  s << "</p>\n";
+}
+
 }  // namespace
 
 std::string renderReportHtml(const ReportInput& in) {
@@ -92,6 +110,8 @@ std::string renderReportHtml(const ReportInput& in) {
       << formatNumber(in.scheduledDuration, 4)
       << " s, so every figure below covers only the part simulated. Continue it with "
          "<code>tamponade run --resume</code> on its folder for the whole schedule.</p>\n";
+  for (const ReportPosture& posture : in.postures)
+    if (posture.endedSteady && !*posture.endedSteady) renderUnsteadyPosture(posture, s);
 
   s << "<h2>Scenario</h2>\n";
   for (const auto& p : in.scenario) s << "<p>" << escapeXml(p) << "</p>\n";

@@ -12,6 +12,7 @@
 #include "protocols/io/io_error.h"
 #include "protocols/report/write_report.h"
 #include "protocols/run/scenario_report_input.h"
+#include "protocols/run/unsteady_postures.h"
 #include "protocols/tissue/tissue_measures.h"
 #include "sim/world/stage_registry.h"
 
@@ -27,6 +28,7 @@ ReportInput makeRunReportInput(const Protocol& protocol, const Scenario& s, cons
   in.wallOilFraction = r.lastFractions.oilFraction;
   in.wallWetting = r.lastFractions.wetting;
   in.wallRegions = s.retina.regions;
+  addUnsteadyPostureDistances(protocol, s, in);
   for (const auto& e : r.timers) {
     ReportStage st{e.name, true, "", e.seconds, e.calls};
     for (const auto& d : r.decisions)

@@ -215,7 +215,8 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
   in.scenario = scenarioParagraphs(p, s);
   double t = 0.0;
   for (const auto& posture : s.schedule) {
-    in.postures.push_back({posture.label, t, t + posture.duration});
+    in.postures.push_back({posture.label, t, t + posture.duration,
+                           posture.untilSteady ? posture.endedSteady : std::nullopt});
     t += posture.duration;
   }
   for (const anatomy::RetinalBreak& br : s.breaks)

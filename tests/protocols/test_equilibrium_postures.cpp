@@ -8,9 +8,9 @@
 #include <nlohmann/json.hpp>
 
 #include "protocols/assembly/assemble_scenario.h"
-#include "protocols/equilibrium/run_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/format/protocol_error.h"
+#include "protocols/run/run_equilibrium.h"
 #include "protocols/scenario/scenario.h"
 #include "tests/support/tamponade_command.h"
 

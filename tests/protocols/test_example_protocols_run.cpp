@@ -11,8 +11,9 @@
 #include <vector>
 
 #include "protocols/assembly/assemble_scenario.h"
-#include "protocols/equilibrium/run_equilibrium.h"
+#include "protocols/equilibrium/posture_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
+#include "protocols/run/run_equilibrium.h"
 #include "protocols/run/run_scenario.h"
 
 namespace fs = std::filesystem;

@@ -14,8 +14,11 @@
 #include <regex>
 #include <thread>
 
+#include <nlohmann/json.hpp>
+
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/frame_reader.h"
+#include "protocols/report/report_format.h"
 #include "protocols/run/progress_text.h"
 #include "protocols/run/run_scenario.h"
 #include "protocols/run/steady_state.h"
@@ -173,6 +176,60 @@ TEST_CASE("until steady: a settling eye ends its posture before the maximum",
   const std::string html = readText(dir / "a" / "report.html");
   CHECK(protocols_test::checkXml(html).empty());
   CHECK(html.find("supine until steady (reached after") != std::string::npos);
+  fs::remove(dir / "a" / "report.html");
+  REQUIRE(runTamponade("report a", dir).exitCode == 0);
+  CHECK(readText(dir / "a" / "report.html") == html);
+  fs::remove_all(dir);
+}
+
+TEST_CASE("until steady: a posture stopped at its maximum says so, with its equilibrium distance",
+          "[unit][run][steady][cli]") {
+  // The steady window (0.05 s) is longer than the posture's maximum (0.03 s), so the posture
+  // cannot be judged steady: it must end unsteady, be named in the report's headline and in
+  // summary.json, and carry the retina coverage at the posture's static equilibrium. That
+  // coverage must be the one an equilibrium run of the same eye and posture reports (the same
+  // solver at the same preset's voxel, reached through the report instead of the schedule).
+  const fs::path dir = fs::temp_directory_path() / "tamponade_unsteady_test";
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  std::ofstream(dir / "unsteady.toml") << eyeProtocol(
+      "[schedule]\nsteady_window = \"0.05 s\"\n"
+      "[[schedule.postures]]\nname = \"upright\"\nduration = \"until steady\"\n"
+      "max_duration = \"0.03 s\"\n",
+      "[outputs]\nframe_interval = \"0.01 s\"\n");
+  std::ofstream(dir / "equilibrium.toml")
+      << eyeProtocol("[[schedule.postures]]\nname = \"upright\"\nduration = \"equilibrium\"\n");
+  const auto r = runTamponade("run unsteady.toml --out a --threads 1", dir);
+  INFO(r.output);
+  REQUIRE(r.exitCode == 0);
+  CHECK(r.output.find("posture 1 (upright): not steady, stopped at its maximum") !=
+        std::string::npos);
+  REQUIRE(runTamponade("run equilibrium.toml --out e --threads 1", dir).exitCode == 0);
+
+  const auto summary = nlohmann::json::parse(readText(dir / "a" / "summary.json"));
+  const auto& posture = summary.at("postures").at(0);
+  CHECK(posture.at("name") == "upright");
+  CHECK(posture.at("ended_steady") == false);
+  const double atEnd = posture.at("retina_coverage_at_end").get<double>();
+  const double equilibrium = posture.at("equilibrium_retina_coverage").get<double>();
+  CHECK(atEnd >= 0.0);
+  CHECK(atEnd <= 1.0);
+  const auto reference = nlohmann::json::parse(readText(dir / "e" / "summary.json"));
+  const auto& regions = reference.at("equilibria").at(0).at("regions");
+  REQUIRE(regions.at(0).at("name") == "whole retina");
+  CHECK(equilibrium == Approx(regions.at(0).at("fraction").get<double>()).epsilon(1e-6));
+  // The equilibrium run's own postures are not "until steady": null, no distance.
+  CHECK(reference.at("postures").at(0).at("ended_steady").is_null());
+  CHECK_FALSE(reference.at("postures").at(0).contains("equilibrium_retina_coverage"));
+
+  const std::string html = readText(dir / "a" / "report.html");
+  CHECK(protocols_test::checkXml(html).empty());
+  CHECK(html.find("<strong>Not steady:</strong> the posture upright reached its maximum") !=
+        std::string::npos);
+  CHECK(html.find("at the posture's static equilibrium it covers " +
+                  protocols::formatPercent(equilibrium)) != std::string::npos);
+  CHECK(readText(dir / "e" / "report.html").find("Not steady") == std::string::npos);
+  // Rebuilt from the files, the report says the same.
   fs::remove(dir / "a" / "report.html");
   REQUIRE(runTamponade("report a", dir).exitCode == 0);
   CHECK(readText(dir / "a" / "report.html") == html);

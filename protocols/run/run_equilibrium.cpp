@@ -1,4 +1,4 @@
-#include "protocols/equilibrium/run_equilibrium.h"
+#include "protocols/run/run_equilibrium.h"
 
 #include <algorithm>
 #include <chrono>
@@ -18,12 +18,6 @@ namespace {
 constexpr double kFrameInset = 1e-3;  // [s]
 
 }  // namespace
-
-bool isEquilibriumSchedule(const Scenario& s) {
-  return !s.schedule.empty() &&
-         std::all_of(s.schedule.begin(), s.schedule.end(),
-                     [](const ScheduledPosture& p) { return p.equilibrium; });
-}
 
 RunSummary runEquilibriumSchedule(const Protocol& protocol, Scenario& s, const RunOptions& options,
                                   const std::function<void(const EquilibriumProgress&)>& progress) {

@@ -22,9 +22,6 @@ struct EquilibriumProgress {
   bool converged = false;
 };
 
-// Whether every posture of the schedule asks for its equilibrium.
-bool isEquilibriumSchedule(const Scenario& scenario);
-
 // Runs the schedule into options.outputFolder (which must exist). `progress` is called after
 // each posture. Throws IoError for output problems, SimError when a posture has no equilibrium
 // the method can compute (e.g. no interfacial tension).
