@@ -1,9 +1,9 @@
 // A schedule of equilibrium postures (duration = "equilibrium"): each posture's static
-// equilibrium (posture_equilibrium.h), one after the other, then the same report as a simulated
-// run (report.html, coverage.csv, summary.json) and each posture's interface as
-// interface_<k>.ply (ParaView, MeshLab). Nothing is simulated: no frames or checkpoints.
-// In the report and the CSV each posture spans one nominal second (kEquilibriumHold), so the
-// schedule's means weight every posture alike; the transients between postures are neglected.
+// equilibrium (protocols/equilibrium/posture_equilibrium.h), one after the other, then the same
+// report as a simulated run (report.html, coverage.csv, summary.json) and each posture's interface
+// as interface_<k>.ply (ParaView, MeshLab). Nothing is simulated: no frames or checkpoints. In the
+// report and the CSV each posture spans one nominal second (kEquilibriumHold), so the schedule's
+// means weight every posture alike; the transients between postures are neglected.
 #pragma once
 
 #include <functional>

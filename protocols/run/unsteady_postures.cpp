@@ -16,7 +16,10 @@ std::optional<double> retinaAt(const std::vector<FrameCoverage>& frames, double 
   return coverage;
 }
 
-// Whether the equilibrium solver has what it needs: a tension, and an angle it can hold.
+// Whether the equilibrium solver has what it needs: a tension, and an angle it can hold. The
+// solver refuses the same (sim/equilibrium/threshold_dynamics_xu2017.cpp); asking first saves
+// voxelising the cavity for nothing. An absent angle is not taken as 90 deg here: a distance to an
+// equilibrium at an angle the protocol never gave would mislead.
 bool equilibriumDefined(const Scenario& s) {
   const FluidPhase& oil = s.phases[1];
   return oil.interfacialTension && *oil.interfacialTension > 0.0 &&
