@@ -2,7 +2,8 @@
 // accuracy choice costs and what it changes, side by side. Runs the protocol once per (particle
 // spacing, solver tolerance) pair and writes DIR/accuracy.csv and DIR/accuracy.md: wall time,
 // steps, the pressure solve's iterations and achieved density error, and every run's coverage
-// against the most accurate run (finest spacing, then tightest tolerance). Each run's own output
+// against the most accurate run (finest spacing, then tightest tolerance) and against each
+// posture's static equilibrium. Each run's own output
 // (frames, report) stays in DIR/runs/. Not a test: times depend on the machine and its load.
 // Exit codes: 0 ok, 2 bad usage or protocol, 1 a run failed or the output is not writable.
 #include <algorithm>
@@ -10,6 +11,8 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -20,6 +23,7 @@
 
 #include "protocols/assembly/assemble_scenario.h"
 #include "protocols/assembly/pipeline_options.h"
+#include "protocols/equilibrium/posture_equilibrium_coverage.h"
 #include "protocols/equilibrium/start_from_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/io_error.h"
@@ -41,7 +45,9 @@ constexpr const char* kUsage =
     "DIR/accuracy.csv and DIR/accuracy.md: wall time, steps, pressure-solve iterations per step,\n"
     "the mean density error the solve reached, the share of steps that stopped at its iteration\n"
     "cap, and the mean retinal coverage with its difference from the most accurate run (finest\n"
-    "spacing, then tightest tolerance) for the whole retina and the worst region. The runs'\n"
+    "spacing, then tightest tolerance) for the whole retina and the worst region, and each\n"
+    "run's distance from the answer: the retina's coverage at the end of each posture minus the\n"
+    "posture's static equilibrium (solved once; the posture farthest from it named). The runs'\n"
     "frames and reports go to DIR/runs/ (replaced when the bench is run again).\n"
     "  --tolerances  accuracy.solver_tolerance values as fractions, each in (0, 0.05]\n"
     "                (default 0.005,0.001,0.0001: the draft and standard presets and the papers' "
@@ -82,6 +88,29 @@ std::string label(double spacing, double tolerance) {
   return buffer;
 }
 
+// Per posture, its static equilibrium's retina coverage and its label: the answer every run is
+// also held against (none where the scene has no contact angle or tension).
+struct Equilibria {
+  std::vector<std::optional<double>> retina;  // [1]
+  std::vector<std::string> labels;
+};
+
+// The largest |run's retina coverage at a posture's end - that posture's equilibrium| and the
+// posture (NaN when no posture has an equilibrium).
+double worstEquilibriumDifference(const AccuracyRun& run, const Equilibria& e,
+                                  std::string& posture) {
+  double worst = std::numeric_limits<double>::quiet_NaN();
+  for (std::size_t k = 0; k < e.retina.size() && k < run.summary.retinaAtPostureEnd.size(); ++k) {
+    if (!e.retina[k]) continue;
+    const double diff = run.summary.retinaAtPostureEnd[k] - *e.retina[k];
+    if (std::isnan(worst) || std::abs(diff) > std::abs(worst)) {
+      worst = diff;
+      posture = e.labels[k];
+    }
+  }
+  return worst;
+}
+
 // Largest |difference| over the reported regions' mean coverage (whole retina, quadrants, zones).
 double worstRegionDifference(const protocols::ScheduleCoverage& a,
                              const protocols::ScheduleCoverage& b, std::string& region) {
@@ -96,8 +125,16 @@ double worstRegionDifference(const protocols::ScheduleCoverage& a,
   return worst;
 }
 
-void writeTables(const std::vector<AccuracyRun>& runs, const std::filesystem::path& dir,
-                 const std::string& protocolFile, const std::string& solver, int threads) {
+std::string equilibriumCell(double difference, const std::string& posture) {
+  if (std::isnan(difference)) return "n/a";
+  char cell[96];
+  std::snprintf(cell, sizeof cell, "%+.1f (%s)", 100 * difference, posture.c_str());
+  return cell;
+}
+
+void writeTables(const std::vector<AccuracyRun>& runs, const Equilibria& equilibria,
+                 const std::filesystem::path& dir, const std::string& protocolFile,
+                 const std::string& solver, int threads) {
   const AccuracyRun& ref = runs.back();  // sorted coarse -> fine, loose -> tight
   const std::filesystem::path csvPath = dir / "accuracy.csv", mdPath = dir / "accuracy.md";
   std::ofstream csv(csvPath);
@@ -105,39 +142,60 @@ void writeTables(const std::vector<AccuracyRun>& runs, const std::filesystem::pa
     throw protocols::IoError(csvPath.string(), "", "cannot be written", "choose another --out");
   csv << "spacing_mm,solver_tolerance,fluid_particles,steps,wall_s,mean_iterations,"
          "steps_at_iteration_cap,mean_density_error,worst_step_density_error,whole_retina_mean,"
-         "whole_retina_diff,worst_region_diff,worst_region,threads\n";
+         "whole_retina_diff,worst_region_diff,worst_region,equilibrium_diff,equilibrium_posture,"
+         "threads\n";
   std::ofstream md(mdPath);
   if (!md)
     throw protocols::IoError(mdPath.string(), "", "cannot be written", "choose another --out");
   md << "Protocol `" << protocolFile << "`, solver " << solver << ", " << threads
      << " thread(s). Differences are in coverage points against the last row (finest spacing, "
-        "tightest tolerance).\n\n"
+        "tightest tolerance). \"vs equilibrium\" is the retina's coverage at the end of a "
+        "posture minus the posture's static equilibrium (docs/methods/equilibrium.md), the "
+        "posture farthest from it named.\n\n"
         "| spacing [mm] | tolerance | fluid particles | steps | wall [s] | iterations/step | at "
         "cap | "
-        "density error reached (worst step) | whole retina | diff | worst region diff |\n"
-        "|---|---|---|---|---|---|---|---|---|---|---|\n";
+        "density error reached (worst step) | whole retina | diff | worst region diff | vs "
+        "equilibrium |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   char line[640];
   for (const AccuracyRun& r : runs) {
     const protocols::PressureSolveTotals& ps = r.summary.pressureSolve;
     std::string region;
     const double worst = worstRegionDifference(r.summary.coverage, ref.summary.coverage, region);
     const double whole = r.summary.coverage.regions[0] - ref.summary.coverage.regions[0];
+    std::string posture;
+    const double fromEquilibrium = worstEquilibriumDifference(r, equilibria, posture);
     csv << r.spacing * 1e3 << ',' << r.tolerance << ',' << r.particles << ',' << r.summary.steps
         << ',' << r.summary.wallSeconds << ',' << ps.meanIterations() << ','
         << ps.stepsAtIterationCap << ',' << ps.meanDensityError() << ',' << ps.maxStepDensityError
         << ',' << r.summary.coverage.regions[0] << ',' << whole << ',' << worst << ",\"" << region
-        << "\"," << threads << '\n';
+        << "\"," << fromEquilibrium << ",\"" << posture << "\"," << threads << '\n';
     std::snprintf(line, sizeof line,
                   "| %g | %.3g %% | %ld | %ld | %.1f | %.1f | %.0f %% | %.3g %% (%.3g %%) | %.1f "
                   "%% | %+.1f | "
-                  "%.1f (%s) |\n",
+                  "%.1f (%s) | %s |\n",
                   r.spacing * 1e3, 100 * r.tolerance, r.particles, r.summary.steps,
                   r.summary.wallSeconds, ps.meanIterations(), 100 * ps.capFraction(),
                   100 * ps.meanDensityError(), 100 * ps.maxStepDensityError,
-                  100 * r.summary.coverage.regions[0], 100 * whole, 100 * worst, region.c_str());
+                  100 * r.summary.coverage.regions[0], 100 * whole, 100 * worst, region.c_str(),
+                  equilibriumCell(fromEquilibrium, posture).c_str());
     md << line;
   }
   std::printf("wrote %s and %s\n", csvPath.string().c_str(), mdPath.string().c_str());
+}
+
+// The postures' equilibria, solved once (they do not depend on the particle spacing).
+Equilibria solveEquilibria(const protocols::Protocol& protocol,
+                           const protocols::Scenario& scenario) {
+  std::fprintf(stderr, "bench accuracy: solving each posture's static equilibrium ...\n");
+  Equilibria e;
+  e.retina = protocols::equilibriumRetinaCoverage(scenario, protocol.tamponade.fill.value);
+  for (const auto& posture : scenario.schedule) e.labels.push_back(posture.label);
+  for (std::size_t k = 0; k < e.retina.size(); ++k)
+    if (e.retina[k])
+      std::fprintf(stderr, "  %s: %s of the retina covered\n", e.labels[k].c_str(),
+                   protocols::formatPercent(*e.retina[k]).c_str());
+  return e;
 }
 
 }  // namespace
@@ -193,6 +251,7 @@ int runBenchAccuracy(Args args) {
     std::vector<AccuracyRun> runs;
     std::string solver;
     const std::size_t total = spacings.size() * tolerances.size();
+    Equilibria equilibria;
     for (const double spacing : spacings) {
       for (const double tolerance : tolerances) {
         protocols::Protocol p = protocol;
@@ -200,6 +259,7 @@ int runBenchAccuracy(Args args) {
         p.accuracy.solverTolerance.value = tolerance;
         protocols::Scenario scenario = protocols::assembleStartingScenario(p);
         solver = scenario.pipelineOptions.solver;
+        if (runs.empty()) equilibria = solveEquilibria(p, scenario);
         AccuracyRun r;
         r.spacing = spacing;
         r.tolerance = tolerance;
@@ -229,7 +289,7 @@ int runBenchAccuracy(Args args) {
     if (!protocols::isImplicitSolver(solver))
       std::fprintf(stderr, "note: solver %s is explicit: the tolerance changes nothing\n",
                    solver.c_str());
-    writeTables(runs, dir, file, solver, threads);
+    writeTables(runs, equilibria, dir, file, solver, threads);
     std::ifstream md(dir / "accuracy.md");
     std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
     return 0;

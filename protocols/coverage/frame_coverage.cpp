@@ -55,4 +55,11 @@ FrameCoverage measureFrameCoverage(const RetinaMap& map, const WallOilFractions&
   return out;
 }
 
+std::optional<double> retinaCoverageAt(const std::vector<FrameCoverage>& frames, double time) {
+  std::optional<double> coverage;
+  for (const FrameCoverage& f : frames)
+    if (f.time <= time * (1 + 1e-9)) coverage = f.retina().fraction;
+  return coverage;
+}
+
 }  // namespace protocols

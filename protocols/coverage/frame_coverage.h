@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -70,5 +71,9 @@ struct FrameCoverage {
 // lists a wall index out of range.
 FrameCoverage measureFrameCoverage(const RetinaMap& map, const WallOilFractions& fractions,
                                    double time);
+
+// The retina's oil-covered share in the last of `frames` (in time order) at or before `time` [s]
+// (to 1e-9 relative, the rounding of a sum of durations); none when every frame is later.
+std::optional<double> retinaCoverageAt(const std::vector<FrameCoverage>& frames, double time);
 
 }  // namespace protocols

@@ -61,6 +61,9 @@ struct RunSummary {
   double retinaCoverage = 0.0;  // [1] time-weighted mean
   PressureSolveTotals pressureSolve;
   ScheduleCoverage coverage;  // every reported region's and break's time-weighted mean
+  // [1] per posture, the retina's oil-covered share in the last frame at or before its end (NaN
+  // for a posture the run did not reach)
+  std::vector<double> retinaAtPostureEnd;
 };
 
 // Runs `scenario` (built from `protocol`). Throws IoError for output problems, SimError when the

@@ -3,6 +3,7 @@
 #include <bit>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <sstream>
 
 #include "protocols/assembly/assemble_scenario.h"
@@ -324,6 +325,9 @@ RunSummary ScenarioRun::finish() {
   out.retinaCoverage = in.summary.regions[0];
   out.pressureSolve = state_.solve;
   out.coverage = in.summary;
+  for (const ReportPosture& p : in.postures)
+    out.retinaAtPostureEnd.push_back(
+        retinaCoverageAt(frames_, p.end).value_or(std::numeric_limits<double>::quiet_NaN()));
   return out;
 }
 

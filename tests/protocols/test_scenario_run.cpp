@@ -15,6 +15,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "protocols/assembly/assemble_scenario.h"
+#include "protocols/equilibrium/posture_equilibrium_coverage.h"
+#include "protocols/format/parse_protocol.h"
 #include "protocols/io/frame_reader.h"
 #include "sim/core/particle_set.h"
 #include "tests/support/tamponade_command.h"
@@ -234,6 +237,34 @@ TEST_CASE(
   CHECK(std::stod(rows[2][7]) <= 0.001);
   CHECK(fs::exists(dir / "acc" / "accuracy.md"));
   CHECK(fs::exists(dir / "acc" / "runs" / "d1.5mm_tol0.005" / "report.html"));
+
+  // Each row's distance from the answer: the retina's coverage at a posture's end (the run's own
+  // coverage.csv) minus the posture's static equilibrium, solved here independently of the bench;
+  // the posture farthest from its equilibrium is named. 1e-5: the CSVs' 6 significant digits.
+  REQUIRE(rows[0].size() == 16);
+  CHECK(rows[0][13] == "equilibrium_diff");
+  const protocols::Protocol protocol = protocols::parseProtocol((dir / "ind.toml").string());
+  const protocols::Scenario scenario = protocols::assembleScenario(protocol);
+  const auto equilibria =
+      protocols::equilibriumRetinaCoverage(scenario, protocol.tamponade.fill.value);
+  REQUIRE(equilibria.size() == 2);
+  REQUIRE(equilibria[0].has_value());
+  REQUIRE(equilibria[1].has_value());
+  std::istringstream series(readText(dir / "acc" / "runs" / "d1.5mm_tol0.001" / "coverage.csv"));
+  const std::array<double, 2> ends = {0.03, 0.06};  // [s] the postures' ends
+  std::array<double, 2> atEnd{};
+  std::string line;
+  std::getline(series, line);  // header
+  while (std::getline(series, line)) {
+    const double time = std::stod(line);
+    const double retina = std::stod(line.substr(line.find(',') + 1));
+    for (std::size_t k = 0; k < ends.size(); ++k)
+      if (time <= ends[k] * (1 + 1e-9)) atEnd[k] = retina;
+  }
+  const double supine = atEnd[0] - *equilibria[0], upright = atEnd[1] - *equilibria[1];
+  const bool supineWorst = std::abs(supine) >= std::abs(upright);
+  CHECK(std::stod(rows[2][13]) == Approx(supineWorst ? supine : upright).margin(1e-5));
+  CHECK(rows[2][14] == (supineWorst ? "\"supine\"" : "\"upright\""));
 
   // Bad usage and a bad protocol: exit 2, the reason, nothing written.
   const CommandResult tooLoose =
