@@ -25,12 +25,16 @@ void checkProblem(const EquilibriumProblem& p) {
   require(p.gravity.allFinite(), "equilibrium: gravity must be finite");
 }
 
-// Sets u to 1 on the voxels of smallest psi until sum u f reaches `target`, the last voxel
-// partly; 0 elsewhere (the threshold step of the scheme). Ties go to the lower index, so the
-// result is deterministic. O(n): a histogram of psi finds the voxels that straddle the quantile,
-// and only those are sorted.
+// Sets u to 1 on the voxels of smallest psi until sum u f reaches `target`; 0 elsewhere (the
+// threshold step of the scheme). The voxels whose psi lies within `tie` of the last one taken
+// share what is left of the volume alike (a linear program with equal costs has every split as a
+// minimum; the even one is the limit of vanishing tension, where a whole layer of voxels ties:
+// filled in index order, its oil stood next to the wall or in the middle by the tension's residue
+// and the flat interface read a voxel off). Deterministic. O(n): a histogram of psi finds the
+// voxels that straddle the quantile, and only those are sorted.
 void selectLowest(const std::vector<double>& psi, const std::vector<std::size_t>& fluid,
-                  const std::vector<double>& f, double target, std::vector<double>& u) {
+                  const std::vector<double>& f, double target, double tie,
+                  std::vector<double>& u) {
   double lo = psi[fluid[0]], hi = lo;
   for (std::size_t v : fluid) {
     lo = std::min(lo, psi[v]);
@@ -45,19 +49,29 @@ void selectLowest(const std::vector<double>& psi, const std::vector<std::size_t>
   double below = 0.0;
   while (cut < kBins - 1 && below + weight[cut] < target) below += weight[cut++];
   std::vector<std::size_t> straddling;
-  for (std::size_t v : fluid) {
-    const int b = binOf(v);
-    u[v] = b < cut ? 1.0 : 0.0;
-    if (b == cut) straddling.push_back(v);
-  }
+  for (std::size_t v : fluid)
+    if (binOf(v) == cut) straddling.push_back(v);
   std::sort(straddling.begin(), straddling.end(), [&](std::size_t a, std::size_t b) {
     return psi[a] < psi[b] || (psi[a] == psi[b] && a < b);
   });
+  double cutPsi = straddling.empty() ? hi : psi[straddling.back()];
   for (std::size_t v : straddling) {
-    const double take = std::clamp((target - below) / f[v], 0.0, 1.0);
-    u[v] = take;
-    below += take * f[v];
+    below += f[v];
+    if (below >= target) {
+      cutPsi = psi[v];
+      break;
+    }
   }
+  double lower = 0.0, tied = 0.0;  // [voxels] below the tie band, in it
+  for (std::size_t v : fluid) {
+    if (psi[v] < cutPsi - tie)
+      lower += f[v];
+    else if (psi[v] <= cutPsi + tie)
+      tied += f[v];
+  }
+  const double share = tied > 0.0 ? std::clamp((target - lower) / tied, 0.0, 1.0) : 0.0;
+  for (std::size_t v : fluid)
+    u[v] = psi[v] < cutPsi - tie ? 1.0 : (psi[v] <= cutPsi + tie ? share : 0.0);
 }
 
 }  // namespace
@@ -86,6 +100,10 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
   for (std::size_t v : fluid)
     potential[v] = -densityDifference * problem.gravity.dot(grid.centre(v));
 
+  // [J/m^3] psi differences below the potential across a hundredth of a voxel are ties: below
+  // what the grid resolves (0 without buoyancy: exact ties only).
+  const double tie = 1e-2 * std::abs(densityDifference) * problem.gravity.norm() * h;
+
   EquilibriumSolution out;
   out.grid = grid;
   out.fluidFraction = f;
@@ -95,7 +113,7 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
     std::vector<double> start = potential;
     if (problem.gravity.squaredNorm() == 0.0)
       for (std::size_t v : fluid) start[v] = grid.centre(v).x();
-    selectLowest(start, fluid, f, target, out.oil);
+    selectLowest(start, fluid, f, target, tie, out.oil);
   }
 
   const double cosTheta = std::cos(problem.contactAngle);
@@ -114,7 +132,7 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
         psi[v] = a * (blurredFluid[v] - 2.0 * blurredOil[v] + cosTheta * (1.0 - blurredFluid[v])) +
                  potential[v];
       previous = out.oil;
-      selectLowest(psi, fluid, f, target, out.oil);
+      selectLowest(psi, fluid, f, target, tie, out.oil);
       ++out.iterations;
       settled = std::equal(out.oil.begin(), out.oil.end(), previous.begin());
     }
@@ -143,6 +161,8 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
     out.oilVolume = oilUnits * dV;
   }
   out.cavityVolume = cavityUnits * dV;
+  const double weightPerArea = std::abs(densityDifference) * problem.gravity.norm();  // [N/m^3]
+  if (weightPerArea > 0.0) out.capillaryLength = std::sqrt(problem.tension / weightPerArea);
   return out;
 }
 

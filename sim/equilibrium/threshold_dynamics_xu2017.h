@@ -22,6 +22,7 @@
 // its accuracy against Young-Laplace and its cost: docs/methods/equilibrium.md.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "sim/equilibrium/voxel_grid.h"
@@ -58,6 +59,10 @@ struct EquilibriumSolution {
   int stages = 0;
   bool converged = false;     // the last stage ended with no voxel changing
   double oilVolume = 0.0;     // [m^3] sum u f h^3
+  // [m] sqrt(sigma / |(rho_oil - rho_aq) g|), the length over which the interface turns from its
+  // far shape to the contact angle next to a wall (infinite without gravity or buoyancy); the
+  // wall reader uses it (wall_oil.h).
+  double capillaryLength = std::numeric_limits<double>::infinity();
   double cavityVolume = 0.0;  // [m^3] sum f h^3
 };
 

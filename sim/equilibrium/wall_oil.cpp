@@ -9,6 +9,19 @@ namespace {
 constexpr double kReachVoxels = 4.0;  // D is resolved to 4 h, or delta + 2.5 h when delta is larger
 constexpr double kWholeVoxel = 0.999;  // [1] fluid fraction of a voxel the wall does not cut
 
+// Where between the centres of voxels a and b (0 at a, 1 at b) u crosses 1/2. When one of them
+// is whole (u 0 or 1) and the other partly filled, the partial voxel holds a sharp interface with
+// its oil on the side away from an aqueous neighbour (towards an oil one): it lies (u - 1/2) h
+// from the partial voxel's centre, exact for a plane along the axis (a linear interpolation of the
+// cell averages puts it up to h / 6 off, a layer the volume constraint fills partly). Linear
+// between two partial voxels.
+double crossingAlong(double ua, double ub) {
+  const auto whole = [](double u) { return u == 0.0 || u == 1.0; };
+  if (whole(ub) && !whole(ua)) return ub == 0.0 ? ua - 0.5 : 0.5 - ua;
+  if (whole(ua) && !whole(ub)) return 1.0 - (ua == 0.0 ? ub - 0.5 : 0.5 - ub);
+  return (0.5 - ua) / (ub - ua);
+}
+
 // Points where u crosses 1/2 between fluid voxels adjacent along an axis.
 std::vector<Vec3> crossingPoints(const VoxelGrid& g, const std::vector<double>& u,
                                  const std::vector<double>& f) {
@@ -23,7 +36,7 @@ std::vector<Vec3> crossingPoints(const VoxelGrid& g, const std::vector<double>& 
         for (int a = 0; a < 3; ++a) {
           const std::size_t w = v + stride[a];
           if (f[w] <= 0.0 || (u[v] - 0.5) * (u[w] - 0.5) > 0.0 || u[v] == u[w]) continue;
-          const double t = (0.5 - u[v]) / (u[w] - u[v]);
+          const double t = std::clamp(crossingAlong(u[v], u[w]), 0.0, 1.0);
           Vec3 p = g.centre(i, j, k);
           p[a] += t * g.spacing;
           points.push_back(p);
@@ -38,6 +51,7 @@ WallOilReader::WallOilReader(const EquilibriumSolution& s, double contactAngle, 
                              WallExtension extension)
     : grid_(s.grid), u_(s.oil), f_(s.fluidFraction), extension_(extension) {
   offset_ = offsetVoxels * grid_.spacing;
+  turning_ = std::min(offset_, s.capillaryLength);
   reach_ = std::max(kReachVoxels, offsetVoxels + 2.5) * grid_.spacing;
   theta_ = contactAngle;
   cosTheta_ = std::cos(contactAngle);
@@ -114,10 +128,14 @@ double WallOilReader::wallSignedDistance(const Vec3& w, const Vec3& n) const {
   // The distance to the interface's tangent plane at the nearest point: the points stand about a
   // voxel apart, and the distance to the point itself would overstate D by up to h / 8 at D = h.
   if (m.squaredNorm() == 0.0) return side * (points_[q] - p).norm() - offset_ * cosTheta_;
-  const double atOffset = side * std::abs(m.dot(p - points_[q]));
-  if (extension_ == WallExtension::kPlanar) return atOffset - offset_ * cosTheta_;
-  const double psi = std::acos(std::clamp(-m.dot(n), -1.0, 1.0));
-  return atOffset - offset_ * std::sin(psi) / std::tan(0.5 * (psi + theta_));
+  // Straight at its own angle psi (cos psi = -m . n) down to turning_ from the wall, then to theta:
+  // at turning_ = offset_ (a capillary length longer than the offset: the clinical case) this is
+  // the extension from the offset itself.
+  const double cosPsi = std::clamp(-m.dot(n), -1.0, 1.0);
+  const double atTurn = side * std::abs(m.dot(p - points_[q])) - (offset_ - turning_) * cosPsi;
+  if (extension_ == WallExtension::kPlanar) return atTurn - turning_ * cosTheta_;
+  const double psi = std::acos(cosPsi);
+  return atTurn - turning_ * std::sin(psi) / std::tan(0.5 * (psi + theta_));
 }
 
 }  // namespace sim::equilibrium

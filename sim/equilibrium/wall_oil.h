@@ -15,6 +15,12 @@
 //     the wall is delta cot(a), a = (psi + theta) / 2: D(w) = D(p) - delta sin(psi) cot(a).
 //     Exact for a meniscus of constant curvature in the wall's normal section; equal to kPlanar
 //     when psi = theta.
+//  4. next to a wall the interface turns from its far shape to theta over about a capillary
+//     length l_c = sqrt(sigma / (|rho_oil - rho_aq| g)) (the linearised meniscus decays as
+//     exp(-s / l_c); de Gennes, Brochard-Wyart & Quere 2004, "Capillarity and Wetting Phenomena",
+//     sec. 2.1). When l_c < delta (weak tension: the flat limit) the interface is carried at its
+//     own angle psi from p down to l_c from the wall and extended at theta only over that last
+//     l_c; when l_c >= delta (the eye: l_c = 11 mm for silicone oil) steps 2-3 are unchanged.
 // The wall point is oil-covered when D(w) > 0. docs/methods/equilibrium.md gives the reading's
 // measured error on imposed Young-Laplace states.
 #pragma once
@@ -52,6 +58,9 @@ class WallOilReader {
   std::vector<std::size_t> cellStart_, cellPoints_;
   double reach_ = 0.0;   // [m] farthest distance resolved
   double offset_ = 0.0;  // [m] delta
+  // [m] min(delta, the solution's capillary length): the interface keeps its own angle down to
+  // this distance from the wall and turns to theta below it
+  double turning_ = 0.0;
   double theta_ = 0.0;   // [rad]
   double cosTheta_ = 0.0;
   WallExtension extension_ = WallExtension::kPlanar;
