@@ -33,8 +33,7 @@ void checkProblem(const EquilibriumProblem& p) {
 // and the flat interface read a voxel off). Deterministic. O(n): a histogram of psi finds the
 // voxels that straddle the quantile, and only those are sorted.
 void selectLowest(const std::vector<double>& psi, const std::vector<std::size_t>& fluid,
-                  const std::vector<double>& f, double target, double tie,
-                  std::vector<double>& u) {
+                  const std::vector<double>& f, double target, double tie, std::vector<double>& u) {
   double lo = psi[fluid[0]], hi = lo;
   for (std::size_t v : fluid) {
     lo = std::min(lo, psi[v]);

@@ -57,8 +57,8 @@ struct EquilibriumSolution {
   double energy = 0.0;                // [J] the approximate energy E_t at the end (+ a constant)
   int iterations = 0;                 // over all stages
   int stages = 0;
-  bool converged = false;     // the last stage ended with no voxel changing
-  double oilVolume = 0.0;     // [m^3] sum u f h^3
+  bool converged = false;  // the last stage ended with no voxel changing
+  double oilVolume = 0.0;  // [m^3] sum u f h^3
   // [m] sqrt(sigma / |(rho_oil - rho_aq) g|), the length over which the interface turns from its
   // far shape to the contact angle next to a wall (infinite without gravity or buoyancy); the
   // wall reader uses it (wall_oil.h).

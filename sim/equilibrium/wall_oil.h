@@ -61,7 +61,7 @@ class WallOilReader {
   // [m] min(delta, the solution's capillary length): the interface keeps its own angle down to
   // this distance from the wall and turns to theta below it
   double turning_ = 0.0;
-  double theta_ = 0.0;   // [rad]
+  double theta_ = 0.0;  // [rad]
   double cosTheta_ = 0.0;
   WallExtension extension_ = WallExtension::kPlanar;
 };
