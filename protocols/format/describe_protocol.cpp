@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
 #include "protocols/format/units.h"
 
 namespace protocols {
@@ -125,8 +127,8 @@ std::string describeProtocol(const Protocol& p) {
     if (s.name.value == PostureName::kCustom) {
       const auto& g = s.gravityDirection.value;
       out.add(prefix + ".gravity_direction",
-              "[" + formatIn(g[0], "") + ", " + formatIn(g[1], "") + ", " + formatIn(g[2], "") +
-                  "] (eye frame)",
+              fmt::format("[{}, {}, {}] (eye frame)", formatIn(g[0], ""), formatIn(g[1], ""),
+                          formatIn(g[2], "")),
               s.gravityDirection.where);
     } else {
       out.add(prefix + ".name", quoted(std::string(toString(s.name.value))), s.name.where);

@@ -3,6 +3,8 @@
 #include <array>
 #include <stdexcept>
 
+#include <fmt/format.h>
+
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/protocol.h"
 
@@ -258,13 +260,13 @@ std::vector<std::string_view> childKeys(std::string_view tablePath) {
 std::string rangeText(const ParameterSpec& spec) {
   if (!spec.hasRange()) return {};
   const std::string_view unit = spec.displayUnit;
-  const std::string suffix = unit.empty() || unit == "%" ? "" : " " + std::string(unit);
+  const std::string suffix = unit.empty() || unit == "%" ? "" : fmt::format(" {}", unit);
   if (spec.min > -kUnbounded && spec.max < kUnbounded)
-    return (spec.minInclusive ? "[" : "(") + number(spec.min, unit) + ", " +
-           number(spec.max, unit) + (spec.maxInclusive ? "]" : ")") + suffix;
+    return fmt::format("{}{}, {}{}{}", spec.minInclusive ? "[" : "(", number(spec.min, unit),
+                       number(spec.max, unit), spec.maxInclusive ? "]" : ")", suffix);
   if (spec.min > -kUnbounded)
-    return (spec.minInclusive ? ">= " : "> ") + number(spec.min, unit) + suffix;
-  return (spec.maxInclusive ? "<= " : "< ") + number(spec.max, unit) + suffix;
+    return fmt::format("{}{}{}", spec.minInclusive ? ">= " : "> ", number(spec.min, unit), suffix);
+  return fmt::format("{}{}{}", spec.maxInclusive ? "<= " : "< ", number(spec.max, unit), suffix);
 }
 
 std::string typeText(const ParameterSpec& spec) {
@@ -302,11 +304,11 @@ std::string renderParameterReference() {
     std::string required = spec.requirement == R::kRequired   ? "yes"
                            : spec.requirement == R::kOptional ? "no"
                                                               : std::string(spec.condition);
-    md += "| `" + std::string(spec.key) + "` | " + cell(typeText(spec)) + " | " +
-          cell(rangeText(spec)) + " | " + cell(required) + " | " +
-          cell(std::string(spec.defaultText)) + " | " +
-          (spec.example.empty() ? std::string() : "`" + cell(std::string(spec.example)) + "`") +
-          " | " + cell(std::string(spec.doc)) + " |\n";
+    const std::string example =
+        spec.example.empty() ? std::string() : fmt::format("`{}`", cell(std::string(spec.example)));
+    md += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} |\n", spec.key, cell(typeText(spec)),
+                      cell(rangeText(spec)), cell(required), cell(std::string(spec.defaultText)),
+                      example, cell(std::string(spec.doc)));
   }
   return md;
 }
@@ -321,7 +323,7 @@ std::string renderUnitTable() {
     for (const Unit& u : knownUnits()) {
       if (u.dimension != d) continue;
       if (!units.empty()) units += ", ";
-      units += "`" + std::string(u.symbol) + "` = " + formatQuantity(u.toSi, d);
+      units += fmt::format("`{}` = {}", u.symbol, formatQuantity(u.toSi, d));
     }
     if (d == D::kFraction) units += " (or a bare number in [0, 1])";
     const std::string_view si = siUnit(d);
