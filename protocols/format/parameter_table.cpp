@@ -1,12 +1,17 @@
 #include "protocols/format/parameter_table.h"
 
 #include <array>
+#include <cctype>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 #include <fmt/format.h>
 
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/protocol.h"
+#include "protocols/format/stage_names.h"
+#include "sim/world/stage_registry.h"
 
 namespace protocols {
 
@@ -41,7 +46,7 @@ const ParameterSpec kParameters[] = {
    .doc = "Short name of the scenario, shown in the report."},
   {.key = "description", .kind = K::kString, .example = "\"...\"",
    .doc = "The scenario in words, shown in the report."},
-  {.key = "solver", .kind = K::kChoice, .choices = kSolverNames, .defaultText = "indsph",
+  {.key = "solver", .kind = K::kChoice, .choices = solverNames(), .defaultText = kDefaultSolver,
    .example = "\"indsph\"", .doc = "Pressure solver (all share one interface; docs/methods/solvers.md)."},
 
   {.key = "eye", .kind = K::kTable, .requirement = R::kRequired, .doc = "The eye: cavity shape, side, breaks, tissues."},
@@ -177,18 +182,7 @@ const ParameterSpec kParameters[] = {
 
   {.key = "effects", .kind = K::kTable, .defaultText = "all inferred",
    .doc = "Force a physical effect on (true) or off (false); \"auto\" or absent = inferred from the scene."},
-  {.key = "effects.interfacial_tension", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
-   .doc = "Interfacial tension between agent and aqueous (inferred: two fluid phases)."},
-  {.key = "effects.background_pressure", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "false",
-   .doc = "Background pressure 2 sigma / d against the interface's clumping (inferred: interfacial tension under INDSPH in the filled cavity)."},
-  {.key = "effects.wall_adhesion", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
-   .doc = "Wall wetting at the contact angle (inferred: two fluid phases touching a wall)."},
-  {.key = "effects.viscosity", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
-   .doc = "Viscous forces (inferred: always)."},
-  {.key = "effects.implicit_viscosity", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
-   .doc = "Implicit viscosity solve (inferred: the explicit viscous time step would be limiting)."},
-  {.key = "effects.elasticity", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "false",
-   .doc = "Elastic tissue (inferred: a tissue in mode auto that would deform, or mode elastic)."},
+  // effects.<name>: one row per forceable effect of the engine's registry (effectRows).
 
   {.key = "accuracy", .kind = K::kTable, .defaultText = "preset standard",
    .doc = "A preset, and explicit values that override it."},
@@ -239,19 +233,53 @@ std::string number(double si, std::string_view unit) {
   return text;
 }
 
+// kParameters with a row `effects.<name>` after the [effects] table's row for each effect the
+// engine's registry lets a protocol force, documented by the registry's own words.
+std::vector<ParameterSpec> withEffectRows() {
+  struct Texts {
+    std::vector<std::string> keys, docs;
+  };
+  static const Texts texts = [] {
+    Texts t;
+    for (const sim::EffectEntry& e : sim::effectRegistry()) {
+      if (!e.forceable()) continue;
+      std::string description = e.description;
+      description.front() = static_cast<char>(std::toupper(description.front()));
+      t.keys.push_back(fmt::format("effects.{}", e.name));
+      t.docs.push_back(fmt::format("{} (inferred: {}).", description, e.inferredWhen));
+    }
+    return t;
+  }();
+  std::vector<ParameterSpec> rows;
+  for (const ParameterSpec& spec : kParameters) {
+    rows.push_back(spec);
+    if (spec.key != "effects") continue;
+    for (std::size_t k = 0; k < texts.keys.size(); ++k)
+      rows.push_back({.key = texts.keys[k],
+                      .kind = K::kEffectSwitch,
+                      .defaultText = "auto",
+                      .example = "true",
+                      .doc = texts.docs[k]});
+  }
+  return rows;
+}
+
 }  // namespace
 
-std::span<const ParameterSpec> parameterTable() { return kParameters; }
+std::span<const ParameterSpec> parameterTable() {
+  static const std::vector<ParameterSpec> rows = withEffectRows();
+  return rows;
+}
 
 const ParameterSpec& parameterSpec(std::string_view key) {
-  for (const ParameterSpec& spec : kParameters)
+  for (const ParameterSpec& spec : parameterTable())
     if (spec.key == key) return spec;
   throw std::logic_error("protocol parameter table has no key '" + std::string(key) + "'");
 }
 
 std::vector<std::string_view> childKeys(std::string_view tablePath) {
   std::vector<std::string_view> keys;
-  for (const ParameterSpec& spec : kParameters)
+  for (const ParameterSpec& spec : parameterTable())
     if (parentOf(spec.key) == tablePath)
       keys.push_back(tablePath.empty() ? spec.key : spec.key.substr(tablePath.size() + 1));
   return keys;
@@ -300,7 +328,7 @@ std::string renderParameterReference() {
   std::string md =
       "| key | type | range | required | default | example | description |\n"
       "|---|---|---|---|---|---|---|\n";
-  for (const ParameterSpec& spec : kParameters) {
+  for (const ParameterSpec& spec : parameterTable()) {
     std::string required = spec.requirement == R::kRequired   ? "yes"
                            : spec.requirement == R::kOptional ? "no"
                                                               : std::string(spec.condition);
