@@ -1,25 +1,30 @@
-// The `--accuracy NAME` option of `tamponade plan` and `tamponade run`, parsed in one place so both
-// commands accept the same names and print the same message for a wrong one.
+// The `--accuracy NAME` option of `tamponade plan` and `tamponade run`, defined in one place so
+// both commands accept the same names and print the same message for a wrong one.
 #pragma once
 
-#include <cstdio>
 #include <optional>
 #include <string>
-#include <string_view>
+#include <vector>
 
 #include "protocols/format/protocol.h"
+#include "tools/cli.h"
+#include "tools/cli_values.h"
 
 namespace tools {
 
-// The preset named `value`, or nullopt after telling the user (on stderr, naming `command`)
-// which names exist; the caller then exits 2.
-inline std::optional<protocols::AccuracyPreset> parseAccuracyOption(std::string_view command,
-                                                                    std::string_view value) {
-  auto preset = protocols::accuracyPresetFromName(value);
-  if (!preset)
-    std::fprintf(stderr, "tamponade %s: unknown accuracy '%s' (use draft, standard or fine)\n",
-                 std::string(command).c_str(), std::string(value).c_str());
-  return preset;
+// Adds --accuracy to `app`; the preset's name lands in `name`.
+inline CLI::Option* addAccuracyOption(CLI::App& app, std::string& name) {
+  const std::vector<std::string> names(protocols::kAccuracyPresetNames.begin(),
+                                       protocols::kAccuracyPresetNames.end());
+  return app.add_option("--accuracy", name, "accuracy preset instead of the protocol's own")
+      ->type_name("NAME")
+      ->check(oneOf(names));
+}
+
+// The preset named by --accuracy, nullopt when the option was not given.
+inline std::optional<protocols::AccuracyPreset> accuracyPreset(const std::string& name) {
+  if (name.empty()) return std::nullopt;
+  return protocols::accuracyPresetFromName(name);
 }
 
 }  // namespace tools

@@ -13,6 +13,8 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <memory>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -20,13 +22,13 @@
 
 #include "sim/core/error.h"
 #include "sim/scenes/dam_break.h"
-#include "tools/cli_args.h"
-#include "tools/commands.h"
+#include "tools/cli.h"
+#include "tools/cli_values.h"
 
 namespace tools {
 
-int runBenchSolvers(Args args);   // tools/cmd_bench_solvers.cpp
-int runBenchAccuracy(Args args);  // tools/cmd_bench_accuracy.cpp
+Subcommand addBenchSolversCommand(CLI::App& bench);   // tools/cmd_bench_solvers.cpp
+Subcommand addBenchAccuracyCommand(CLI::App& bench);  // tools/cmd_bench_accuracy.cpp
 
 namespace {
 
@@ -36,51 +38,43 @@ constexpr const char* kBenchUsage =
     "       tamponade bench accuracy PROTOCOL.toml [--tolerances ...] [--spacings ...]\n"
     "                              (what each accuracy choice costs and changes; --help)\n"
     "       tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
-    "                              [--solvers dfsph,wcsph] [--out DIR]\n\n"
+    "                              [--solvers dfsph,wcsph] [--out DIR]\n";
+
+constexpr const char* kEngineUsage =
+    "usage: tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
+    "                              [--solvers dfsph,wcsph] [--out DIR]\n";
+
+constexpr const char* kEngineDescription =
     "Runs the 3D dam break (water column a x 2a x a, a = 0.1 m, in a 4a long tank) with about\n"
-    "the given numbers of particles for a fixed simulated time (default 0.05 s) with each solver,\n"
-    "and writes DIR/bench_engine.csv and DIR/bench_engine.md (default DIR: .). Prints progress.\n"
+    "the given numbers of particles for a fixed simulated time with each solver, and writes\n"
+    "DIR/bench_engine.csv and DIR/bench_engine.md. Prints progress.\n"
     "Threads: OMP_NUM_THREADS. On a shared machine set OMP_WAIT_POLICY=passive.\n";
 
 struct BenchOptions {
-  std::vector<long> particles{30000, 100000};
-  double time = 0.05;  // [s] simulated
+  std::vector<double> particles{30000, 100000};  // about, rounded
+  double time = 0.05;                            // [s] simulated
   std::vector<std::string> solvers{"dfsph", "wcsph"};
   std::string out = ".";
 };
 
-BenchOptions parseBenchOptions(Args args) {
-  BenchOptions o;
-  for (std::size_t k = 0; k < args.size(); ++k) {
-    const std::string_view flag = args[k];
-    if (k + 1 >= args.size()) throw UsageError("option " + std::string(flag) + " needs a value");
-    const std::string value(args[++k]);
-    if (flag == "--particles") {
-      o.particles.clear();
-      for (const std::string& item : splitList(value)) {
-        const double n = parsePositive(item, "--particles");
-        if (n < 1000 || n > 5e7)
-          throw UsageError("--particles '" + item + "' must be between 1000 and 5e7");
-        o.particles.push_back(std::lround(n));
-      }
-      if (o.particles.empty()) throw UsageError("--particles needs at least one count");
-    } else if (flag == "--time") {
-      o.time = parsePositive(value, "--time");
-    } else if (flag == "--solvers") {
-      o.solvers = splitList(value);
-      if (o.solvers.empty()) throw UsageError("--solvers needs at least one solver name");
-      for (const std::string& s : o.solvers) {
-        bool known = false;
-        for (const auto& entry : sim::solverRegistry()) known = known || entry.name == s;
-        if (!known) throw UsageError("--solvers: unknown solver '" + s + "'");
-      }
-    } else if (flag == "--out") {
-      o.out = value;
-    } else {
-      throw UsageError("unknown option '" + std::string(flag) + "'");
-    }
-  }
-  return o;
+void defineEngineOptions(CLI::App& app, BenchOptions& o) {
+  std::vector<std::string> names;
+  for (const auto& entry : sim::solverRegistry()) names.push_back(entry.name);
+  app.add_option("--particles", o.particles, "approximate particle counts, one run each")
+      ->type_name("N,N,...")
+      ->delimiter(',')
+      ->check(numberBetween(1000, 5e7))
+      ->capture_default_str();
+  app.add_option("--time", o.time, "simulated time of each run")
+      ->type_name("SECONDS")
+      ->check(positiveNumber())
+      ->capture_default_str();
+  app.add_option("--solvers", o.solvers, "pressure solvers, one run each")
+      ->type_name("NAME,...")
+      ->delimiter(',')
+      ->check(oneOf(names))
+      ->capture_default_str();
+  app.add_option("--out", o.out, "output folder")->type_name("DIR")->capture_default_str();
 }
 
 struct BenchResult {
@@ -193,39 +187,36 @@ void writeReports(const std::vector<BenchResult>& results, const std::string& di
   std::printf("wrote %s and %s\n", csvPath.c_str(), mdPath.c_str());
 }
 
-}  // namespace
-
-int runBench(Args args) {
-  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
-    std::fputs(kBenchUsage, stdout);
-    return 0;
-  }
-  if (!args.empty() && args[0] == "solvers") return runBenchSolvers(args.subspan(1));
-  if (!args.empty() && args[0] == "accuracy") return runBenchAccuracy(args.subspan(1));
-  if (args.empty() || args[0] != "engine") {
-    std::fputs(kBenchUsage, stderr);
-    return 2;
-  }
-  for (const std::string_view a : args.subspan(1))
-    if (a == "--help" || a == "-h") {  // `bench engine --help`
-      std::fputs(kBenchUsage, stdout);
-      return 0;
-    }
-  BenchOptions options;
-  try {
-    options = parseBenchOptions(args.subspan(1));
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "tamponade bench: %s\n\n%s", e.what(), kBenchUsage);
-    return 2;
-  }
+int runEngine(const BenchOptions& options) {
   std::vector<BenchResult> results;
-  for (long n : options.particles)
+  for (double n : options.particles)
     for (const std::string& solver : options.solvers)
-      results.push_back(runOne(solver, n, options.time));
+      results.push_back(runOne(solver, std::lround(n), options.time));
   writeReports(results, options.out);
   std::ifstream md(options.out + "/bench_engine.md");
   std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
   return 0;
+}
+
+Subcommand addEngineCommand(CLI::App& bench) {
+  auto o = std::make_shared<BenchOptions>();
+  CLI::App* engine =
+      addSubcommand(bench, "engine", "dam break speed", kEngineUsage, kEngineDescription);
+  defineEngineOptions(*engine, *o);
+  return {engine, [o] { return runEngine(*o); }};
+}
+
+}  // namespace
+
+int runBench(Args args) {
+  CLI::App app("", "tamponade bench");
+  describeCommand(app, kBenchUsage, "Benchmarks of the engine, the solvers and the accuracy.\n");
+  const Subcommand commands[] = {addEngineCommand(app), addBenchSolversCommand(app),
+                                 addBenchAccuracyCommand(app)};
+  if (const std::optional<int> exit = parseCommandLine(app, args)) return *exit;
+  for (const Subcommand& c : commands)
+    if (c.app->parsed()) return c.run();
+  return usageError(app, "give a benchmark: engine, solvers or accuracy");
 }
 
 }  // namespace tools

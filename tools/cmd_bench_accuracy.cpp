@@ -12,9 +12,8 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <memory>
 #include <optional>
-#include <sstream>
-#include <stdexcept>
 #include <string>
 #include <vector>
 #ifdef _OPENMP
@@ -30,8 +29,8 @@
 #include "protocols/report/report_format.h"
 #include "protocols/run/run_scenario.h"
 #include "sim/core/error.h"
-#include "tools/cli_args.h"
-#include "tools/commands.h"
+#include "tools/cli.h"
+#include "tools/cli_values.h"
 #include "tools/progress_printer.h"
 #include "tools/protocol_error_print.h"
 
@@ -40,7 +39,9 @@ namespace {
 
 constexpr const char* kUsage =
     "usage: tamponade bench accuracy PROTOCOL.toml [--tolerances 0.005,0.001,...]\n"
-    "                                [--spacings 1.2,0.8,...] [--out DIR] [--threads N]\n\n"
+    "                                [--spacings 1.2,0.8,...] [--out DIR] [--threads N]\n";
+
+constexpr const char* kDescription =
     "Runs the protocol once per pair of particle spacing and solver tolerance and writes\n"
     "DIR/accuracy.csv and DIR/accuracy.md: wall time, steps, pressure-solve iterations per step,\n"
     "the mean density error the solve reached, the share of steps that stopped at its iteration\n"
@@ -48,18 +49,42 @@ constexpr const char* kUsage =
     "spacing, then tightest tolerance) for the whole retina and the worst region, and each\n"
     "run's distance from the answer: the retina's coverage at the end of each posture minus the\n"
     "posture's static equilibrium (solved once; the posture farthest from it named). The runs'\n"
-    "frames and reports go to DIR/runs/ (replaced when the bench is run again).\n"
-    "  --tolerances  accuracy.solver_tolerance values as fractions, each in (0, 0.05]\n"
-    "                (default 0.005,0.001,0.0001: the draft and standard presets and the papers' "
-    "eta)\n"
-    "  --spacings    accuracy.particle_spacing values in mm (default: the protocol's own)\n"
-    "  --out         output folder (default bench_accuracy)\n"
-    "  --threads     OpenMP threads (default OMP_NUM_THREADS); one thread times most steadily\n"
+    "frames and reports go to DIR/runs/ (replaced when the bench is run again).\n";
+
+constexpr const char* kFooter =
     "Each run shows its progress (a bar on a terminal, plain lines otherwise). Measured on\n"
     "tiny.toml (docs/accuracy.md): the spacing moves the coverage more than the tolerance does\n"
     "(1.2 mm read 3 points above 0.5 mm; 0.5 % against 0.01 % moved it by 1), and a run costs\n"
     "about (1/d)^4: 7 s at 1.2 mm, 3 min at 0.6 mm, 7 min at 0.5 mm on one thread.\n"
     "Exit codes: 0 done, 2 bad usage or protocol (nothing run), 1 a run failed.\n";
+
+struct AccuracyOptions {
+  std::string file, out = "bench_accuracy";
+  std::vector<double> tolerances{5e-3, 1e-3, 1e-4}, spacings;  // [1], [mm]
+  int threads = 0;
+};
+
+void defineAccuracyOptions(CLI::App& app, AccuracyOptions& o) {
+  app.add_option("PROTOCOL.toml", o.file, "the protocol to run")->required();
+  app.add_option("--tolerances", o.tolerances,
+                 "accuracy.solver_tolerance values as fractions, each in (0, 0.05]\n"
+                 "(default 0.005,0.001,0.0001: the draft and standard presets and\n"
+                 "the papers' eta)")
+      ->type_name("X,...")
+      ->delimiter(',')
+      ->check(positiveNumber(0.05));
+  app.add_option("--spacings", o.spacings,
+                 "accuracy.particle_spacing values in mm, each at most 5 (default: the\n"
+                 "protocol's own)")
+      ->type_name("MM,...")
+      ->delimiter(',')
+      ->check(positiveNumber(5));
+  app.add_option("--out", o.out, "output folder")->type_name("DIR")->capture_default_str();
+  app.add_option("--threads", o.threads,
+                 "OpenMP threads (default OMP_NUM_THREADS); one thread times most steadily")
+      ->type_name("N")
+      ->check(positiveInteger(std::numeric_limits<int>::max()));
+}
 
 struct AccuracyRun {
   double spacing = 0;    // [m]
@@ -68,19 +93,6 @@ struct AccuracyRun {
   protocols::RunSummary summary;
   std::string folder;
 };
-
-std::vector<double> parseList(const std::string& text, const char* option, double scale,
-                              double max) {
-  std::vector<double> values;
-  for (const std::string& item : splitList(text)) {
-    const double v = parsePositive(item, option) * scale;
-    if (v > max)
-      throw UsageError(std::string(option) + " '" + item + "' is above its largest value");
-    values.push_back(v);
-  }
-  if (values.empty()) throw UsageError(std::string(option) + " needs at least one value");
-  return values;
-}
 
 std::string label(double spacing, double tolerance) {
   char buffer[64];
@@ -198,42 +210,44 @@ Equilibria solveEquilibria(const protocols::Protocol& protocol,
   return e;
 }
 
-}  // namespace
+// One run of `protocol` at this spacing and tolerance, into dir/runs/<label>; `solver` is set to
+// the scenario's pressure solver.
+AccuracyRun runOnce(const protocols::Protocol& protocol, double spacing, double tolerance,
+                    const std::filesystem::path& dir, std::string& solver, std::size_t number,
+                    std::size_t total) {
+  protocols::Protocol p = protocol;
+  p.accuracy.particleSpacing.value = spacing;
+  p.accuracy.solverTolerance.value = tolerance;
+  protocols::Scenario scenario = protocols::assembleStartingScenario(p);
+  solver = scenario.pipelineOptions.solver;
+  AccuracyRun r;
+  r.spacing = spacing;
+  r.tolerance = tolerance;
+  for (const auto& phase : scenario.phases) r.particles += static_cast<long>(phase.count);
+  r.folder = (dir / "runs" / label(spacing, tolerance)).string();
+  std::filesystem::remove_all(r.folder);
+  std::filesystem::create_directories(r.folder);
+  std::fprintf(stderr, "bench accuracy %zu/%zu: d = %g mm, tolerance %g, %ld fluid particles ...\n",
+               number, total, spacing * 1e3, tolerance, r.particles);
+  protocols::RunOptions options;
+  options.outputFolder = r.folder;
+  ProgressPrinter printer;
+  options.progress = [&](const protocols::RunProgress& progress) { printer(progress); };
+  r.summary = protocols::runScenario(p, scenario, options);
+  printer.finish();
+  std::fprintf(stderr,
+               "  %ld steps in %.1f s, %.1f iterations per step, density error %.3g %%, "
+               "coverage %s\n",
+               r.summary.steps, r.summary.wallSeconds, r.summary.pressureSolve.meanIterations(),
+               100 * r.summary.pressureSolve.meanDensityError(),
+               protocols::formatPercent(r.summary.retinaCoverage).c_str());
+  return r;
+}
 
-int runBenchAccuracy(Args args) {
-  std::string file, out = "bench_accuracy";
-  std::vector<double> tolerances{5e-3, 1e-3, 1e-4}, spacings;
-  int threads = 0;
-  try {
-    for (std::size_t k = 0; k < args.size(); ++k) {
-      const std::string_view flag = args[k];
-      if (flag == "--help" || flag == "-h") {
-        std::fputs(kUsage, stdout);
-        return 0;
-      }
-      if (!flag.starts_with("-") && file.empty()) {
-        file = std::string(flag);
-        continue;
-      }
-      if (k + 1 >= args.size()) throw UsageError("option " + std::string(flag) + " needs a value");
-      const std::string value(args[++k]);
-      if (flag == "--tolerances") {
-        tolerances = parseList(value, "--tolerances", 1.0, 0.05);
-      } else if (flag == "--spacings") {
-        spacings = parseList(value, "--spacings", 1e-3, 5e-3);
-      } else if (flag == "--out") {
-        out = value;
-      } else if (flag == "--threads") {
-        threads = static_cast<int>(parsePositive(value, "--threads"));
-      } else {
-        throw UsageError("unknown option '" + std::string(flag) + "'");
-      }
-    }
-    if (file.empty()) throw UsageError("no protocol file given");
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "tamponade bench accuracy: %s\n\n%s", e.what(), kUsage);
-    return 2;
-  }
+int runAccuracy(const AccuracyOptions& o) {
+  std::vector<double> tolerances = o.tolerances, spacings;
+  for (const double mm : o.spacings) spacings.push_back(mm * 1e-3);  // [m]
+  int threads = o.threads;
 #ifdef _OPENMP
   if (threads > 0) omp_set_num_threads(threads);
   threads = omp_get_max_threads();
@@ -241,61 +255,45 @@ int runBenchAccuracy(Args args) {
   threads = 1;
 #endif
   try {
-    const protocols::Protocol protocol = protocols::parseProtocol(file);
+    const protocols::Protocol protocol = protocols::parseProtocol(o.file);
     if (spacings.empty()) spacings.push_back(protocol.accuracy.particleSpacing.value);
     // Coarse to fine, loose to tight: the last run is the reference.
     std::sort(spacings.begin(), spacings.end(), std::greater<>());
     std::sort(tolerances.begin(), tolerances.end(), std::greater<>());
-    const std::filesystem::path dir(out);
+    const std::filesystem::path dir(o.out);
     std::filesystem::create_directories(dir / "runs");
     std::vector<AccuracyRun> runs;
     std::string solver;
     const std::size_t total = spacings.size() * tolerances.size();
-    Equilibria equilibria;
-    for (const double spacing : spacings) {
-      for (const double tolerance : tolerances) {
-        protocols::Protocol p = protocol;
-        p.accuracy.particleSpacing.value = spacing;
-        p.accuracy.solverTolerance.value = tolerance;
-        protocols::Scenario scenario = protocols::assembleStartingScenario(p);
-        solver = scenario.pipelineOptions.solver;
-        if (runs.empty()) equilibria = solveEquilibria(p, scenario);
-        AccuracyRun r;
-        r.spacing = spacing;
-        r.tolerance = tolerance;
-        for (const auto& phase : scenario.phases) r.particles += static_cast<long>(phase.count);
-        r.folder = (dir / "runs" / label(spacing, tolerance)).string();
-        std::filesystem::remove_all(r.folder);
-        std::filesystem::create_directories(r.folder);
-        std::fprintf(stderr,
-                     "bench accuracy %zu/%zu: d = %g mm, tolerance %g, %ld fluid particles ...\n",
-                     runs.size() + 1, total, spacing * 1e3, tolerance, r.particles);
-        protocols::RunOptions options;
-        options.outputFolder = r.folder;
-        ProgressPrinter printer;
-        options.progress = [&](const protocols::RunProgress& progress) { printer(progress); };
-        r.summary = protocols::runScenario(p, scenario, options);
-        printer.finish();
-        std::fprintf(stderr,
-                     "  %ld steps in %.1f s, %.1f iterations per step, density error %.3g %%, "
-                     "coverage %s\n",
-                     r.summary.steps, r.summary.wallSeconds,
-                     r.summary.pressureSolve.meanIterations(),
-                     100 * r.summary.pressureSolve.meanDensityError(),
-                     protocols::formatPercent(r.summary.retinaCoverage).c_str());
-        runs.push_back(std::move(r));
-      }
-    }
+    // The postures' equilibria, on the coarsest scenario (they do not depend on the spacing).
+    protocols::Protocol coarsest = protocol;
+    coarsest.accuracy.particleSpacing.value = spacings.front();
+    const Equilibria equilibria =
+        solveEquilibria(coarsest, protocols::assembleStartingScenario(coarsest));
+    for (const double spacing : spacings)
+      for (const double tolerance : tolerances)
+        runs.push_back(runOnce(protocol, spacing, tolerance, dir, solver, runs.size() + 1, total));
     if (!protocols::isImplicitSolver(solver))
       std::fprintf(stderr, "note: solver %s is explicit: the tolerance changes nothing\n",
                    solver.c_str());
-    writeTables(runs, equilibria, dir, file, solver, threads);
+    writeTables(runs, equilibria, dir, o.file, solver, threads);
     std::ifstream md(dir / "accuracy.md");
     std::printf("%s", std::string(std::istreambuf_iterator<char>(md), {}).c_str());
     return 0;
   } catch (const protocols::ProtocolError& e) {
     return printProtocolError(e);
   }
+}
+
+}  // namespace
+
+Subcommand addBenchAccuracyCommand(CLI::App& bench) {
+  auto o = std::make_shared<AccuracyOptions>();
+  CLI::App* accuracy =
+      addSubcommand(bench, "accuracy", "what each accuracy choice costs and changes", kUsage,
+                    kDescription, kFooter);
+  defineAccuracyOptions(*accuracy, *o);
+  return {accuracy, [o] { return runAccuracy(*o); }};
 }
 
 }  // namespace tools

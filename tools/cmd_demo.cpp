@@ -6,81 +6,58 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <stdexcept>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "protocols/io/frame_writer.h"
 #include "sim/measure/diagnostics.h"
 #include "sim/scenes/box_scene.h"
 #include "sim/world/stage_registry.h"
-#include "tools/commands.h"
+#include "tools/cli.h"
+#include "tools/cli_values.h"
 
 namespace tools {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: tamponade demo [--out DIR] [--solver dfsph|wcsph] [--time SECONDS] [--force]\n\n"
+    "usage: tamponade demo [--out DIR] [--solver dfsph|wcsph] [--time SECONDS] [--force]\n";
+
+constexpr const char* kDescription =
     "Runs a dam break: a 0.2 m x 0.4 m x 0.1 m water column (spacing 12.5 mm, 4096 particles)\n"
     "collapses in a 0.8 m long tank. Writes DIR/frames.h5 and DIR/frames.xmf (open the .xmf in\n"
-    "ParaView) with a frame every 20 ms.\n\n"
-    "  --out DIR       output folder (default runs/dam-break)\n"
-    "  --solver NAME   pressure solver (default wcsph)\n"
-    "  --time SECONDS  simulated time (default 0.5)\n"
-    "  --force         replace an existing output folder's frames\n";
+    "ParaView) with a frame every 20 ms.\n";
 
 struct DemoOptions {
-  std::filesystem::path out = "runs/dam-break";
+  std::string out = "runs/dam-break";
   std::string solver = "wcsph";
   double time = 0.5;  // [s]
   bool force = false;
 };
 
-DemoOptions parse(Args args) {
-  DemoOptions o;
-  for (std::size_t k = 0; k < args.size(); ++k) {
-    const std::string_view a = args[k];
-    auto value = [&]() -> std::string {
-      if (k + 1 >= args.size()) throw std::invalid_argument(std::string(a) + " needs a value");
-      return std::string(args[++k]);
-    };
-    if (a == "--out") {
-      o.out = value();
-    } else if (a == "--solver") {
-      o.solver = value();
-    } else if (a == "--time") {
-      const std::string v = value();
-      std::size_t used = 0;
-      try {
-        o.time = std::stod(v, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != v.size() || !(o.time > 0) || o.time > 60)
-        throw std::invalid_argument("--time takes a number of seconds in (0, 60], got '" + v + "'");
-    } else if (a == "--force") {
-      o.force = true;
-    } else {
-      throw std::invalid_argument("unknown option '" + std::string(a) + "'");
-    }
-  }
-  return o;
+void defineDemoOptions(CLI::App& app, DemoOptions& o) {
+  app.add_option("--out", o.out, "output folder")->type_name("DIR")->capture_default_str();
+  std::vector<std::string> solvers;
+  for (const auto& entry : sim::solverRegistry()) solvers.push_back(entry.name);
+  app.add_option("--solver", o.solver, "pressure solver")
+      ->type_name("NAME")
+      ->check(oneOf(solvers))
+      ->capture_default_str();
+  app.add_option("--time", o.time, "simulated time, at most 60")
+      ->type_name("SECONDS")
+      ->check(positiveNumber(60))
+      ->capture_default_str();
+  app.add_flag("--force", o.force, "replace an existing output folder's frames");
 }
 
 }  // namespace
 
 int runDemo(Args args) {
-  for (const auto a : args)
-    if (a == "--help" || a == "-h") {
-      std::fputs(kUsage, stdout);
-      return 0;
-    }
+  CLI::App app("", "tamponade demo");
+  describeCommand(app, kUsage, kDescription);
   DemoOptions o;
-  try {
-    o = parse(args);
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "tamponade demo: %s\n\n%s", e.what(), kUsage);
-    return 2;
-  }
+  defineDemoOptions(app, o);
+  if (const std::optional<int> exit = parseCommandLine(app, args)) return *exit;
 
   const double d = 0.0125;  // [m]
   sim::TankSpec tank;
@@ -113,7 +90,8 @@ int runDemo(Args args) {
   metadata.numbers["particle_spacing [m]"] = d;
   protocols::FrameWriterOptions writerOptions;
   writerOptions.overwrite = o.force;
-  protocols::FrameWriter writer(o.out / "frames.h5", metadata, writerOptions);
+  protocols::FrameWriter writer(std::filesystem::path(o.out) / "frames.h5", metadata,
+                                writerOptions);
   writer.writeStatic("wall", world.walls.fields);
 
   std::printf("tamponade demo: %zu water particles, %zu wall particles, solver %s\n%s",

@@ -3,9 +3,9 @@
 // 2 bad input (unreadable or refused mesh, bad option).
 #include <cmath>
 #include <cstdio>
+#include <memory>
 #include <optional>
 #include <regex>
-#include <stdexcept>
 #include <string>
 
 #include "meshing/check_mesh.h"
@@ -15,86 +15,70 @@
 #include "meshing/sample_surface.h"
 #include "meshing/sample_volume.h"
 #include "meshing/write_point_cloud.h"
-#include "tools/cli_args.h"
-#include "tools/commands.h"
+#include "tools/cli.h"
+#include "tools/cli_values.h"
 
 namespace tools {
-int runMeshGenerate(Args args);
+Subcommand addMeshGenerateCommand(CLI::App& mesh);  // tools/cmd_mesh_generate.cpp
 namespace {
 
 constexpr const char* kMeshUsage =
     "usage: tamponade mesh check FILE [--units mm|m] [--max-hole-edges N]\n"
     "       tamponade mesh generate --type emmetropic|myopic|staphyloma --out FILE  (see --help)\n"
-    "       tamponade mesh sample FILE --spacing LENGTH [--units mm|m] [--out points.ply]\n\n"
-    "check   reads a mesh (STL, OBJ, PLY, OFF, ...), reports what is wrong and what was repaired,\n"
-    "        area, volume, size and units. Exit 0 if usable (as is or repaired), 2 if refused.\n"
-    "sample  checks the mesh, then samples wall particles on its surface and interior particles\n"
-    "        on a cubic lattice (gap spacing/2 from the wall); prints counts and "
-    "nearest-neighbour\n"
-    "        spacing; --out writes both as a PLY point cloud in metres (label 0 wall, 1 "
-    "interior).\n"
-    "        HDF5 output comes with protocols/.\n\n"
-    "--units   units of the file; without it they are guessed from the size (with a warning)\n"
-    "--spacing particle spacing with a unit: 0.4mm, 400um, 0.0004m\n";
+    "       tamponade mesh sample FILE --spacing LENGTH [--units mm|m] [--out points.ply]\n";
 
-// Strict "<number><unit>" with unit m, mm or um; positive and finite.
-double parseLength(std::string_view text, const char* option) {
-  static const std::regex pattern(
-      R"(^\s*((?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(mm|um|m)\s*$)");
-  std::cmatch match;
-  const std::string s(text);
-  if (!std::regex_match(s.c_str(), match, pattern))
-    throw UsageError(std::string(option) + " '" + s +
-                     "' is not a length with a unit (write e.g. 0.4mm, 400um or 0.0004m)");
-  const double value = std::stod(match[1].str());
-  const std::string unit = match[2].str();
-  const double metres = value * (unit == "mm" ? 1e-3 : unit == "um" ? 1e-6 : 1.0);
-  if (!(metres > 0) || !std::isfinite(metres))
-    throw UsageError(std::string(option) + " '" + s + "' must be a positive length");
-  return metres;
+constexpr const char* kCheckDescription =
+    "Reads a mesh (STL, OBJ, PLY, OFF, ...), reports what is wrong and what was repaired,\n"
+    "area, volume, size and units. Exit 0 if usable (as is or repaired), 2 if refused.\n";
+
+constexpr const char* kSampleDescription =
+    "Checks the mesh, then samples wall particles on its surface and interior particles on a\n"
+    "cubic lattice (gap spacing/2 from the wall); prints counts and nearest-neighbour spacing;\n"
+    "--out writes both as a PLY point cloud in metres (label 0 wall, 1 interior).\n"
+    "HDF5 output comes with protocols/.\n";
+
+// Strict "<number><unit>" with unit m, mm or um; positive and finite. A CLI11 transform: the
+// text becomes the length in metres.
+CLI::Validator lengthWithUnit() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        static const std::regex pattern(
+            R"(^\s*((?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)\s*(mm|um|m)\s*$)");
+        std::smatch match;
+        if (!std::regex_match(text, match, pattern))
+          return "'" + text + "' is not a length with a unit (write e.g. 0.4mm, 400um or 0.0004m)";
+        const std::string unit = match[2].str();
+        const double metres = std::stod(match[1].str()) * (unit == "mm"   ? 1e-3
+                                                           : unit == "um" ? 1e-6
+                                                                          : 1.0);
+        if (!(metres > 0) || !std::isfinite(metres))
+          return "'" + text + "' must be a positive length";
+        char exact[40];  // %.17g: the double itself, read back unchanged
+        std::snprintf(exact, sizeof exact, "%.17g", metres);
+        text = exact;
+        return {};
+      },
+      "");
 }
 
 struct MeshOptions {
   std::string file;
-  meshing::LengthUnit units = meshing::LengthUnit::unknown;
-  std::optional<double> spacing;  // [m]
+  std::string units;
+  double spacing = 0;  // [m]
   std::string out;
   int maxHoleEdges = meshing::MeshCheckOptions{}.maxHoleEdges;
+  meshing::LengthUnit lengthUnit() const {
+    return units.empty() ? meshing::LengthUnit::unknown : meshing::parseLengthUnit(units);
+  }
 };
 
-MeshOptions parseOptions(Args args, bool sample) {
-  MeshOptions o;
-  for (size_t i = 0; i < args.size(); ++i) {
-    const std::string_view a = args[i];
-    auto value = [&]() -> std::string_view {
-      if (i + 1 >= args.size()) throw UsageError(std::string(a) + " needs a value");
-      return args[++i];
-    };
-    if (a == "--units") {
-      const std::string_view u = value();
-      if (u != "mm" && u != "m")
-        throw UsageError("--units must be mm or m, not '" + std::string(u) + "'");
-      o.units = meshing::parseLengthUnit(u);
-    } else if (a == "--max-hole-edges" && !sample) {
-      const std::string v(value());
-      if (!std::regex_match(v, std::regex("[0-9]{1,4}")))
-        throw UsageError("--max-hole-edges needs a whole number");
-      o.maxHoleEdges = std::stoi(v);
-    } else if (a == "--spacing" && sample) {
-      o.spacing = parseLength(value(), "--spacing");
-    } else if (a == "--out" && sample) {
-      o.out = std::string(value());
-    } else if (a.starts_with("-")) {
-      throw UsageError("unknown option '" + std::string(a) + "'");
-    } else if (o.file.empty()) {
-      o.file = std::string(a);
-    } else {
-      throw UsageError("more than one FILE given ('" + o.file + "' and '" + std::string(a) + "')");
-    }
-  }
-  if (o.file.empty()) throw UsageError("no mesh FILE given");
-  if (sample && !o.spacing) throw UsageError("--spacing is required, e.g. --spacing 0.4mm");
-  return o;
+// FILE and --units, the options check and sample share.
+void defineMeshFile(CLI::App& app, MeshOptions& o) {
+  app.add_option("FILE", o.file, "the mesh: STL, OBJ, PLY, OFF, ...")->required();
+  app.add_option("--units", o.units,
+                 "units of the file; without it they are guessed from the size\n(with a warning)")
+      ->type_name("mm|m")
+      ->check(oneOf({"mm", "m"}));
 }
 
 void printReport(const meshing::ImportResult& imported, const meshing::MeshReport& report,
@@ -127,7 +111,7 @@ meshing::MeshReport checkInMillimetres(const meshing::TriangleMesh& metres,
 }
 
 int runCheck(const MeshOptions& o) {
-  const meshing::ImportResult imported = meshing::importMesh(o.file, o.units);
+  const meshing::ImportResult imported = meshing::importMesh(o.file, o.lengthUnit());
   meshing::MeshCheckOptions checkOptions;
   checkOptions.maxHoleEdges = o.maxHoleEdges;
   const meshing::MeshReport report = checkInMillimetres(imported.mesh, checkOptions);
@@ -141,7 +125,7 @@ int runCheck(const MeshOptions& o) {
 }
 
 int runSample(const MeshOptions& o) {
-  const meshing::ImportResult imported = meshing::importMesh(o.file, o.units);
+  const meshing::ImportResult imported = meshing::importMesh(o.file, o.lengthUnit());
   const meshing::MeshReport report = checkInMillimetres(imported.mesh, {});
   printReport(imported, report, o.file);
   if (!report.isUsable()) {
@@ -149,7 +133,7 @@ int runSample(const MeshOptions& o) {
                  report.refusals.front().c_str());
     return 2;
   }
-  const double d = *o.spacing;                 // [m]
+  const double d = o.spacing;                  // [m]
   meshing::TriangleMesh cavity = report.mesh;  // [m] back from mm
   for (meshing::Vec3& v : cavity.vertices) v *= 1e-3;
   const double volume = report.measures.signedVolume * 1e-9;  // [m^3]
@@ -186,28 +170,49 @@ int runSample(const MeshOptions& o) {
   return 0;
 }
 
+// `check` and `sample`, sub-commands of `tamponade mesh`.
+Subcommand addCheckCommand(CLI::App& mesh) {
+  auto o = std::make_shared<MeshOptions>();
+  CLI::App* check = addSubcommand(mesh, "check", "check and repair a mesh",
+                                  "usage: tamponade mesh check FILE [--units mm|m] "
+                                  "[--max-hole-edges N]\n",
+                                  kCheckDescription);
+  defineMeshFile(*check, *o);
+  check->add_option("--max-hole-edges", o->maxHoleEdges, "largest hole the repair closes, in edges")
+      ->type_name("N")
+      ->check(wholeNumber(0, 9999))
+      ->capture_default_str();
+  return {check, [o] { return runCheck(*o); }};
+}
+
+Subcommand addSampleCommand(CLI::App& mesh) {
+  auto o = std::make_shared<MeshOptions>();
+  CLI::App* sample = addSubcommand(mesh, "sample", "sample wall and interior particles",
+                                   "usage: tamponade mesh sample FILE --spacing LENGTH "
+                                   "[--units mm|m] [--out points.ply]\n",
+                                   kSampleDescription);
+  defineMeshFile(*sample, *o);
+  sample->add_option("--spacing", o->spacing, "particle spacing with a unit: 0.4mm, 400um, 0.0004m")
+      ->required()
+      ->type_name("LENGTH")
+      ->transform(lengthWithUnit());
+  sample->add_option("--out", o->out, "PLY point cloud of the samples, in metres")
+      ->type_name("FILE");
+  return {sample, [o] { return runSample(*o); }};
+}
+
 }  // namespace
 
 int runMesh(Args args) {
-  if (args.empty()) {
-    std::fputs(kMeshUsage, stderr);
-    return 2;
-  }
-  const std::string_view sub = args[0];
-  if (sub == "generate") return runMeshGenerate(args.subspan(1));  // tools/cmd_mesh_generate.cpp
-  for (const std::string_view a : args)
-    if (a == "--help" || a == "-h") {
-      std::fputs(kMeshUsage, stdout);
-      return 0;
-    }
+  CLI::App app("", "tamponade mesh");
+  describeCommand(app, kMeshUsage, "Checks, repairs, samples and generates eye meshes.\n");
+  const Subcommand commands[] = {addCheckCommand(app), addSampleCommand(app),
+                                 addMeshGenerateCommand(app)};
+  if (const std::optional<int> exit = parseCommandLine(app, args)) return *exit;
   try {
-    if (sub == "check") return runCheck(parseOptions(args.subspan(1), false));
-    if (sub == "sample") return runSample(parseOptions(args.subspan(1), true));
-    throw UsageError("unknown mesh command '" + std::string(sub) +
-                     "' (use check, sample or generate)");
-  } catch (const UsageError& e) {
-    std::fprintf(stderr, "tamponade mesh: %s\n\n%s", e.what(), kMeshUsage);
-    return 2;
+    for (const Subcommand& c : commands)
+      if (c.app->parsed()) return c.run();
+    return usageError(app, "give a mesh command: check, sample or generate");
   } catch (const meshing::MeshError& e) {  // the input mesh or a mesh parameter is bad
     std::fprintf(stderr, "tamponade mesh: error: %s\n", e.what());
     return 2;

@@ -3,6 +3,7 @@
 // accuracy preset from a cost model calibrated on this machine. Writes nothing.
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 
 #include "anatomy/anatomy_error.h"
@@ -16,7 +17,8 @@
 #include "protocols/run/plan_scenario.h"
 #include "sim/core/error.h"
 #include "tools/accuracy_option.h"
-#include "tools/cli_args.h"
+#include "tools/cli.h"
+#include "tools/cli_values.h"
 #include "tools/commands.h"
 #include "tools/phase_printer.h"
 #include "tools/protocol_error_print.h"
@@ -25,13 +27,15 @@ namespace tools {
 namespace {
 
 constexpr const char* kUsage =
-    "usage: tamponade plan PROTOCOL.toml [--accuracy draft|standard|fine] [--max-memory SIZE]\n\n"
+    "usage: tamponade plan PROTOCOL.toml [--accuracy draft|standard|fine] [--max-memory SIZE]\n";
+
+constexpr const char* kDescription =
     "Assembles the scenario without running it and prints the particle counts per material, the\n"
     "pipeline stages and why each is there, the memory, and an estimated run time per accuracy\n"
-    "preset (cost model calibrated by a few steps of this scene on this machine). Writes nothing.\n"
-    "A scene whose estimated memory exceeds what the machine has available (or --max-memory,\n"
-    "e.g. 4 GiB) is refused before anything is allocated, with the spacing that would fit.\n"
-    "Bad protocols: every problem as file:line:column, exit code 2.\n";
+    "preset (cost model calibrated by a few steps of this scene on this machine). Writes "
+    "nothing.\n";
+
+constexpr const char* kFooter = "Bad protocols: every problem as file:line:column, exit code 2.\n";
 
 // "182 MiB", "1.06 GiB": three significant digits without an exponent.
 std::string megabytes(std::size_t bytes) {
@@ -75,35 +79,22 @@ void printEquilibriumPlan(const protocols::Protocol& protocol, const protocols::
 }  // namespace
 
 int runPlan(Args args) {
-  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
-  std::string file;
+  CLI::App app("", "tamponade plan");
+  describeCommand(app, kUsage, kDescription, kFooter);
+  std::string file, accuracy;
+  double memoryLimit = 0;  // [B] 0: what the machine has available
+  app.add_option("PROTOCOL.toml", file, "the protocol to plan")->required();
+  addAccuracyOption(app, accuracy);
+  app.add_option("--max-memory", memoryLimit,
+                 "refuse a scene whose estimated memory exceeds SIZE (e.g. 4 GiB) before\n"
+                 "anything is allocated, naming the spacing that would fit (default: what the\n"
+                 "machine has available)")
+      ->type_name("SIZE")
+      ->transform(memorySize());
+  if (const std::optional<int> exit = parseCommandLine(app, args)) return *exit;
   protocols::ScenarioOptions options;
-  for (std::size_t k = 0; k < args.size(); ++k) {
-    if (args[k] == "--accuracy" && k + 1 < args.size()) {
-      options.accuracy = tools::parseAccuracyOption("plan", args[k + 1]);
-      if (!options.accuracy) return 2;
-      ++k;
-    } else if (args[k] == "--max-memory" && k + 1 < args.size()) {
-      try {
-        options.memoryLimit = parseMemorySize(std::string(args[++k]), "--max-memory");
-      } catch (const UsageError& e) {
-        std::fprintf(stderr, "tamponade plan: %s\n", e.what());
-        return 2;
-      }
-    } else if (!args[k].starts_with("-") && file.empty()) {
-      file = std::string(args[k]);
-    } else {
-      std::fputs(kUsage, stderr);
-      return 2;
-    }
-  }
-  if (file.empty()) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
+  options.accuracy = accuracyPreset(accuracy);
+  if (memoryLimit > 0) options.memoryLimit = memoryLimit;
   if (!options.memoryLimit) options.memoryLimit = protocols::machineMemoryLimit();
   const PhasePrinter phases("plan");
   options.progress = phases;

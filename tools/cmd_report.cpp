@@ -2,28 +2,25 @@
 // frames.h5 (coverage recomputed from the frames; protocols/run/rebuild_report.h).
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <string>
 
 #include "protocols/format/protocol_error.h"
 #include "protocols/io/io_error.h"
 #include "protocols/run/rebuild_report.h"
-#include "tools/commands.h"
+#include "tools/cli.h"
 
 namespace tools {
 
 int runReport(Args args) {
-  constexpr const char* kUsage =
-      "usage: tamponade report DIR\n\n"
-      "Rebuilds report.html, coverage.csv and summary.json in DIR from DIR/frames.h5.\n";
-  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
-  if (args.size() != 1 || args[0].starts_with("-")) {
-    std::fputs(kUsage, stderr);
-    return 2;
-  }
-  const std::filesystem::path folder(args[0]);
+  CLI::App app("", "tamponade report");
+  describeCommand(
+      app, "usage: tamponade report DIR\n",
+      "Rebuilds report.html, coverage.csv and summary.json in DIR from DIR/frames.h5.\n");
+  std::string dir;
+  app.add_option("DIR", dir, "the folder of a run")->required();
+  if (const std::optional<int> exit = parseCommandLine(app, args)) return *exit;
+  const std::filesystem::path folder(dir);
   if (!std::filesystem::exists(folder / "frames.h5")) {
     // An equilibrium schedule writes its report, interfaces and no frames: nothing to rebuild.
     if (std::filesystem::exists(folder / "interface_1.ply"))

@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <limits>
+#include <optional>
 #include <string>
 
 #ifdef _OPENMP
@@ -23,7 +25,8 @@
 #include "protocols/run/run_equilibrium.h"
 #include "protocols/run/run_scenario.h"
 #include "tools/accuracy_option.h"
-#include "tools/cli_args.h"
+#include "tools/cli.h"
+#include "tools/cli_values.h"
 #include "tools/commands.h"
 #include "tools/phase_printer.h"
 #include "tools/progress_printer.h"
@@ -36,19 +39,54 @@ constexpr const char* kUsage =
     "usage: tamponade run PROTOCOL.toml [--out DIR] [--accuracy draft|standard|fine] [--threads "
     "N]\n"
     "                     [--max-memory SIZE]\n"
-    "       tamponade run --resume DIR [--threads N] [--max-memory SIZE]\n\n"
+    "       tamponade run --resume DIR [--threads N] [--max-memory SIZE]\n";
+
+constexpr const char* kDescription =
     "Runs the protocol: frames.h5 + frames.xmf (ParaView), the coverage time series, and\n"
     "report.html, coverage.csv, summary.json in the output folder (default: the protocol's\n"
     "outputs.folder). Checkpoints go to DIR/checkpoint.h5 every 1024 steps and on Ctrl-C or\n"
     "SIGTERM (after at most 15 more steps); --resume DIR continues such a run, with the same\n"
     "result as an uninterrupted run at the same thread count.\n"
-    "Progress: a bar with ETA on a terminal, a plain line every 10 % (or 30 s) otherwise.\n"
+    "Progress: a bar with ETA on a terminal, a plain line every 10 % (or 30 s) otherwise.\n";
+
+constexpr const char* kFooter =
     "Exit codes: 0 done; 2 bad protocol or usage (file:line:column, nothing created); 1 the run\n"
     "failed; 130 stopped by Ctrl-C (SIGINT), 143 stopped by SIGTERM (128 + signal number, the\n"
-    "shell convention), each after writing the checkpoint.\n"
-    "A scene whose estimated memory exceeds what the machine has available (or --max-memory,\n"
-    "e.g. 4 GiB) is refused before anything is allocated, with the spacing that would fit.\n"
-    "(--stop-after-steps N stops as if interrupted at step N and exits 1: for tests.)\n";
+    "shell convention), each after writing the checkpoint.\n";
+
+// The command line of `tamponade run`.
+struct RunArgs {
+  std::string file, out, resume, accuracy;
+  int threads = 0;
+  long stopAfter = -1;
+  double memoryLimit = 0;  // [B] 0: what the machine has available
+};
+
+void defineRunOptions(CLI::App& app, RunArgs& a) {
+  CLI::Option* file = app.add_option("PROTOCOL.toml", a.file, "the protocol to run");
+  CLI::Option* resume = app.add_option("--resume", a.resume,
+                                       "continue the stopped run in DIR from its checkpoint (no "
+                                       "PROTOCOL,\n--out or --accuracy with it)")
+                            ->type_name("DIR")
+                            ->excludes(file);
+  app.add_option("--out", a.out, "output folder (default: the protocol's outputs.folder)")
+      ->type_name("DIR")
+      ->excludes(resume);
+  addAccuracyOption(app, a.accuracy)->excludes(resume);
+  app.add_option("--threads", a.threads, "OpenMP threads (default OMP_NUM_THREADS)")
+      ->type_name("N")
+      ->check(positiveInteger(std::numeric_limits<int>::max()));
+  app.add_option("--max-memory", a.memoryLimit,
+                 "refuse a scene whose estimated memory exceeds SIZE (e.g. 4 GiB) before\n"
+                 "anything is allocated, naming the spacing that would fit (default: what the\n"
+                 "machine has available)")
+      ->type_name("SIZE")
+      ->transform(memorySize());
+  app.add_option("--stop-after-steps", a.stopAfter,
+                 "stop as if interrupted at step N and exit 1 (for tests)")
+      ->type_name("N")
+      ->check(positiveInteger());
+}
 
 // Set by SIGINT/SIGTERM; the run checkpoints and stops at its next checkpointable step.
 // Lock-free atomics, so storing to them is async-signal-safe.
@@ -108,64 +146,21 @@ std::string occupiedFolderAdvice(const std::filesystem::path& folder) {
   return "choose another --out or remove it";
 }
 
-int usage() {
-  std::fputs(kUsage, stderr);
-  return 2;
-}
-
 }  // namespace
 
 int runRun(Args args) {
-  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
-  std::string file, out, resume;
+  CLI::App app("", "tamponade run");
+  describeCommand(app, kUsage, kDescription, kFooter);
+  RunArgs a;
+  defineRunOptions(app, a);
+  if (const std::optional<int> exit = parseCommandLine(app, args)) return *exit;
+  if (a.file.empty() && a.resume.empty())
+    return usageError(app, "give the protocol file, or --resume DIR");
+  const std::string &file = a.file, &out = a.out, &resume = a.resume;
+  const int threads = a.threads;
   protocols::ScenarioOptions options;
-  int threads = 0;
-  long stopAfter = -1;
-  for (std::size_t k = 0; k < args.size(); ++k) {
-    const bool hasValue = k + 1 < args.size();
-    if (args[k] == "--out" && hasValue) {
-      out = std::string(args[++k]);
-    } else if (args[k] == "--resume" && hasValue) {
-      resume = std::string(args[++k]);
-    } else if (args[k] == "--stop-after-steps" && hasValue) {
-      try {
-        stopAfter = parsePositiveInteger(std::string(args[++k]), "--stop-after-steps");
-      } catch (const UsageError& e) {
-        std::fprintf(stderr, "tamponade run: %s\n", e.what());
-        return 2;
-      }
-    } else if (args[k] == "--max-memory" && hasValue) {
-      try {
-        options.memoryLimit = parseMemorySize(std::string(args[++k]), "--max-memory");
-      } catch (const UsageError& e) {
-        std::fprintf(stderr, "tamponade run: %s\n", e.what());
-        return 2;
-      }
-    } else if (args[k] == "--threads" && hasValue) {
-      try {
-        threads = std::stoi(std::string(args[++k]));
-      } catch (const std::exception&) {
-        threads = 0;
-      }
-      if (threads < 1) {
-        std::fprintf(stderr, "tamponade run: --threads needs a positive integer\n");
-        return 2;
-      }
-    } else if (args[k] == "--accuracy" && hasValue) {
-      options.accuracy = tools::parseAccuracyOption("run", args[k + 1]);
-      if (!options.accuracy) return 2;
-      ++k;
-    } else if (!args[k].starts_with("-") && file.empty()) {
-      file = std::string(args[k]);
-    } else {
-      return usage();
-    }
-  }
-  if (file.empty() == resume.empty()) return usage();  // exactly one of PROTOCOL, --resume DIR
-  if (!resume.empty() && (options.accuracy || !out.empty())) return usage();
+  options.accuracy = accuracyPreset(a.accuracy);
+  if (a.memoryLimit > 0) options.memoryLimit = a.memoryLimit;
 #ifdef _OPENMP
   if (threads > 0) omp_set_num_threads(threads);
 #endif
@@ -209,7 +204,7 @@ int runRun(Args args) {
     protocols::RunOptions run;
     run.outputFolder = folder;
     run.resume = !resume.empty();
-    run.stopAfterSteps = stopAfter;
+    run.stopAfterSteps = a.stopAfter;
     run.stopRequested = &gStop;
     std::signal(SIGINT, onSignal);
     std::signal(SIGTERM, onSignal);

@@ -7,15 +7,19 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <optional>
 #include <string>
 #include <thread>
+#include <utility>
 
 #include "protocols/format/protocol_error.h"
 #include "protocols/scenario/memory_estimate.h"
 #include "protocols/sweep/sweep_collect.h"
 #include "protocols/sweep/sweep_folder.h"
 #include "protocols/sweep/sweep_plan.h"
-#include "tools/cli_args.h"
+#include "tools/cli.h"
+#include "tools/cli_values.h"
 #include "tools/commands.h"
 #include "tools/protocol_error_print.h"
 #include "tools/sweep_local.h"
@@ -32,22 +36,17 @@ constexpr const char* kUsage =
     "                                 [--time HH:MM:SS] [--mem SIZE] [--cpus-per-task N]\n"
     "                                 [--max-parallel N] [--no-submit]\n"
     "       tamponade sweep status DIR\n"
-    "       tamponade sweep collect DIR\n\n"
+    "       tamponade sweep collect DIR\n";
+
+constexpr const char* kDescription =
     "Runs a base protocol at every combination of the values in the sweep file's [vary] table\n"
     "(or the lists' k-th values together, with combine = \"zip\"). Every point is built and\n"
     "validated first; one invalid point refuses the sweep with file:line:column. Each point runs\n"
     "in DIR/points/<id>/ as an ordinary run with its own report; DIR/sweep.csv, sweep.md and\n"
     "sweep.html (plots) collect them. Running the same command again skips finished points and\n"
-    "resumes stopped ones; Ctrl-C stops every running point at a checkpoint.\n\n"
-    "  --jobs N          points at a time on this machine (default: one per core)\n"
-    "  --threads N       threads per point (default: the cores shared between the jobs)\n"
-    "  --max-points N    refuse sweeps with more points (default 1000)\n"
-    "  --dry-run         validate and list the points; run nothing, write nothing\n"
-    "  --slurm           write DIR/slurm/sweep.sbatch, one array task per unfinished point, and\n"
-    "                    submit it with sbatch (--no-submit: write it only); the resource\n"
-    "                    options become #SBATCH lines (--cpus-per-task also sets the threads)\n"
-    "  status DIR        each point's state; failed points with their log\n"
-    "  collect DIR       (re)write DIR/sweep.csv, sweep.md and sweep.html\n"
+    "resumes stopped ones; Ctrl-C stops every running point at a checkpoint.\n";
+
+constexpr const char* kFooter =
     "Exit codes: 0 done; 1 a point failed, or Slurm refused; 2 bad sweep file or usage (nothing\n"
     "run); 130/143 stopped by Ctrl-C/SIGTERM (run the command again to continue).\n"
     "Docs: docs/sweeps.md\n";
@@ -56,63 +55,54 @@ struct SweepArgs {
   std::string file, out;
   int jobs = 0, threads = 0;
   long maxPoints = static_cast<long>(protocols::kDefaultMaxSweepPoints);
-  bool dryRun = false, slurm = false;
+  bool dryRun = false, slurm = false, noSubmit = false;
   SlurmOptions slurmOptions;
 };
 
-int usage(const std::string& problem = {}) {
-  if (!problem.empty()) std::fprintf(stderr, "tamponade sweep: %s\n", problem.c_str());
-  std::fputs(kUsage, stderr);
-  return 2;
+// The options of a local sweep, the default when no sub-command is given.
+void defineLocalOptions(CLI::App& app, SweepArgs& a) {
+  const CLI::Validator count = positiveInteger(std::numeric_limits<int>::max());
+  app.add_option("SWEEP.toml", a.file, "the sweep file");
+  app.add_option("--out", a.out, "output folder of the sweep")->type_name("DIR");
+  app.add_option("--jobs", a.jobs, "points at a time on this machine (default: one per core)")
+      ->type_name("N")
+      ->check(count);
+  app.add_option("--threads", a.threads,
+                 "threads per point (default: the cores shared between the jobs)")
+      ->type_name("N")
+      ->check(count);
+  app.add_option("--max-points", a.maxPoints, "refuse sweeps with more points")
+      ->type_name("N")
+      ->check(positiveInteger())
+      ->capture_default_str();
+  app.add_flag("--dry-run", a.dryRun, "validate and list the points; run nothing, write nothing");
 }
 
-SweepArgs parseSweepArgs(Args args) {
-  SweepArgs a;
-  for (std::size_t k = 0; k < args.size(); ++k) {
-    const std::string arg(args[k]);
-    auto value = [&]() -> std::string {
-      if (k + 1 >= args.size()) throw UsageError(arg + " needs a value");
-      return std::string(args[++k]);
-    };
-    if (arg == "--out")
-      a.out = value();
-    else if (arg == "--jobs")
-      a.jobs = static_cast<int>(parsePositiveInteger(value(), "--jobs"));
-    else if (arg == "--threads")
-      a.threads = static_cast<int>(parsePositiveInteger(value(), "--threads"));
-    else if (arg == "--max-points")
-      a.maxPoints = parsePositiveInteger(value(), "--max-points");
-    else if (arg == "--dry-run")
-      a.dryRun = true;
-    else if (arg == "--slurm")
-      a.slurm = true;
-    else if (arg == "--no-submit")
-      a.slurmOptions.submit = false;
-    else if (arg == "--partition")
-      a.slurmOptions.partition = value();
-    else if (arg == "--account")
-      a.slurmOptions.account = value();
-    else if (arg == "--time")
-      a.slurmOptions.time = value();
-    else if (arg == "--mem")
-      a.slurmOptions.memory = value();
-    else if (arg == "--cpus-per-task")
-      a.slurmOptions.cpusPerTask =
-          static_cast<int>(parsePositiveInteger(value(), "--cpus-per-task"));
-    else if (arg == "--max-parallel")
-      a.slurmOptions.maxParallel =
-          static_cast<int>(parsePositiveInteger(value(), "--max-parallel"));
-    else if (!arg.starts_with("-") && a.file.empty())
-      a.file = arg;
-    else
-      throw UsageError("unexpected argument '" + arg + "'");
-  }
-  if (a.file.empty()) throw UsageError("give the sweep file");
-  if (a.out.empty() && !a.dryRun) throw UsageError("give the output folder with --out DIR");
-  if (!a.slurm && (!a.slurmOptions.partition.empty() || !a.slurmOptions.time.empty() ||
-                   !a.slurmOptions.memory.empty() || !a.slurmOptions.submit))
-    throw UsageError("--partition, --time, --mem and --no-submit go with --slurm");
-  return a;
+// The options of a sweep as a Slurm job array.
+void defineSlurmOptions(CLI::App& app, SweepArgs& a) {
+  const CLI::Validator count = positiveInteger(std::numeric_limits<int>::max());
+  SlurmOptions& o = a.slurmOptions;
+  CLI::Option* slurm =
+      app.add_flag("--slurm", a.slurm,
+                   "write DIR/slurm/sweep.sbatch, one array task per unfinished point,\n"
+                   "and submit it with sbatch; the resource options become #SBATCH lines\n"
+                   "(--cpus-per-task also sets the threads); --no-submit, --partition,\n"
+                   "--time and --mem go with it");
+  app.add_flag("--no-submit", a.noSubmit, "write the script only")->needs(slurm);
+  app.add_option("--partition", o.partition, "Slurm partition")->type_name("P")->needs(slurm);
+  app.add_option("--account", o.account, "Slurm account")->type_name("A");
+  app.add_option("--time", o.time, "time limit of each array task")
+      ->type_name("HH:MM:SS")
+      ->needs(slurm);
+  app.add_option("--mem", o.memory, "memory of each array task (e.g. 4G)")
+      ->type_name("SIZE")
+      ->needs(slurm);
+  app.add_option("--cpus-per-task", o.cpusPerTask, "cores of each array task")
+      ->type_name("N")
+      ->check(count);
+  app.add_option("--max-parallel", o.maxParallel, "array tasks at a time (default: no limit)")
+      ->type_name("N")
+      ->check(count);
 }
 
 int listPoints(const protocols::SweepPlan& plan) {
@@ -198,42 +188,72 @@ int sweepCollect(const std::filesystem::path& folder) {
   return 0;
 }
 
+// What the sub-commands name on the command line.
+struct FolderArgs {
+  std::string folder;
+  long index = 0;
+  int threads = 1;
+};
+
 // `tamponade sweep task DIR INDEX [--threads N]`: what a Slurm array task runs.
-int sweepTask(Args args) {
-  if (args.size() != 2 && !(args.size() == 4 && args[2] == "--threads"))
-    return usage("task takes DIR INDEX [--threads N]");
-  const std::filesystem::path folder(args[0]);
+int sweepTask(const CLI::App& task, const FolderArgs& a) {
+  const std::filesystem::path folder(a.folder);
   const protocols::SweepManifest m = protocols::readSweepManifest(folder);
-  const std::string indexText(args[1]);
-  const bool numeric =
-      !indexText.empty() && indexText.find_first_not_of("0123456789") == std::string::npos;
-  const std::size_t index = numeric ? std::stoul(indexText) : m.points.size();
-  if (index >= m.points.size())
-    return usage("task index '" + indexText + "' is not a point of " + folder.string() + " (0 to " +
-                 std::to_string(m.points.size() - 1) + ")");
-  const int threads =
-      args.size() == 4 ? static_cast<int>(parsePositiveInteger(std::string(args[3]), "--threads"))
-                       : 1;
-  return runSweepPoint(folder, m, index, threads);
+  if (a.index >= static_cast<long>(m.points.size()))
+    return usageError(task, "task index '" + std::to_string(a.index) + "' is not a point of " +
+                                folder.string() + " (0 to " + std::to_string(m.points.size() - 1) +
+                                ")");
+  return runSweepPoint(folder, m, static_cast<std::size_t>(a.index), a.threads);
+}
+
+// status, collect and the hidden task: sub-commands of `tamponade sweep` over a sweep's folder.
+void defineFolderCommands(CLI::App& app, FolderArgs& a) {
+  for (const auto& [name, summary] :
+       {std::pair{"status", "each point's state; failed points with their log"},
+        std::pair{"collect", "(re)write DIR/sweep.csv, sweep.md and sweep.html"}}) {
+    CLI::App* sub = addSubcommand(
+        app, name, summary, std::string("usage: tamponade sweep ") + name + " DIR\n", summary);
+    sub->add_option("DIR", a.folder, "the sweep's output folder")->required();
+  }
+  CLI::App* task = addSubcommand(app, "task", "run one point (what a Slurm array task runs)",
+                                 "usage: tamponade sweep task DIR INDEX [--threads N]\n",
+                                 "Runs point INDEX (0-based) of the sweep in DIR.\n");
+  task->group("");  // not for users: the batch script calls it
+  task->add_option("DIR", a.folder, "the sweep's output folder")->required();
+  task->add_option("INDEX", a.index, "the point's index in the manifest, from 0")
+      ->required()
+      ->check(wholeNumber(0, std::numeric_limits<long>::max()));
+  task->add_option("--threads", a.threads, "threads of the point")
+      ->type_name("N")
+      ->check(positiveInteger(std::numeric_limits<int>::max()));
+}
+
+// What the local or Slurm sweep needs beyond each option's own check.
+std::string sweepArgsProblem(const SweepArgs& a) {
+  if (a.file.empty()) return "give the sweep file";
+  if (a.out.empty() && !a.dryRun) return "give the output folder with --out DIR";
+  return {};
 }
 
 }  // namespace
 
 int runSweepCommand(Args args) {
-  if (args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
-    std::fputs(kUsage, stdout);
-    return 0;
-  }
+  CLI::App app("", "tamponade sweep");
+  describeCommand(app, kUsage, kDescription, kFooter);
+  SweepArgs a;
+  defineLocalOptions(app, a);
+  defineSlurmOptions(app, a);
+  FolderArgs folder;
+  defineFolderCommands(app, folder);
+  if (const std::optional<int> exit = parseCommandLine(app, args)) return *exit;
   try {
-    if (!args.empty() && (args[0] == "status" || args[0] == "collect")) {
-      if (args.size() != 2) return usage(std::string(args[0]) + " takes the sweep's folder");
-      return args[0] == "status" ? sweepStatus(std::filesystem::path(args[1]))
-                                 : sweepCollect(std::filesystem::path(args[1]));
-    }
-    if (!args.empty() && args[0] == "task") return sweepTask(args.subspan(1));
-    return runSweep(parseSweepArgs(args));
-  } catch (const UsageError& e) {
-    return usage(e.what());
+    if (app.got_subcommand("status")) return sweepStatus(folder.folder);
+    if (app.got_subcommand("collect")) return sweepCollect(folder.folder);
+    if (app.got_subcommand("task")) return sweepTask(*app.get_subcommand("task"), folder);
+    if (const std::string problem = sweepArgsProblem(a); !problem.empty())
+      return usageError(app, problem);
+    a.slurmOptions.submit = !a.noSubmit;
+    return runSweep(a);
   } catch (const protocols::ProtocolError& e) {
     return printProtocolError(e);
   } catch (const protocols::SweepError& e) {

@@ -10,11 +10,8 @@
 #include "tools/commands.h"
 
 namespace tools {
-int runValidate(Args args);  // tools/cmd_validate.cpp
-int runVersion(Args) {
-  std::printf("tamponade %s\n", TAMPONADE_VERSION);
-  return 0;
-}
+int runValidate(Args args);      // tools/cmd_validate.cpp
+int runVersion(Args args);       // tools/cmd_version.cpp
 int runDemo(Args args);          // tools/cmd_demo.cpp
 int runMesh(Args args);          // tools/cmd_mesh.cpp
 int runBench(Args args);         // tools/cmd_bench.cpp

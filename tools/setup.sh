@@ -11,6 +11,8 @@ packages=(
   libhdf5-dev hdf5-tools                        # frames and checkpoints; h5dump for inspection
   libtomlplusplus-dev                           # protocol files with exact line/column
   nlohmann-json3-dev                            # summary.json and sweep manifests
+  libcli11-dev                                  # command-line options: typed, range-checked, --help
+  libfmt-dev                                    # messages: fmt::format (no false -Wrestrict)
   slurm-wlm munge                               # the sweep's Slurm test: a one-node cluster
   catch2                                        # tests
   clang-format                                  # the format test (tests/check_format.sh)

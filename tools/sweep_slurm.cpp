@@ -8,6 +8,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "tools/sweep_point_process.h"
 
 namespace tools {
@@ -47,8 +49,8 @@ std::string arrayIndexList(const std::vector<std::size_t>& indices) {
   for (std::size_t k = 0; k < indices.size();) {
     std::size_t end = k;
     while (end + 1 < indices.size() && indices[end + 1] == indices[end] + 1) ++end;
-    list += (list.empty() ? "" : ",") + std::to_string(indices[k]);
-    if (end > k) list += "-" + std::to_string(indices[end]);
+    list += fmt::format("{}{}", list.empty() ? "" : ",", indices[k]);
+    if (end > k) list += fmt::format("-{}", indices[end]);
     k = end + 1;
   }
   return list;
@@ -64,7 +66,7 @@ std::string slurmScript(const std::filesystem::path& folder, const std::filesyst
        "# points that failed or did not finish.\n"
     << "#SBATCH --job-name=tamponade-sweep\n"
     << "#SBATCH --array=" << arrayIndexList(indices)
-    << (o.maxParallel > 0 ? "%" + std::to_string(o.maxParallel) : "") << "\n"
+    << (o.maxParallel > 0 ? fmt::format("%{}", o.maxParallel) : "") << "\n"
     << "#SBATCH --cpus-per-task=" << o.cpusPerTask << "\n"
     << "#SBATCH --output=" << (folder / "slurm" / "task-%a.log").string() << "\n";
   if (!o.time.empty()) s << "#SBATCH --time=" << o.time << "\n";

@@ -5,6 +5,7 @@
 
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/protocol_error.h"
+#include "protocols/format/stage_names.h"
 #include "protocols/scenario/scenario_error.h"
 #include "protocols/tissue/tissue_measures.h"
 
@@ -16,7 +17,7 @@ namespace {
 // paper's method). It needs the fill at rest density (MassRule::kRelaxedFill); with the older,
 // compressed fill rules only WCSPH starts the scene, so they fall back to it with a note.
 void chooseSolver(const Protocol& p, const ScenarioOptions& options, Scenario& s) {
-  s.pipelineOptions.solver = std::string(toString(p.solver.value));
+  s.pipelineOptions.solver = p.solver.value;
   bool known = false;
   for (const auto& entry : sim::solverRegistry())
     known = known || entry.name == s.pipelineOptions.solver;
@@ -70,23 +71,13 @@ void setSolverParameters(const Protocol& p, Scenario& s) {
   o.wcsph.speedOfSound = 10.0 * std::sqrt(2.0 * p.schedule.gravity.value * extent);
 }
 
-// [effects] forced on or off; a forced effect this build lacks is an error (on) or a note (off).
+// [effects] forced on or off (the parser accepts only the registry's forceable effects).
 void forceEffects(const Protocol& p, Scenario& s) {
-  for (std::size_t k = 0; k < kEffectNames.size(); ++k) {
+  const std::span<const std::string_view> names = effectSwitchNames();
+  for (std::size_t k = 0; k < names.size() && k < p.effects.settings.size(); ++k) {
     const Located<EffectSetting>& setting = p.effects.settings[k];
     if (setting.value == EffectSetting::kAuto) continue;
-    const std::string name(kEffectNames[k]);
-    bool registered = false;
-    for (const auto& entry : sim::effectRegistry()) registered = registered || entry.name == name;
-    if (!registered) {
-      if (setting.value == EffectSetting::kOn)
-        failAt(setting.where,
-               "effect '" + name + "' is forced on but this build does not have it yet",
-               "remove the line or set it to \"auto\"");
-      s.notes.push_back("effect '" + name + "' forced off: this build does not have it anyway");
-      continue;
-    }
-    s.pipelineOptions.forced[name] =
+    s.pipelineOptions.forced[std::string(names[k])] =
         setting.value == EffectSetting::kOn ? sim::StageOverride::kOn : sim::StageOverride::kOff;
   }
 }

@@ -2,6 +2,9 @@
 
 #include <algorithm>
 
+#include <fmt/format.h>
+
+#include "protocols/format/stage_names.h"
 #include "protocols/format/units.h"
 
 namespace protocols {
@@ -52,7 +55,7 @@ std::string describeProtocol(const Protocol& p) {
   out.addPlain("# " + p.file.string() + ": valid, format version " +
                std::to_string(p.formatVersion.value) + "; values in SI units");
   if (p.title) out.add("title", quoted(p.title->value), p.title->where);
-  out.add("solver", quoted(std::string(toString(p.solver.value))), p.solver.where);
+  out.add("solver", quoted(p.solver.value), p.solver.where);
 
   const EyeSpec& e = p.eye;
   out.add("eye.kind", quoted(std::string(toString(e.kind.value))), e.kind.where);
@@ -125,8 +128,8 @@ std::string describeProtocol(const Protocol& p) {
     if (s.name.value == PostureName::kCustom) {
       const auto& g = s.gravityDirection.value;
       out.add(prefix + ".gravity_direction",
-              "[" + formatIn(g[0], "") + ", " + formatIn(g[1], "") + ", " + formatIn(g[2], "") +
-                  "] (eye frame)",
+              fmt::format("[{}, {}, {}] (eye frame)", formatIn(g[0], ""), formatIn(g[1], ""),
+                          formatIn(g[2], "")),
               s.gravityDirection.where);
     } else {
       out.add(prefix + ".name", quoted(std::string(toString(s.name.value))), s.name.where);
@@ -144,8 +147,9 @@ std::string describeProtocol(const Protocol& p) {
                formatQuantity(total, Dimension::kDuration) + " (" + formatIn(total, "min") +
                ") simulated");
 
-  for (std::size_t k = 0; k < kEffectNames.size(); ++k)
-    out.add("effects." + std::string(kEffectNames[k]),
+  const std::span<const std::string_view> effects = effectSwitchNames();
+  for (std::size_t k = 0; k < effects.size(); ++k)
+    out.add(fmt::format("effects.{}", effects[k]),
             std::string(toString(p.effects.settings[k].value)) +
                 (p.effects.settings[k].value == EffectSetting::kAuto ? " (inferred from the scene)"
                                                                      : " (forced)"),

@@ -1,10 +1,17 @@
 #include "protocols/format/parameter_table.h"
 
 #include <array>
+#include <cctype>
 #include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/protocol.h"
+#include "protocols/format/stage_names.h"
+#include "sim/world/stage_registry.h"
 
 namespace protocols {
 
@@ -39,7 +46,7 @@ const ParameterSpec kParameters[] = {
    .doc = "Short name of the scenario, shown in the report."},
   {.key = "description", .kind = K::kString, .example = "\"...\"",
    .doc = "The scenario in words, shown in the report."},
-  {.key = "solver", .kind = K::kChoice, .choices = kSolverNames, .defaultText = "indsph",
+  {.key = "solver", .kind = K::kChoice, .choices = solverNames(), .defaultText = kDefaultSolver,
    .example = "\"indsph\"", .doc = "Pressure solver (all share one interface; docs/methods/solvers.md)."},
 
   {.key = "eye", .kind = K::kTable, .requirement = R::kRequired, .doc = "The eye: cavity shape, side, breaks, tissues."},
@@ -175,18 +182,7 @@ const ParameterSpec kParameters[] = {
 
   {.key = "effects", .kind = K::kTable, .defaultText = "all inferred",
    .doc = "Force a physical effect on (true) or off (false); \"auto\" or absent = inferred from the scene."},
-  {.key = "effects.interfacial_tension", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
-   .doc = "Interfacial tension between agent and aqueous (inferred: two fluid phases)."},
-  {.key = "effects.background_pressure", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "false",
-   .doc = "Background pressure 2 sigma / d against the interface's clumping (inferred: interfacial tension under INDSPH in the filled cavity)."},
-  {.key = "effects.wall_adhesion", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
-   .doc = "Wall wetting at the contact angle (inferred: two fluid phases touching a wall)."},
-  {.key = "effects.viscosity", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
-   .doc = "Viscous forces (inferred: always)."},
-  {.key = "effects.implicit_viscosity", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "true",
-   .doc = "Implicit viscosity solve (inferred: the explicit viscous time step would be limiting)."},
-  {.key = "effects.elasticity", .kind = K::kEffectSwitch, .defaultText = "auto", .example = "false",
-   .doc = "Elastic tissue (inferred: a tissue in mode auto that would deform, or mode elastic)."},
+  // effects.<name>: one row per forceable effect of the engine's registry (effectRows).
 
   {.key = "accuracy", .kind = K::kTable, .defaultText = "preset standard",
    .doc = "A preset, and explicit values that override it."},
@@ -237,19 +233,53 @@ std::string number(double si, std::string_view unit) {
   return text;
 }
 
+// kParameters with a row `effects.<name>` after the [effects] table's row for each effect the
+// engine's registry lets a protocol force, documented by the registry's own words.
+std::vector<ParameterSpec> withEffectRows() {
+  struct Texts {
+    std::vector<std::string> keys, docs;
+  };
+  static const Texts texts = [] {
+    Texts t;
+    for (const sim::EffectEntry& e : sim::effectRegistry()) {
+      if (!e.forceable()) continue;
+      std::string description = e.description;
+      description.front() = static_cast<char>(std::toupper(description.front()));
+      t.keys.push_back(fmt::format("effects.{}", e.name));
+      t.docs.push_back(fmt::format("{} (inferred: {}).", description, e.inferredWhen));
+    }
+    return t;
+  }();
+  std::vector<ParameterSpec> rows;
+  for (const ParameterSpec& spec : kParameters) {
+    rows.push_back(spec);
+    if (spec.key != "effects") continue;
+    for (std::size_t k = 0; k < texts.keys.size(); ++k)
+      rows.push_back({.key = texts.keys[k],
+                      .kind = K::kEffectSwitch,
+                      .defaultText = "auto",
+                      .example = "true",
+                      .doc = texts.docs[k]});
+  }
+  return rows;
+}
+
 }  // namespace
 
-std::span<const ParameterSpec> parameterTable() { return kParameters; }
+std::span<const ParameterSpec> parameterTable() {
+  static const std::vector<ParameterSpec> rows = withEffectRows();
+  return rows;
+}
 
 const ParameterSpec& parameterSpec(std::string_view key) {
-  for (const ParameterSpec& spec : kParameters)
+  for (const ParameterSpec& spec : parameterTable())
     if (spec.key == key) return spec;
   throw std::logic_error("protocol parameter table has no key '" + std::string(key) + "'");
 }
 
 std::vector<std::string_view> childKeys(std::string_view tablePath) {
   std::vector<std::string_view> keys;
-  for (const ParameterSpec& spec : kParameters)
+  for (const ParameterSpec& spec : parameterTable())
     if (parentOf(spec.key) == tablePath)
       keys.push_back(tablePath.empty() ? spec.key : spec.key.substr(tablePath.size() + 1));
   return keys;
@@ -258,13 +288,13 @@ std::vector<std::string_view> childKeys(std::string_view tablePath) {
 std::string rangeText(const ParameterSpec& spec) {
   if (!spec.hasRange()) return {};
   const std::string_view unit = spec.displayUnit;
-  const std::string suffix = unit.empty() || unit == "%" ? "" : " " + std::string(unit);
+  const std::string suffix = unit.empty() || unit == "%" ? "" : fmt::format(" {}", unit);
   if (spec.min > -kUnbounded && spec.max < kUnbounded)
-    return (spec.minInclusive ? "[" : "(") + number(spec.min, unit) + ", " +
-           number(spec.max, unit) + (spec.maxInclusive ? "]" : ")") + suffix;
+    return fmt::format("{}{}, {}{}{}", spec.minInclusive ? "[" : "(", number(spec.min, unit),
+                       number(spec.max, unit), spec.maxInclusive ? "]" : ")", suffix);
   if (spec.min > -kUnbounded)
-    return (spec.minInclusive ? ">= " : "> ") + number(spec.min, unit) + suffix;
-  return (spec.maxInclusive ? "<= " : "< ") + number(spec.max, unit) + suffix;
+    return fmt::format("{}{}{}", spec.minInclusive ? ">= " : "> ", number(spec.min, unit), suffix);
+  return fmt::format("{}{}{}", spec.maxInclusive ? "<= " : "< ", number(spec.max, unit), suffix);
 }
 
 std::string typeText(const ParameterSpec& spec) {
@@ -298,15 +328,15 @@ std::string renderParameterReference() {
   std::string md =
       "| key | type | range | required | default | example | description |\n"
       "|---|---|---|---|---|---|---|\n";
-  for (const ParameterSpec& spec : kParameters) {
+  for (const ParameterSpec& spec : parameterTable()) {
     std::string required = spec.requirement == R::kRequired   ? "yes"
                            : spec.requirement == R::kOptional ? "no"
                                                               : std::string(spec.condition);
-    md += "| `" + std::string(spec.key) + "` | " + cell(typeText(spec)) + " | " +
-          cell(rangeText(spec)) + " | " + cell(required) + " | " +
-          cell(std::string(spec.defaultText)) + " | " +
-          (spec.example.empty() ? std::string() : "`" + cell(std::string(spec.example)) + "`") +
-          " | " + cell(std::string(spec.doc)) + " |\n";
+    const std::string example =
+        spec.example.empty() ? std::string() : fmt::format("`{}`", cell(std::string(spec.example)));
+    md += fmt::format("| `{}` | {} | {} | {} | {} | {} | {} |\n", spec.key, cell(typeText(spec)),
+                      cell(rangeText(spec)), cell(required), cell(std::string(spec.defaultText)),
+                      example, cell(std::string(spec.doc)));
   }
   return md;
 }
@@ -321,7 +351,7 @@ std::string renderUnitTable() {
     for (const Unit& u : knownUnits()) {
       if (u.dimension != d) continue;
       if (!units.empty()) units += ", ";
-      units += "`" + std::string(u.symbol) + "` = " + formatQuantity(u.toSi, d);
+      units += fmt::format("`{}` = {}", u.symbol, formatQuantity(u.toSi, d));
     }
     if (d == D::kFraction) units += " (or a bare number in [0, 1])";
     const std::string_view si = siUnit(d);

@@ -8,6 +8,7 @@
 
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/parse_protocol_document.h"
+#include "protocols/format/stage_names.h"
 #include "protocols/format/toml_value_reader.h"
 
 namespace protocols {
@@ -108,7 +109,10 @@ Protocol ProtocolParser::parse(const toml::table& document) {
   if (auto v = reader_.integer(root, "format_version")) p.formatVersion = *v;
   p.title = reader_.string(root, "title");
   p.description = reader_.string(root, "description");
-  p.solver = choiceOr(root, "solver", SolverName::kIndsph);
+  if (auto c = reader_.choice(root, "solver"))
+    p.solver = {std::string(solverNames()[c->value]), c->where};
+  else
+    p.solver = {std::string(kDefaultSolver), defaultAt_};
   readEye(root, p);
   readTamponade(root, p);
   readSchedule(root, p);
@@ -396,11 +400,12 @@ void ProtocolParser::checkEquilibriumPostures(const Protocol& p) {
 }
 
 void ProtocolParser::readEffects(const Table& root, Protocol& p) {
-  for (auto& setting : p.effects.settings) setting = {EffectSetting::kAuto, defaultAt_};
+  const std::span<const std::string_view> names = effectSwitchNames();
+  p.effects.settings.assign(names.size(), {EffectSetting::kAuto, defaultAt_});
   const std::optional<Table> t = reader_.table(root, "effects");
   if (!t) return;
-  for (std::size_t k = 0; k < kEffectNames.size(); ++k)
-    if (auto s = reader_.effectSwitch(*t, kEffectNames[k])) p.effects.settings[k] = *s;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (auto s = reader_.effectSwitch(*t, names[k])) p.effects.settings[k] = *s;
 }
 
 void ProtocolParser::readAccuracy(const Table& root, Protocol& p) {

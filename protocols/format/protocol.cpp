@@ -2,6 +2,10 @@
 
 #include <stdexcept>
 
+#include <fmt/format.h>
+
+#include "protocols/format/stage_names.h"
+
 namespace protocols {
 
 namespace {
@@ -15,9 +19,10 @@ std::string_view nameOf(Enum v, const std::array<std::string_view, N>& names) {
 }  // namespace
 
 const Located<EffectSetting>& EffectSwitches::get(std::string_view effect) const {
-  for (std::size_t k = 0; k < kEffectNames.size(); ++k)
-    if (kEffectNames[k] == effect) return settings[k];
-  throw std::logic_error("no effect named '" + std::string(effect) + "' in kEffectNames");
+  const std::span<const std::string_view> names = effectSwitchNames();
+  for (std::size_t k = 0; k < names.size() && k < settings.size(); ++k)
+    if (names[k] == effect) return settings[k];
+  throw std::logic_error(fmt::format("no effect switch named '{}'", effect));
 }
 
 std::string_view toString(EyeKind v) { return nameOf(v, kEyeKindNames); }
@@ -31,7 +36,6 @@ std::string_view toString(EffectSetting v) {
   constexpr std::array<std::string_view, 3> kNames = {"auto", "on", "off"};
   return nameOf(v, kNames);
 }
-std::string_view toString(SolverName v) { return nameOf(v, kSolverNames); }
 std::string_view toString(AccuracyPreset v) { return nameOf(v, kAccuracyPresetNames); }
 std::string_view toString(SurfaceStressName v) { return nameOf(v, kSurfaceStressNames); }
 std::string_view toString(WallModelName v) { return nameOf(v, kWallModelNames); }

@@ -36,9 +36,6 @@ enum class PostureName { kSupine, kFaceDown, kUpright, kLeftSide, kRightSide, kC
 inline constexpr std::array<std::string_view, 5> kPostureNames = {"supine", "face-down", "upright",
                                                                   "left-side", "right-side"};
 enum class EffectSetting { kAuto, kOn, kOff };
-enum class SolverName { kIndsph, kDfsph, kWcsph, kIisph, kNumberDensity };
-inline constexpr std::array<std::string_view, 5> kSolverNames = {"indsph", "dfsph", "wcsph",
-                                                                 "iisph", "number_density"};
 enum class AccuracyPreset { kDraft, kStandard, kFine };
 inline constexpr std::array<std::string_view, 3> kAccuracyPresetNames = {"draft", "standard",
                                                                          "fine"};
@@ -64,10 +61,9 @@ inline constexpr std::array<std::string_view, 6> kTamponadeAgentNames = {
 inline constexpr std::string_view kCustomAgent = "custom";
 // Tissue materials of the material library.
 inline constexpr std::array<std::string_view, 2> kTissueMaterialNames = {"sclera", "orbital_fat"};
-// Effects a protocol may force on or off, by the name of their pipeline stage.
-inline constexpr std::array<std::string_view, 6> kEffectNames = {
-    "interfacial_tension", "background_pressure", "wall_adhesion",
-    "viscosity",           "implicit_viscosity",  "elasticity"};
+// The solvers and the effects a protocol may name come from the engine's registries
+// (protocols/format/stage_names.h).
+inline constexpr std::string_view kDefaultSolver = "indsph";  // the format's default
 
 struct RetinalBreak {
   Located<std::string> name;
@@ -152,8 +148,9 @@ struct ScheduleSpec {
 };
 
 struct EffectSwitches {
-  // In kEffectNames order. kAuto = inferred from the scene (docs/developer-guide.md principle 1).
-  std::array<Located<EffectSetting>, kEffectNames.size()> settings;
+  // One per forceable effect, in effectSwitchNames() order. kAuto = inferred from the scene
+  // (docs/developer-guide.md principle 1).
+  std::vector<Located<EffectSetting>> settings;
   const Located<EffectSetting>& get(std::string_view effect) const;
 };
 
@@ -199,7 +196,7 @@ struct Protocol {
   Located<int> formatVersion;
   std::optional<Located<std::string>> title;
   std::optional<Located<std::string>> description;
-  Located<SolverName> solver;
+  Located<std::string> solver;  // a name of the solver registry
   EyeSpec eye;
   TamponadeSpec tamponade;
   ScheduleSpec schedule;
@@ -215,7 +212,6 @@ std::string_view toString(TissueMode v);
 std::string_view toString(Anchoring v);
 std::string_view toString(PostureName v);  // "custom" for kCustom
 std::string_view toString(EffectSetting v);
-std::string_view toString(SolverName v);
 std::string_view toString(AccuracyPreset v);
 std::string_view toString(SurfaceStressName v);
 std::string_view toString(WallModelName v);

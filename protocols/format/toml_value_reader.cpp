@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include <fmt/format.h>
+
 #include "protocols/format/edit_distance.h"
 
 namespace protocols {
@@ -112,9 +114,10 @@ bool TomlValueReader::checkRange(const Table& t, std::string_view key, const Par
   const bool belowMax = s.maxInclusive ? v <= s.max : v < s.max;
   if (aboveMin && belowMax) return true;
   std::string shown = formatIn(v, s.displayUnit);
-  error(value.where,
-        shownKey(t, key) + " = " + shown + " is outside the allowed range " + rangeText(s),
-        std::string(s.doc) + (s.example.empty() ? "" : " " + exampleOf(s, key)));
+  error(
+      value.where,
+      fmt::format("{} = {} is outside the allowed range {}", shownKey(t, key), shown, rangeText(s)),
+      s.example.empty() ? std::string(s.doc) : fmt::format("{} {}", s.doc, exampleOf(s, key)));
   return false;
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "protocols/format/edit_distance.h"
 
 namespace protocols {
@@ -163,7 +165,7 @@ UnitError::UnitError(std::string what, std::string fix)
       fix_(std::move(fix)) {}
 
 Quantity parseQuantity(std::string_view text, std::span<const Dimension> allowed) {
-  const std::string quoted = "\"" + std::string(text) + "\"";
+  const std::string quoted = fmt::format("\"{}\"", text);
   const std::string_view body = trim(text);
   // std::from_chars takes the longest number prefix ("12mm" -> 12, rest "mm"); it accepts no
   // leading '+', which we allow by skipping it.
@@ -224,7 +226,7 @@ std::string formatQuantity(double siValue, Dimension dimension) {
   const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), siValue);
   std::string text(buffer.data(), result.ptr);
   const std::string_view unit = siUnit(dimension);
-  if (!unit.empty()) text += " " + std::string(unit);
+  if (!unit.empty()) text += fmt::format(" {}", unit);
   return text;
 }
 
@@ -236,7 +238,7 @@ std::string formatIn(double siValue, std::string_view unitSymbol) {
   const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
                                     std::chars_format::general, 6);
   std::string text(buffer.data(), result.ptr);
-  if (!unitSymbol.empty()) text += (unitSymbol == "%" ? "" : " ") + std::string(unitSymbol);
+  if (!unitSymbol.empty()) text += fmt::format("{}{}", unitSymbol == "%" ? "" : " ", unitSymbol);
   return text;
 }
 

@@ -6,6 +6,8 @@
 #include <map>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "protocols/format/parse_protocol_document.h"
 #include "protocols/sweep/sweep_file.h"
 #include "protocols/sweep/sweep_point_document.h"
@@ -16,8 +18,7 @@ namespace {
 
 std::string pointId(std::size_t index, std::size_t count) {
   const std::size_t width = std::max<std::size_t>(3, std::to_string(count).size());
-  const std::string number = std::to_string(index + 1);
-  return "p" + std::string(width - std::min(width, number.size()), '0') + number;
+  return fmt::format("p{:0>{}}", index + 1, width);
 }
 
 // The points' value indices: every combination (the last key varying fastest), or the lists'

@@ -5,6 +5,8 @@
 #include <cstdlib>
 #include <optional>
 
+#include <fmt/format.h>
+
 namespace protocols {
 
 namespace {
@@ -33,11 +35,11 @@ std::optional<RangeNumber> readRangeNumber(const toml::node& node) {
 }
 
 std::string withUnit(double value, const RangeNumber& like) {
-  return shortestNumber(value) + (like.unit.empty() ? "" : " " + like.unit);
+  return fmt::format("{}{}{}", shortestNumber(value), like.unit.empty() ? "" : " ", like.unit);
 }
 
 std::string valueToml(double value, const RangeNumber& like, bool integers) {
-  if (like.isString) return "\"" + withUnit(value, like) + "\"";
+  if (like.isString) return fmt::format("\"{}\"", withUnit(value, like));
   if (integers) return std::to_string(std::llround(value));
   std::string text = shortestNumber(value);
   if (text.find_first_of(".en") == std::string::npos) text += ".0";  // a TOML float

@@ -152,7 +152,7 @@ const std::vector<SolverEntry>& solverRegistry() {
 
 const std::vector<EffectEntry>& effectRegistry() {
   static const std::vector<EffectEntry> entries = {
-      {"gravity", "uniform body acceleration, turned with posture",
+      {"gravity", "uniform body acceleration, turned with posture", "",
        [](const World& w, const PipelineOptions&) {
          const bool on = w.gravity.norm() > 0;
          return StageDecision{"gravity", on, false,
@@ -160,18 +160,20 @@ const std::vector<EffectEntry>& effectRegistry() {
        },
        [](const World&, const PipelineOptions&) { return std::make_unique<Gravity>(); }},
       {"viscosity", "explicit laminar viscosity (Monaghan 2005), for water-like fluids",
+       "a viscous fluid whose explicit viscous time step does not limit the step",
        [](const World& w, const PipelineOptions& o) { return viscosityDecision(w, o, false); },
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<ViscosityMonaghan2005>(o.wallFriction);
        }},
       {"implicit_viscosity", "implicit viscosity (Weiler et al. 2018), for viscous oils",
+       "the explicit viscous time step would be limiting",
        [](const World& w, const PipelineOptions& o) { return viscosityDecision(w, o, true); },
        [](const World&, const PipelineOptions& o) {
          ImplicitViscosityParameters p = o.implicitViscosity;
          p.wallFriction = o.wallFriction;
          return std::make_unique<ViscosityWeiler2018>(p);
        }},
-      {"velocity_smoothing", "XSPH velocity smoothing (Monaghan 1989), numerical damping",
+      {"velocity_smoothing", "XSPH velocity smoothing (Monaghan 1989), numerical damping", "",
        [](const World&, const PipelineOptions& o) {
          const bool explicitSolver = o.solver == "wcsph" || o.solver == "number_density";
          const bool on = o.velocitySmoothing > 0 && !explicitSolver;
@@ -185,6 +187,7 @@ const std::vector<EffectEntry>& effectRegistry() {
          return std::make_unique<XsphMonaghan1989>(o.velocitySmoothing);
        }},
       {"wall_adhesion", "contact angle per (fluid, wall): Young wall-interface stress",
+       "two liquid phases with a contact angle touching a wall",
        [](const World& w, const PipelineOptions& o) {
          // Wetting acts at a contact line: it needs both liquids of the tension pair present.
          const bool bothPhases = presentTensionPair(w) != nullptr;
@@ -206,6 +209,7 @@ const std::vector<EffectEntry>& effectRegistry() {
              wallLayerPhaseFor(backgroundPressureActive(w, o)));
        }},
       {"interfacial_tension", "surface stress between two liquids (Hu & Adams 2006)",
+       "two liquid phases with an interfacial tension",
        [](const World& w, const PipelineOptions& o) {
          std::ostringstream why;
          const InterfacialTension* t = presentTensionPair(w);
@@ -225,7 +229,7 @@ const std::vector<EffectEntry>& effectRegistry() {
              resolveSurfaceStressForm(o.surfaceStress, o.solver));
        }},
       {"background_pressure", "constant pressure offset against the surface stress's clumping",
-       backgroundPressureDecision,
+       "interfacial tension under INDSPH in a closed domain", backgroundPressureDecision,
        [](const World& w, const PipelineOptions& o) {
          const InterfacialTension* t = presentTensionPair(w);
          require(t != nullptr,
@@ -235,6 +239,7 @@ const std::vector<EffectEntry>& effectRegistry() {
          return std::make_unique<BackgroundPressure>(chosenBackgroundPressure(w, o, *t), rho);
        }},
       {"elasticity", "implicit corotated linear elasticity (Peer et al. 2018), elastic tissue",
+       "particles of an elastic material",
        [](const World& w, const PipelineOptions&) {
          const std::size_t count = elasticParticleCount(w);
          return StageDecision{"elasticity", count > 0, false,

@@ -67,6 +67,12 @@ struct SolverEntry {
 struct EffectEntry {
   std::string name;
   std::string description;
+  // When the rule turns the effect on, in a few words. An effect that has it may be forced on or
+  // off by whoever assembles the pipeline (PipelineOptions::forced; a protocol's [effects] table
+  // lists exactly these, with this text in its reference); "" for stages that are not switched
+  // by hand (gravity, velocity smoothing).
+  std::string inferredWhen;
+  bool forceable() const { return !inferredWhen.empty(); }
   // Whether the scene calls for the effect, with the reason in words.
   std::function<StageDecision(const World&, const PipelineOptions&)> needed;
   std::function<std::unique_ptr<Effect>(const World&, const PipelineOptions&)> create;

@@ -20,13 +20,13 @@ expect 0 "axial length    28.00 mm" --type myopic --axial-length 28mm --resoluti
 expect 0 "staphyloma      depth 2.00 mm, width 8.00 mm" --type staphyloma --axial-length 29mm \
   --staphyloma-depth 2mm --staphyloma-width 8mm --resolution 32 --out "$dir/s.ply"
 expect 0 "usage: tamponade mesh generate" --help
-expect 2 "--axial-length 28 needs a unit" --type myopic --axial-length 28 --out "$dir/x.stl"
+expect 2 "--axial-length: 28 needs a unit" --type myopic --axial-length 28 --out "$dir/x.stl"
 expect 2 "myopic axial length 40.00 mm is out of range" --type myopic --axial-length 40mm --out "$dir/x.stl"
 expect 2 "folds its edge" --type staphyloma --staphyloma-depth 5mm --staphyloma-width 6mm --out "$dir/x.stl"
 expect 2 "apply only to --type staphyloma" --type emmetropic --staphyloma-depth 2mm --out "$dir/x.stl"
-expect 2 "unknown --type 'round'" --type round --out "$dir/x.stl"
-expect 2 "unknown option '--axial'" --type myopic --axial 28mm --out "$dir/x.stl"
-expect 2 "--out FILE is required" --type myopic
+expect 2 "--type: 'round' must be emmetropic, myopic or staphyloma" --type round --out "$dir/x.stl"
+expect 2 "not expected: --axial" --type myopic --axial 28mm --out "$dir/x.stl"
+expect 2 "--out is required" --type myopic
 expect 2 "must end in .stl, .obj or .ply" --type myopic --out "$dir/x.vtk"
 expect 2 "resolution 2 is out of range" --type myopic --resolution 2 --out "$dir/x.stl"
 expect 1 "cannot open for writing" --type myopic --resolution 16 --out /nonexistent-dir/x.stl

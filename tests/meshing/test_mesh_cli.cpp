@@ -58,8 +58,8 @@ TEST_CASE("mesh check: exit codes and messages for the bad-mesh table", "[unit][
       {"garbage.stl", 2, "cannot read the file as a mesh"},
       {"nan.obj --units mm", 2, "NaN or infinite"},
       {"eye_in_m.stl --units mm", 2, "probably in m: declare --units m"},
-      {"good.stl --units inch", 2, "--units must be mm or m"},
-      {"", 2, "no mesh FILE given"},
+      {"good.stl --units inch", 2, "--units: 'inch' must be mm or m"},
+      {"", 2, "FILE is required"},
   };
   for (const Case& c : cases) {
     std::string arguments = c.arguments;

@@ -298,7 +298,7 @@ TEST_CASE("values, defaults and locations are kept", "[unit][protocol]") {
   CHECK(p.accuracy.wallModel.value == protocols::WallModelName::kAuto);
   CHECK_FALSE(p.accuracy.wallModel.where.isInFile());
   // Defaults.
-  CHECK(p.solver.value == protocols::SolverName::kIndsph);
+  CHECK(p.solver.value == "indsph");
   CHECK(p.schedule.gravity.value == 9.80665);
   CHECK(p.outputs.folder.value == "runs/values");
   CHECK(p.outputs.report.value);

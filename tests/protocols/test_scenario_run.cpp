@@ -270,7 +270,8 @@ TEST_CASE(
   const CommandResult tooLoose =
       runTamponade("bench accuracy ind.toml --tolerances 0.2 --out x", dir);
   CHECK(tooLoose.exitCode == 2);
-  CHECK(tooLoose.output.find("--tolerances '0.2' is above its largest value") != std::string::npos);
+  CHECK(tooLoose.output.find("--tolerances: '0.2' is above its largest value") !=
+        std::string::npos);
   CHECK(runTamponade("bench accuracy --out x", dir).exitCode == 2);
   std::ofstream(dir / "bad.toml") << "format_version = 1\n[eye]\nkind = \"emetropic\"\n";
   const CommandResult bad = runTamponade("bench accuracy bad.toml --out x", dir);

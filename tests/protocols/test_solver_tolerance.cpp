@@ -29,7 +29,7 @@ struct SolveRecord {
 
 // Steps the tiny eye (2923 fluid particles, layered wall) under `solver` at `tolerance`.
 // Steps before `skip` are stepped but not counted; `relaxation` > 0 replaces INDSPH's.
-SolveRecord stepTinyEye(SolverName solver, double tolerance, int steps, int skip = 0,
+SolveRecord stepTinyEye(const std::string& solver, double tolerance, int steps, int skip = 0,
                         double relaxation = 0) {
   Protocol p = parseProtocol((kProtocols / "tiny.toml").string());
   p.solver.value = solver;
@@ -55,15 +55,15 @@ SolveRecord stepTinyEye(SolverName solver, double tolerance, int steps, int skip
 
 TEST_CASE("accuracy.solver_tolerance is where INDSPH and IISPH stop, as DFSPH",
           "[unit][scenario][solver]") {
-  for (const SolverName solver : {SolverName::kIndsph, SolverName::kIisph}) {
-    INFO("solver " << toString(solver));
+  for (const std::string solver : {"indsph", "iisph"}) {
+    INFO("solver " << solver);
     // 12 steps of the settling eye: the first steps carry the fill's start-up error.
     const SolveRecord loose = stepTinyEye(solver, 2e-3, 12);
     const SolveRecord tight = stepTinyEye(solver, 1e-4, 12);
-    WARN(toString(solver) << ": tolerance 0.2 %: " << loose.totals.meanIterations()
-                          << " iterations/step, mean error " << loose.totals.meanDensityError()
-                          << "; 0.01 %: " << tight.totals.meanIterations() << ", "
-                          << tight.totals.meanDensityError());
+    WARN(solver << ": tolerance 0.2 %: " << loose.totals.meanIterations()
+                << " iterations/step, mean error " << loose.totals.meanDensityError()
+                << "; 0.01 %: " << tight.totals.meanIterations() << ", "
+                << tight.totals.meanDensityError());
     // The stop rule: a step ends at or below the tolerance unless it ran into the cap.
     CHECK(loose.stepsAboveTolerance == 0);
     CHECK(tight.stepsAboveTolerance == 0);
@@ -76,7 +76,7 @@ TEST_CASE("accuracy.solver_tolerance is where INDSPH and IISPH stop, as DFSPH",
   }
   // DFSPH reads it for both of its solves (as before).
   Protocol p = parseProtocol((kProtocols / "tiny.toml").string());
-  p.solver.value = SolverName::kDfsph;
+  p.solver.value = "dfsph";
   p.accuracy.solverTolerance.value = 3e-4;
   const Scenario s = assembleScenario(p);
   CHECK(s.pipelineOptions.dfsph.densityTolerance == 3e-4);
@@ -93,8 +93,8 @@ TEST_CASE("INDSPH on the layered eye reaches 0.01 % within its iteration cap",
   // either relaxation: 98 iterations per step over the first 12 at 0.8).
   Protocol p = parseProtocol((kProtocols / "tiny.toml").string());
   CHECK(assembleScenario(p).pipelineOptions.indsph.relaxation == kEyeIndsphRelaxation);
-  const SolveRecord engine = stepTinyEye(SolverName::kIndsph, 1e-4, 120, 60, 0.5);
-  const SolveRecord eye = stepTinyEye(SolverName::kIndsph, 1e-4, 120, 60);
+  const SolveRecord engine = stepTinyEye("indsph", 1e-4, 120, 60, 0.5);
+  const SolveRecord eye = stepTinyEye("indsph", 1e-4, 120, 60);
   WARN("steps 60-120 at 0.01 %: relaxation 0.5 "
        << engine.totals.meanIterations() << " it/step, " << 100 * engine.totals.capFraction()
        << " % at the cap, error " << engine.totals.meanDensityError() << "; "
