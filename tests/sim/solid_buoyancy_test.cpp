@@ -1,6 +1,6 @@
 // Floating elastic block (docs/methods/elasticity.md validation 3; Wang et al. 2023 Figure 8: an
 // elastic body of half the fluid's density floats half submerged with INDSPH). Coarse version of
-// tests/sim/solid_buoyancy_bench.cpp, whose 5 mm runs are in docs/methods/elasticity.md.
+// tools/bench/solid_buoyancy_bench.cpp, whose 5 mm runs are in docs/methods/elasticity.md.
 //
 // The water level is the far-field VOLUME level: the number of water particles per far column
 // times d (each particle's lattice cell is d^3; the layered floor's face is y = 0). In the bench

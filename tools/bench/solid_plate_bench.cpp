@@ -12,7 +12,7 @@
 #include <cstdlib>
 #include <vector>
 
-#include "solid_fixtures.h"
+#include "tests/sim/solid_fixtures.h"
 
 using namespace sim;
 using namespace sim::testing;

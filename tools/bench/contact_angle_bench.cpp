@@ -33,7 +33,7 @@
 #include <string>
 #include <vector>
 
-#include "interface_sessile.h"
+#include "tests/sim/interface_sessile.h"
 
 using namespace sim;
 

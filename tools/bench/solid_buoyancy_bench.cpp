@@ -26,8 +26,8 @@
 #include <utility>
 #include <vector>
 
-#include "scene_fixtures.h"
-#include "solid_fixtures.h"
+#include "tests/sim/scene_fixtures.h"
+#include "tests/sim/solid_fixtures.h"
 
 using namespace sim;
 

@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "scene_fixtures.h"
 #include "sim/effects/viscosity_weiler2018.h"
+#include "tests/sim/scene_fixtures.h"
 
 using namespace sim;
 

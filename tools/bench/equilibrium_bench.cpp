@@ -17,7 +17,7 @@
 
 #include "sim/equilibrium/threshold_dynamics_xu2017.h"
 #include "sim/equilibrium/wall_oil.h"
-#include "young_laplace_sphere.h"
+#include "tests/sim/young_laplace_sphere.h"
 
 using namespace sim;
 using namespace sim::equilibrium;

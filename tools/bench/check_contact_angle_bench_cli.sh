@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The contact angle benchmark's command line (tests/sim/contact_angle_bench.cpp): bad options exit 2
+# The contact angle benchmark's command line (tools/bench/contact_angle_bench.cpp): bad options exit 2
 # naming the option and the accepted range, an unwritable folder exits 1 before any run, --help
 # exits 0. No run is started, so this takes a fraction of a second.
 set -u

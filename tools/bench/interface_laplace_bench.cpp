@@ -19,9 +19,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "bench_options.h"
-#include "interface_fixtures.h"
 #include "sim/measure/droplet_pressure_jump.h"
+#include "tests/sim/interface_fixtures.h"
+#include "tools/bench/bench_options.h"
 
 using namespace sim;
 

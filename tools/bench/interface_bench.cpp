@@ -39,18 +39,18 @@
 #include <numbers>
 #include <vector>
 
-#include "bench_options.h"
-#include "interface_fixtures.h"
-#include "interface_meniscus.h"
-#include "interface_oscillation.h"
-#include "interface_ridge.h"
-#include "interface_sessile.h"
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/effects/wall_adhesion_young.h"
 #include "sim/fluid/density.h"
 #include "sim/measure/droplet_pressure_jump.h"
 #include "sim/measure/sessile_contact_angle.h"
 #include "sim/measure/wall_nearest_material.h"
+#include "tests/sim/interface_fixtures.h"
+#include "tests/sim/interface_meniscus.h"
+#include "tests/sim/interface_oscillation.h"
+#include "tests/sim/interface_ridge.h"
+#include "tests/sim/interface_sessile.h"
+#include "tools/bench/bench_options.h"
 
 using namespace sim;
 
