@@ -265,11 +265,11 @@ int runAccuracy(const AccuracyOptions& o) {
     std::vector<AccuracyRun> runs;
     std::string solver;
     const std::size_t total = spacings.size() * tolerances.size();
-    // The postures' equilibria, on the coarsest scenario (they do not depend on the spacing).
+    // The postures' equilibria, on the coarsest scenario (they do not depend on the spacing), as
+    // assembled: where the fluid starts does not enter them, so the start is not solved again.
     protocols::Protocol coarsest = protocol;
     coarsest.accuracy.particleSpacing.value = spacings.front();
-    const Equilibria equilibria =
-        solveEquilibria(coarsest, protocols::assembleStartingScenario(coarsest));
+    const Equilibria equilibria = solveEquilibria(coarsest, protocols::assembleScenario(coarsest));
     for (const double spacing : spacings)
       for (const double tolerance : tolerances)
         runs.push_back(runOnce(protocol, spacing, tolerance, dir, solver, runs.size() + 1, total));

@@ -99,9 +99,11 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
   for (std::size_t v : fluid)
     potential[v] = -densityDifference * problem.gravity.dot(grid.centre(v));
 
-  // [J/m^3] psi differences below the potential across a hundredth of a voxel are ties: below
-  // what the grid resolves (0 without buoyancy: exact ties only).
-  const double tie = 1e-2 * std::abs(densityDifference) * problem.gravity.norm() * h;
+  // [N/m^3] the oil's weight against the aqueous per volume. psi differences below the potential
+  // across a hundredth of a voxel are ties [J/m^3]: below what the grid resolves (0 without
+  // buoyancy: exact ties only).
+  const double buoyancyWeight = std::abs(densityDifference) * problem.gravity.norm();
+  const double tie = 1e-2 * buoyancyWeight * h;
 
   EquilibriumSolution out;
   out.grid = grid;
@@ -160,8 +162,7 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
     out.oilVolume = oilUnits * dV;
   }
   out.cavityVolume = cavityUnits * dV;
-  const double weightPerArea = std::abs(densityDifference) * problem.gravity.norm();  // [N/m^3]
-  if (weightPerArea > 0.0) out.capillaryLength = std::sqrt(problem.tension / weightPerArea);
+  if (buoyancyWeight > 0.0) out.capillaryLength = std::sqrt(problem.tension / buoyancyWeight);
   return out;
 }
 
