@@ -4,7 +4,7 @@
 // equilibrium_bench.csv to --out. A benchmark, not a test (not registered with CTest).
 //
 //   sim_equilibrium_bench [--voxels 0.5,0.4,0.3] [--angles 18,40,90,140] [--fills 0.8,0.9]
-//                         [--out DIR]
+//                         [--smoothing 1.5] [--out DIR]
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -44,6 +44,7 @@ std::vector<double> numbers(const std::string& text) {
 
 int main(int argc, char** argv) {
   std::vector<double> voxels{0.5, 0.4, 0.3}, angles{18, 40, 90, 140}, fills{0.8, 0.9};
+  double smoothing = ThresholdDynamicsOptions{}.finalSmoothing;  // [voxels] final sqrt(t) / h
   std::filesystem::path out = ".";
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
@@ -54,12 +55,14 @@ int main(int argc, char** argv) {
       angles = numbers(argv[++k]);
     else if (a == "--fills" && value)
       fills = numbers(argv[++k]);
+    else if (a == "--smoothing" && value)
+      smoothing = numbers(argv[++k]).at(0);
     else if (a == "--out" && value)
       out = argv[++k];
     else {
       std::fprintf(stderr,
                    "usage: sim_equilibrium_bench [--voxels MM,...] [--angles DEG,...] "
-                   "[--fills F,...] [--out DIR]\n");
+                   "[--fills F,...] [--smoothing VOXELS] [--out DIR]\n");
       return a == "--help" ? 0 : 2;
     }
   }
@@ -87,7 +90,9 @@ int main(int argc, char** argv) {
         p.contactAngle = rad;
         p.gravity = Vec3(0, 0, -g);
         p.oilFraction = fill;
-        const EquilibriumSolution s = solveEquilibrium(p);
+        ThresholdDynamicsOptions options;
+        options.finalSmoothing = smoothing;
+        const EquilibriumSolution s = solveEquilibrium(p, options);
         const WallOilReader reader(s, rad);
         const int samples = 20000;
         int covered = 0;
