@@ -63,8 +63,8 @@ struct TimedEquilibrium {
   }
   std::string described(const std::string& label) const {
     return fmt::format("'{}' solved here in {} s ({} iterations, {} x {} x {} voxels of {} mm)",
-                       label, protocols::formatNumber(solve.seconds, 3),
-                       solve.solution.iterations, cavity.grid.nx, cavity.grid.ny, cavity.grid.nz,
+                       label, protocols::formatNumber(solve.seconds, 3), solve.solution.iterations,
+                       cavity.grid.nx, cavity.grid.ny, cavity.grid.nz,
                        protocols::formatNumber(voxel * 1e3, 2));
   }
 };
@@ -93,10 +93,11 @@ void printEquilibriumPlan(const protocols::Protocol& protocol, const protocols::
   std::printf("  %-9s %8s %16s %22s\n", "preset", "voxel", "per posture", "schedule (postures)");
   for (const char* preset : {"draft", "standard", "fine"}) {
     const double seconds = t.secondsAt(preset);
-    std::printf("  %-9s %5s mm %16s %16s (%zu)\n", preset,
-                protocols::formatNumber(protocols::equilibriumVoxelSpacing(preset) * 1e3, 2).c_str(),
-                duration(seconds).c_str(),
-                duration(seconds * static_cast<double>(postures)).c_str(), postures);
+    std::printf(
+        "  %-9s %5s mm %16s %16s (%zu)\n", preset,
+        protocols::formatNumber(protocols::equilibriumVoxelSpacing(preset) * 1e3, 2).c_str(),
+        duration(seconds).c_str(), duration(seconds * static_cast<double>(postures)).c_str(),
+        postures);
   }
 }
 

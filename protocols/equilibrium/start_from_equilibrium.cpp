@@ -81,9 +81,8 @@ std::size_t exchangePlaces(Scenario& s, const std::vector<std::size_t>& ranked,
 
 // The note of an applied start: which equilibrium, and what it moved.
 std::string startNote(const Scenario& s, std::size_t posture, const EquilibriumStart& start) {
-  const std::string moved =
-      fmt::format("{} oil particles changed place with aqueous ones ({} s)", start.moved,
-                  formatNumber(start.seconds, 2));
+  const std::string moved = fmt::format("{} oil particles changed place with aqueous ones ({} s)",
+                                        start.moved, formatNumber(start.seconds, 2));
   if (!s.schedule[posture].equilibrium)  // schedule.start = "equilibrium"
     return fmt::format(
         "fluid start: the {} posture's static equilibrium (schedule.start), not a flat fill "
@@ -127,8 +126,8 @@ Scenario assembleStartingScenario(const Protocol& p, const ScenarioOptions& opti
   Scenario s = assembleScenario(p, options);
   if (const std::optional<std::size_t> posture = startingEquilibrium(p, s);
       options.progress && posture)
-    options.progress(
-        fmt::format("placing the fluid at the {} posture's equilibrium", s.schedule[*posture].label));
+    options.progress(fmt::format("placing the fluid at the {} posture's equilibrium",
+                                 s.schedule[*posture].label));
   startFromEquilibrium(p, s);
   return s;
 }

@@ -396,8 +396,7 @@ void ProtocolParser::checkEquilibriumPostures(const Protocol& p) {
                     "depend on what was simulated before it");
       return;
     }
-  if (first != postures.end() && simulated != postures.end() &&
-      p.schedule.start.where.isInFile())
+  if (first != postures.end() && simulated != postures.end() && p.schedule.start.where.isInFile())
     reader_.error(p.schedule.start.where,
                   fmt::format("schedule.start does not apply to a schedule that begins with "
                               "postures at their equilibrium: its first simulated posture ({}) "

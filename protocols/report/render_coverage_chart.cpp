@@ -50,7 +50,7 @@ std::string renderCoverageChart(const ReportInput& input) {
   }
   s << "<text x=\"" << num(kLeft + 0.5 * plotW) << "\" y=\"" << num(kHeight - 6)
     << "\" font-size=\"12\" text-anchor=\"middle\">"
-    << (input.equilibria.empty()      ? "simulated time [s]"
+    << (input.equilibria.empty()     ? "simulated time [s]"
         : isEquilibriumReport(input) ? "postures at equilibrium (one nominal second each)"
                                      : "time [s]: postures at equilibrium one nominal second "
                                        "each, then simulated")

@@ -41,10 +41,9 @@ SolvedEquilibria solveEquilibriumPostures(
     if (!interfaceFolder.empty() && !e.interface.empty())
       meshing::writeMesh(e.interface,
                          (interfaceFolder / fmt::format("interface_{}.ply", k + 1)).string());
-    out.solves.push_back(fmt::format("{}: {} iterations{}, {} s", posture.label,
-                                     e.solution.iterations,
-                                     e.solution.converged ? "" : " (not settled)",
-                                     formatNumber(e.seconds, 3)));
+    out.solves.push_back(
+        fmt::format("{}: {} iterations{}, {} s", posture.label, e.solution.iterations,
+                    e.solution.converged ? "" : " (not settled)", formatNumber(e.seconds, 3)));
     if (progress)
       progress({k, s.schedule.size(), posture.label, e.seconds, out.frames.back().retina().fraction,
                 e.solution.iterations, e.solution.converged});
@@ -67,8 +66,7 @@ std::vector<ReportSetting> equilibriumAccuracyRows(const SolvedEquilibria& e, bo
           ? ReportSetting{"schedule means", "each posture weighted alike",
                           "transients between postures are neglected (one nominal second per "
                           "posture)"}
-          : ReportSetting{"schedule means",
-                          "each posture at equilibrium weighted as one second",
+          : ReportSetting{"schedule means", "each posture at equilibrium weighted as one second",
                           "one nominal second per posture at equilibrium, then the simulated "
                           "postures for their simulated time"},
       {"solves", solves, "stages of sqrt(t) = 6, 3, 1.5 voxels, each until no voxel changes"},

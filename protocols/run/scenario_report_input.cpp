@@ -226,7 +226,8 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
     const ScheduledPosture& posture = s.schedule[k];
     in.postures.push_back({posture.label, t, t + posture.duration,
                            posture.untilSteady ? posture.endedSteady : std::nullopt});
-    if (startsFromEquilibrium(s, k)) in.postures.back().startsFromEquilibriumOf = s.schedule[k - 1].label;
+    if (startsFromEquilibrium(s, k))
+      in.postures.back().startsFromEquilibriumOf = s.schedule[k - 1].label;
     t += posture.duration;
   }
   for (const anatomy::RetinalBreak& br : s.breaks)

@@ -336,9 +336,8 @@ RunSummary ScenarioRun::finish() {
   record();  // the end state (skipped when the last step already wrote it)
   writer_->close();
   const double meanStep =
-      world_.stepCount > 0
-          ? (world_.time - simulatedStart_) / static_cast<double>(world_.stepCount)
-          : 0.0;
+      world_.stepCount > 0 ? (world_.time - simulatedStart_) / static_cast<double>(world_.stepCount)
+                           : 0.0;
   const RunResults results{
       frames_,  lastFractions_, pipeline_.timers().entries(), pipeline_.decisions(), lastTissue_,
       meanStep, state_.solve};

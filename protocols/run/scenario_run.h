@@ -64,7 +64,7 @@ class ScenarioRun {
   std::optional<FrameWriter> writer_;
   std::vector<FrameCoverage> frames_;
   WallOilFractions lastFractions_;
-  TissueMeasures lastTissue_;  // of the last frame
+  TissueMeasures lastTissue_;    // of the last frame
   SolvedEquilibria equilibria_;  // the postures at equilibrium a mixed schedule begins with
   double simulatedStart_ = 0.0;  // [s] schedule time at which the simulation starts
   std::vector<sim::Vec3> fluidPositions_;

@@ -137,8 +137,8 @@ TEST_CASE("Equilibrium schedules: protocol errors name the key", "[unit][equilib
   CHECK(errorOf(eyeProtocol(posture("upright", "1 s") + posture("supine", "1 s"))).empty());
   // An equilibrium after a simulated posture: refused at that posture's duration (line 17: eight
   // lines before the postures, then three per posture), naming both postures and the fix.
-  const std::string late = errorOf(
-      eyeProtocol(posture("upright") + posture("supine", "10 s") + posture("face-down")));
+  const std::string late =
+      errorOf(eyeProtocol(posture("upright") + posture("supine", "10 s") + posture("face-down")));
   INFO(late);
   CHECK(late.find("eq.toml:17:") != std::string::npos);
   CHECK(late.find("posture 3 (face-down) asks for its equilibrium after the simulated posture 2 "

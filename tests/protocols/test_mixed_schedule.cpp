@@ -91,10 +91,10 @@ TEST_CASE("A simulated posture after postures at equilibrium starts from the las
           "[unit][equilibrium]") {
   // Upright then supine at equilibrium, then upright simulated: its fluid must start at the
   // supine equilibrium (the posture before it), not at the upright one (the schedule's first).
-  const Protocol mixed = parseProtocolText(
-      eyeProtocol(posture("upright", "equilibrium") + posture("supine", "equilibrium") +
-                  posture("upright", "10 ms")),
-      "mixed.toml");
+  const Protocol mixed =
+      parseProtocolText(eyeProtocol(posture("upright", "equilibrium") +
+                                    posture("supine", "equilibrium") + posture("upright", "10 ms")),
+                        "mixed.toml");
   Scenario s = assembleStartingScenario(mixed);
   REQUIRE(startingEquilibrium(mixed, s) == std::size_t{1});
   const std::vector<double> supine = startReading("supine");
@@ -144,8 +144,8 @@ TEST_CASE("tamponade run: a mixed schedule's outputs, resumed bit-identically",
   INFO(whole.output);
   REQUIRE(whole.exitCode == 0);
   CHECK(whole.output.find("posture 1/2 (supine): equilibrium in") != std::string::npos);
-  for (const char* f : {"frames.h5", "report.html", "coverage.csv", "summary.json",
-                        "interface_1.ply"})
+  for (const char* f :
+       {"frames.h5", "report.html", "coverage.csv", "summary.json", "interface_1.ply"})
     CHECK(fs::exists(dir / "a" / f));
 
   const auto json = nlohmann::json::parse(tamponade_test::readText(dir / "a" / "summary.json"));
@@ -197,8 +197,7 @@ TEST_CASE("tamponade run: a mixed schedule's outputs, resumed bit-identically",
   const auto plan = tamponade_test::runTamponade("plan mixed.toml", dir);
   INFO(plan.output);
   CHECK(plan.exitCode == 0);
-  CHECK(plan.output.find("the schedule begins with 1 posture at equilibrium") !=
-        std::string::npos);
+  CHECK(plan.output.find("the schedule begins with 1 posture at equilibrium") != std::string::npos);
   CHECK(plan.output.find("equilibria   d [mm]   simulation        total") != std::string::npos);
   fs::remove_all(dir);
 }
