@@ -23,6 +23,11 @@ std::size_t leadingEquilibria(const Scenario& s) {
   return static_cast<std::size_t>(simulated - s.schedule.begin());
 }
 
+std::size_t equilibriaBeforeSimulation(const Scenario& s) {
+  const std::size_t leading = leadingEquilibria(s);
+  return leading < s.schedule.size() ? leading : 0;
+}
+
 double equilibriumVoxelSpacing(const std::string& preset) {
   if (preset == "fine") return 0.3e-3;
   if (preset == "standard") return 0.4e-3;

@@ -103,9 +103,10 @@ void renderSimulatedHeadline(const ReportInput& in, std::ostringstream& s) {
   s << "<p>Over "
     << (in.incomplete ? "the part of the schedule simulated (" : "the whole schedule (");
   if (atEquilibrium > 0 && atEquilibrium < in.postures.size())
-    s << atEquilibrium << (atEquilibrium == 1 ? " posture" : " postures")
-      << " at equilibrium, one nominal second each, then "
-      << formatNumber(in.frames.back().time - in.postures[atEquilibrium].start, 4)
+    s << atEquilibrium
+      << (atEquilibrium == 1 ? " posture at equilibrium as one nominal second"
+                             : " postures at equilibrium, one nominal second each")
+      << ", then " << formatNumber(in.frames.back().time - in.postures[atEquilibrium].start, 4)
       << " s simulated";
   else
     s << formatNumber(in.summary.duration, 4) << " s simulated";

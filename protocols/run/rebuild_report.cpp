@@ -165,7 +165,7 @@ void rebuildReport(const std::filesystem::path& folder) {
 
   // A mixed schedule's postures at equilibrium are solved again (deterministic, seconds): their
   // frames come before the simulated ones.
-  const std::size_t leading = leadingEquilibria(s);
+  const std::size_t leading = equilibriaBeforeSimulation(s);
   const SolvedEquilibria equilibria =
       leading > 0 ? solveEquilibriumPostures(protocol, s, leading, {}, {}) : SolvedEquilibria{};
   RunResults r;

@@ -86,7 +86,7 @@ void ScenarioRun::open() {
 // (their frames come first; their interfaces are written once) and again on resume, for the
 // report. The simulation starts at the end of their nominal seconds, on the schedule's clock.
 void ScenarioRun::solveLeadingEquilibria() {
-  const std::size_t count = leadingEquilibria(s_);
+  const std::size_t count = equilibriaBeforeSimulation(s_);
   if (count == 0) return;
   equilibria_ = solveEquilibriumPostures(
       protocol_, s_, count, options_.resume ? std::filesystem::path() : options_.outputFolder,
