@@ -6,6 +6,8 @@
 #include <optional>
 #include <string>
 
+#include <fmt/format.h>
+
 #include "anatomy/anatomy_error.h"
 #include "meshing/mesh_error.h"
 #include "protocols/assembly/assemble_scenario.h"
@@ -50,29 +52,75 @@ std::string duration(double seconds) {
   return protocols::formatNumber(seconds / 3600, 3) + " h";
 }
 
-// An equilibrium schedule: one posture solved here and timed, the other presets scaled from it
-// (voxels ~ h^-3, iterations ~ h^-1), beside what simulating a posture would cost instead.
+// One posture's equilibrium solved here and timed; the other presets are scaled from it (voxels
+// ~ h^-3, iterations ~ h^-1).
+struct TimedEquilibrium {
+  double voxel = 0.0;  // [m]
+  protocols::CavityVoxels cavity;
+  protocols::PostureEquilibrium solve;
+  double secondsAt(const char* preset) const {
+    return solve.seconds * std::pow(voxel / protocols::equilibriumVoxelSpacing(preset), 4.0);
+  }
+  std::string described(const std::string& label) const {
+    return fmt::format("'{}' solved here in {} s ({} iterations, {} x {} x {} voxels of {} mm)",
+                       label, protocols::formatNumber(solve.seconds, 3), solve.solution.iterations,
+                       cavity.grid.nx, cavity.grid.ny, cavity.grid.nz,
+                       protocols::formatNumber(voxel * 1e3, 2));
+  }
+};
+
+TimedEquilibrium solveTimed(const protocols::Protocol& protocol,
+                            const protocols::Scenario& scenario, std::size_t posture) {
+  TimedEquilibrium t;
+  t.voxel = protocols::equilibriumVoxelSpacing(scenario.accuracy.preset);
+  t.cavity = protocols::voxelizeCavity(scenario, t.voxel);
+  t.solve = protocols::solvePostureEquilibrium(scenario, t.cavity, protocol.tamponade.fill.value,
+                                               scenario.schedule[posture].gravity);
+  return t;
+}
+
+// An equilibrium schedule: one posture solved here and timed, beside what simulating a posture
+// would cost instead.
 void printEquilibriumPlan(const protocols::Protocol& protocol, const protocols::Scenario& scenario,
                           const protocols::ScenarioPlan& plan) {
-  const double voxel = protocols::equilibriumVoxelSpacing(scenario.accuracy.preset);
-  const protocols::CavityVoxels cavity = protocols::voxelizeCavity(scenario, voxel);
-  const protocols::PostureEquilibrium e = protocols::solvePostureEquilibrium(
-      scenario, cavity, protocol.tamponade.fill.value, scenario.schedule.front().gravity);
+  const TimedEquilibrium t = solveTimed(protocol, scenario, 0);
   const std::size_t postures = scenario.schedule.size();
   std::printf(
       "\nevery posture asks for its static equilibrium (docs/methods/equilibrium.md): the "
-      "estimate above is what simulating %s of nominal hold would cost; '%s' solved here in "
-      "%s s (%d iterations, %d x %d x %d voxels of %s mm)\n",
-      duration(plan.simulatedDuration).c_str(), scenario.schedule.front().label.c_str(),
-      protocols::formatNumber(e.seconds, 3).c_str(), e.solution.iterations, cavity.grid.nx,
-      cavity.grid.ny, cavity.grid.nz, protocols::formatNumber(voxel * 1e3, 2).c_str());
+      "estimate above is what simulating %s of nominal hold would cost; %s\n",
+      duration(plan.simulatedDuration).c_str(),
+      t.described(scenario.schedule.front().label).c_str());
   std::printf("  %-9s %8s %16s %22s\n", "preset", "voxel", "per posture", "schedule (postures)");
   for (const char* preset : {"draft", "standard", "fine"}) {
-    const double h = protocols::equilibriumVoxelSpacing(preset);
-    const double seconds = e.seconds * std::pow(voxel / h, 4.0);
-    std::printf("  %-9s %5s mm %16s %16s (%zu)\n", preset,
-                protocols::formatNumber(h * 1e3, 2).c_str(), duration(seconds).c_str(),
-                duration(seconds * static_cast<double>(postures)).c_str(), postures);
+    const double seconds = t.secondsAt(preset);
+    std::printf(
+        "  %-9s %5s mm %16s %16s (%zu)\n", preset,
+        protocols::formatNumber(protocols::equilibriumVoxelSpacing(preset) * 1e3, 2).c_str(),
+        duration(seconds).c_str(), duration(seconds * static_cast<double>(postures)).c_str(),
+        postures);
+  }
+}
+
+// A mixed schedule: its postures at equilibrium (the last one solved here and timed) and the
+// simulation after them, per preset side by side.
+void printMixedPlan(const protocols::Protocol& protocol, const protocols::Scenario& scenario,
+                    const protocols::ScenarioPlan& plan, std::size_t leading) {
+  const TimedEquilibrium t = solveTimed(protocol, scenario, leading - 1);
+  std::printf(
+      "\nthe schedule begins with %zu posture%s at equilibrium (docs/methods/equilibrium.md), "
+      "then simulates %s starting from the %s equilibrium (the estimate above); %s\n",
+      leading, leading == 1 ? "" : "s", duration(plan.simulatedDuration).c_str(),
+      scenario.schedule[leading - 1].label.c_str(),
+      t.described(scenario.schedule[leading - 1].label).c_str());
+  std::printf("  %-9s %8s %16s %8s %12s %12s\n", "preset", "voxel", "equilibria", "d [mm]",
+              "simulation", "total");
+  for (const protocols::PresetEstimate& e : plan.presets) {
+    const double equilibria = t.secondsAt(e.preset.c_str()) * static_cast<double>(leading);
+    std::printf(
+        "  %-9s %5s mm %16s %8s %12s %12s\n", e.preset.c_str(),
+        protocols::formatNumber(protocols::equilibriumVoxelSpacing(e.preset) * 1e3, 2).c_str(),
+        duration(equilibria).c_str(), protocols::formatNumber(e.particleSpacing * 1e3, 3).c_str(),
+        duration(e.seconds).c_str(), duration(equilibria + e.seconds).c_str());
   }
 }
 
@@ -192,7 +240,10 @@ int runPlan(Args args) {
                   protocols::formatNumber(e.particleSpacing * 1e3, 3).c_str(), e.particles,
                   protocols::formatNumber(e.timeStep, 3).c_str(), e.steps,
                   duration(e.seconds).c_str());
-    if (protocols::isEquilibriumSchedule(scenario)) printEquilibriumPlan(protocol, scenario, plan);
+    if (protocols::isEquilibriumSchedule(scenario))
+      printEquilibriumPlan(protocol, scenario, plan);
+    else if (const std::size_t leading = protocols::leadingEquilibria(scenario); leading > 0)
+      printMixedPlan(protocol, scenario, plan, leading);
     return 0;
   } catch (const protocols::ProtocolError& e) {
     return printProtocolError(e);

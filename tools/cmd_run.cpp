@@ -98,20 +98,24 @@ extern "C" void onSignal(int signalNumber) {
   gStop.store(true);
 }
 
+// One line per posture at its equilibrium (of an equilibrium schedule, or those a mixed one
+// begins with).
+void printEquilibriumProgress(const protocols::EquilibriumProgress& p) {
+  std::printf(
+      "posture %zu/%zu (%s): equilibrium in %.2f s (%d iterations%s), retina %s "
+      "covered\n",
+      p.posture + 1, p.postures, p.label.c_str(), p.seconds, p.iterations,
+      p.converged ? "" : ", not settled", protocols::formatPercent(p.retinaCoverage).c_str());
+  std::fflush(stdout);
+}
+
 // A schedule of equilibrium postures: one line per posture, then the report.
 int runEquilibrium(const protocols::Protocol& protocol, protocols::Scenario& scenario,
                    const std::filesystem::path& folder) {
   protocols::RunOptions run;
   run.outputFolder = folder;
-  const protocols::RunSummary summary = protocols::runEquilibriumSchedule(
-      protocol, scenario, run, [](const protocols::EquilibriumProgress& p) {
-        std::printf(
-            "posture %zu/%zu (%s): equilibrium in %.2f s (%d iterations%s), retina %s "
-            "covered\n",
-            p.posture + 1, p.postures, p.label.c_str(), p.seconds, p.iterations,
-            p.converged ? "" : ", not settled", protocols::formatPercent(p.retinaCoverage).c_str());
-        std::fflush(stdout);
-      });
+  const protocols::RunSummary summary =
+      protocols::runEquilibriumSchedule(protocol, scenario, run, printEquilibriumProgress);
   std::printf(
       "equilibria finished in %.1f s; mean retinal coverage %s over the schedule\noutput: %s\n",
       summary.wallSeconds, protocols::formatPercent(summary.retinaCoverage).c_str(),
@@ -212,6 +216,7 @@ int runRun(Args args) {
       run.accuracyOverride =
           std::string(protocols::kAccuracyPresetNames[static_cast<std::size_t>(*options.accuracy)]);
     run.progress = [&](const protocols::RunProgress& p) { printer(p); };
+    run.equilibriumProgress = printEquilibriumProgress;
     const protocols::RunSummary summary = protocols::runScenario(protocol, scenario, run);
     printer.finish();
     if (summary.stopped) {

@@ -17,6 +17,17 @@ bool isEquilibriumSchedule(const Scenario& s) {
                      [](const ScheduledPosture& p) { return p.equilibrium; });
 }
 
+std::size_t leadingEquilibria(const Scenario& s) {
+  const auto simulated = std::find_if(s.schedule.begin(), s.schedule.end(),
+                                      [](const ScheduledPosture& p) { return !p.equilibrium; });
+  return static_cast<std::size_t>(simulated - s.schedule.begin());
+}
+
+std::size_t equilibriaBeforeSimulation(const Scenario& s) {
+  const std::size_t leading = leadingEquilibria(s);
+  return leading < s.schedule.size() ? leading : 0;
+}
+
 double equilibriumVoxelSpacing(const std::string& preset) {
   if (preset == "fine") return 0.3e-3;
   if (preset == "standard") return 0.4e-3;

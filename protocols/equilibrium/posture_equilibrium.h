@@ -16,6 +16,16 @@ namespace protocols {
 // Whether every posture of the schedule asks for its equilibrium.
 bool isEquilibriumSchedule(const Scenario& scenario);
 
+// How many postures at their equilibrium the schedule begins with (a protocol puts them before
+// the simulated ones): 0 for a simulated schedule, all of them for an equilibrium schedule, in
+// between for a mixed one, whose first simulated posture starts from the last of them.
+std::size_t leadingEquilibria(const Scenario& scenario);
+
+// The postures at equilibrium a mixed schedule begins with, which a run solves before it
+// simulates the rest; 0 for a simulated schedule and for an equilibrium schedule (a runner asked
+// to simulate one, as `tamponade bench accuracy` does, holds each posture its nominal second).
+std::size_t equilibriaBeforeSimulation(const Scenario& scenario);
+
 // Voxel spacing per accuracy preset [m] (the solver's sqrt(t) is 1.5 voxels). Measured in a
 // 12 mm sphere against Young-Laplace: docs/methods/equilibrium.md.
 double equilibriumVoxelSpacing(const std::string& preset);

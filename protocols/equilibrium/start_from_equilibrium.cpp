@@ -6,6 +6,8 @@
 #include <numeric>
 #include <vector>
 
+#include <fmt/format.h>
+
 #include "protocols/assembly/assemble_scenario.h"
 #include "protocols/equilibrium/posture_equilibrium.h"
 #include "protocols/report/report_format.h"
@@ -36,12 +38,14 @@ double oilShareAt(const sim::equilibrium::EquilibriumSolution& e, const sim::Vec
 }
 
 // Fluid particles (aqueous and oil, not tissue) ranked from most to least oil-like.
+// `gravity` [m/s^2] is the equilibrium posture's.
 std::vector<std::size_t> rankByOilShare(const Scenario& s,
-                                        const sim::equilibrium::EquilibriumSolution& e) {
+                                        const sim::equilibrium::EquilibriumSolution& e,
+                                        const sim::Vec3& gravity) {
   const sim::DynamicParticles& particles = s.world->particles;
   const FluidPhase& aqueous = s.phases[0];
   const FluidPhase& oil = s.phases[1];
-  const sim::Vec3 down = s.schedule.front().gravity.normalized();
+  const sim::Vec3 down = gravity.normalized();
   const sim::Vec3 oilSide = oil.density < aqueous.density ? sim::Vec3(-down) : down;
   std::vector<std::size_t> fluid;
   std::vector<double> score(particles.size(), 0.0);
@@ -75,36 +79,55 @@ std::size_t exchangePlaces(Scenario& s, const std::vector<std::size_t>& ranked,
   return std::min(aqueousInOilPlace.size(), oilInAqueousPlace.size());
 }
 
+// The note of an applied start: which equilibrium, and what it moved.
+std::string startNote(const Scenario& s, std::size_t posture, const EquilibriumStart& start) {
+  const std::string moved = fmt::format("{} oil particles changed place with aqueous ones ({} s)",
+                                        start.moved, formatNumber(start.seconds, 2));
+  if (!s.schedule[posture].equilibrium)  // schedule.start = "equilibrium"
+    return fmt::format(
+        "fluid start: the {} posture's static equilibrium (schedule.start), not a flat fill "
+        "plane: {}",
+        s.schedule[posture].label, moved);
+  return fmt::format(
+      "fluid start: {} is simulated from the {} posture's static equilibrium, not a flat fill "
+      "plane: {}",
+      s.schedule[posture + 1].label, s.schedule[posture].label, moved);
+}
+
 }  // namespace
+
+std::optional<std::size_t> startingEquilibrium(const Protocol& p, const Scenario& s) {
+  if (s.phases[0].count == 0 || s.phases[1].count == 0 || isEquilibriumSchedule(s))
+    return std::nullopt;
+  if (const std::size_t leading = leadingEquilibria(s); leading > 0) return leading - 1;
+  if (p.schedule.start.value == StartName::kEquilibrium) return 0;
+  return std::nullopt;
+}
 
 EquilibriumStart startFromEquilibrium(const Protocol& p, Scenario& s) {
   EquilibriumStart result;
-  if (p.schedule.start.value != StartName::kEquilibrium || isEquilibriumSchedule(s) ||
-      s.phases[0].count == 0 || s.phases[1].count == 0)
-    return result;
+  const std::optional<std::size_t> posture = startingEquilibrium(p, s);
+  if (!posture) return result;
   const auto start = std::chrono::steady_clock::now();
+  const sim::Vec3 gravity = s.schedule[*posture].gravity;
   const CavityVoxels cavity = voxelizeCavity(s, equilibriumVoxelSpacing(s.accuracy.preset));
-  const PostureEquilibrium e =
-      solvePostureEquilibrium(s, cavity, p.tamponade.fill.value, s.schedule.front().gravity);
-  result.moved = exchangePlaces(s, rankByOilShare(s, e.solution), s.phases[1].count);
+  const PostureEquilibrium e = solvePostureEquilibrium(s, cavity, p.tamponade.fill.value, gravity);
+  result.moved = exchangePlaces(s, rankByOilShare(s, e.solution, gravity), s.phases[1].count);
   s.world->updateNeighbors();
   result.applied = true;
   result.iterations = e.solution.iterations;
   result.converged = e.solution.converged;
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  s.notes.push_back("fluid start: the " + s.schedule.front().label +
-                    " posture's static equilibrium (schedule.start), not a flat fill plane: " +
-                    std::to_string(result.moved) +
-                    " oil particles changed place with aqueous "
-                    "ones (" +
-                    formatNumber(result.seconds, 2) + " s)");
+  s.notes.push_back(startNote(s, *posture, result));
   return result;
 }
 
 Scenario assembleStartingScenario(const Protocol& p, const ScenarioOptions& options) {
   Scenario s = assembleScenario(p, options);
-  if (options.progress && p.schedule.start.value == StartName::kEquilibrium)
-    options.progress("placing the fluid at the first posture's equilibrium");
+  if (const std::optional<std::size_t> posture = startingEquilibrium(p, s);
+      options.progress && posture)
+    options.progress(fmt::format("placing the fluid at the {} posture's equilibrium",
+                                 s.schedule[*posture].label));
   startFromEquilibrium(p, s);
   return s;
 }

@@ -1,8 +1,11 @@
 // schedule.start = "equilibrium": a simulated schedule's fluid starts where the first posture's
 // static equilibrium puts it, instead of above a flat fill plane, so the run spends its time on
-// what is dynamic (the posture changes) rather than on relaxing the fill
+// what is dynamic (the posture changes) rather than on relaxing the fill. A schedule that begins
+// with postures at their equilibrium starts its first simulated posture from the last of them
 // (docs/methods/equilibrium.md, "Starting a simulation from an equilibrium").
 #pragma once
+
+#include <optional>
 
 #include "protocols/format/protocol.h"
 #include "protocols/scenario/scenario.h"
@@ -16,6 +19,11 @@ struct EquilibriumStart {
   int iterations = 0;     // of the equilibrium solve
   bool converged = false;
 };
+
+// The posture whose equilibrium the simulated fluid starts from: in a mixed schedule the last
+// posture at its equilibrium before the first simulated one; with schedule.start = "equilibrium"
+// the first posture; none for a fill-plane start, an equilibrium schedule or one phase.
+std::optional<std::size_t> startingEquilibrium(const Protocol& protocol, const Scenario& scenario);
 
 // The fluid particles keep their lattice positions, their number per phase, masses and
 // materials; what changes is which positions hold oil: the oil particles take the positions with

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <tuple>
 
+#include <fmt/format.h>
+
 #include "protocols/format/edit_distance.h"
 #include "protocols/format/parse_protocol_document.h"
 #include "protocols/format/stage_names.h"
@@ -366,26 +368,41 @@ void ProtocolParser::readSchedule(const Table& root, Protocol& p) {
   }
 }
 
-// An equilibrium schedule: every posture or none (a simulated posture does not start from an
-// equilibrium posture yet; schedule.start = "equilibrium" starts it from its own), and a contact
-// angle with a contact line (0 and 180 deg are complete wetting).
+// Equilibrium postures come first: a schedule may begin with postures at their static
+// equilibrium and continue with simulated ones, the first of which starts from the equilibrium
+// just before it (protocols/equilibrium/start_from_equilibrium.h). An equilibrium after a
+// simulated posture is refused: it does not depend on what was simulated, and a run that turned
+// from stepping particles back to solving would need its checkpoints to hold both. Where the
+// schedule begins with equilibria, schedule.start has nothing to choose. Any equilibrium needs a
+// contact angle with a contact line (0 and 180 deg are complete wetting).
 void ProtocolParser::checkEquilibriumPostures(const Protocol& p) {
   const auto& postures = p.schedule.postures;
   const auto first = std::find_if(postures.begin(), postures.end(),
                                   [](const Posture& x) { return x.equilibrium; });
   const bool startsAtEquilibrium = p.schedule.start.value == StartName::kEquilibrium;
   if (first == postures.end() && !startsAtEquilibrium) return;
-  if (first != postures.end())
-    for (const Posture& posture : postures)
-      if (!posture.equilibrium) {
-        reader_.error(posture.duration.where.isInFile() ? posture.duration.where : posture.where,
-                      "the schedule mixes duration = \"equilibrium\" (" + first->label.value +
-                          ") with a simulated posture (" + posture.label.value + ")",
-                      "give every posture duration = \"equilibrium\", or none: a simulated "
-                      "posture cannot start from an equilibrium posture (schedule.start = "
-                      "\"equilibrium\" starts the first one from its own equilibrium)");
-        return;
-      }
+  const auto simulated = std::find_if(postures.begin(), postures.end(),
+                                      [](const Posture& x) { return !x.equilibrium; });
+  for (auto later = simulated; later != postures.end(); ++later)
+    if (later->equilibrium) {
+      reader_.error(later->duration.where.isInFile() ? later->duration.where : later->where,
+                    fmt::format("posture {} ({}) asks for its equilibrium after the simulated "
+                                "posture {} ({})",
+                                later - postures.begin() + 1, later->label.value,
+                                simulated - postures.begin() + 1, simulated->label.value),
+                    "move the postures with duration = \"equilibrium\" before the simulated "
+                    "ones (the first simulated posture then starts from the equilibrium before "
+                    "it), or compute this equilibrium in a protocol of its own: it does not "
+                    "depend on what was simulated before it");
+      return;
+    }
+  if (first != postures.end() && simulated != postures.end() && p.schedule.start.where.isInFile())
+    reader_.error(p.schedule.start.where,
+                  fmt::format("schedule.start does not apply to a schedule that begins with "
+                              "postures at their equilibrium: its first simulated posture ({}) "
+                              "starts from the equilibrium of the posture before it ({})",
+                              simulated->label.value, (simulated - 1)->label.value),
+                  "remove schedule.start");
   const std::string needs = first != postures.end()
                                 ? "the equilibrium of duration = \"equilibrium\""
                                 : "schedule.start = \"equilibrium\"";

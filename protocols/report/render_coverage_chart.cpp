@@ -50,8 +50,10 @@ std::string renderCoverageChart(const ReportInput& input) {
   }
   s << "<text x=\"" << num(kLeft + 0.5 * plotW) << "\" y=\"" << num(kHeight - 6)
     << "\" font-size=\"12\" text-anchor=\"middle\">"
-    << (input.equilibria.empty() ? "simulated time [s]"
-                                 : "postures at equilibrium (one nominal second each)")
+    << (input.equilibria.empty()     ? "simulated time [s]"
+        : isEquilibriumReport(input) ? "postures at equilibrium (one nominal second each)"
+                                     : "time [s]: postures at equilibrium one nominal second "
+                                       "each, then simulated")
     << "</text>\n";
   s << "<rect x=\"" << num(kLeft) << "\" y=\"" << num(kTop) << "\" width=\"" << num(plotW)
     << "\" height=\"" << num(plotH) << "\" fill=\"none\" stroke=\"#333333\"/>\n";

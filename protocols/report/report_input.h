@@ -23,6 +23,9 @@ struct ReportPosture {
   // at the posture's static equilibrium when the equilibrium solver can give one [1].
   std::optional<double> retinaAtEnd = std::nullopt;
   std::optional<double> equilibriumRetina = std::nullopt;
+  // A simulated posture right after a posture at its equilibrium (a mixed schedule): that
+  // posture's label; the simulation starts from its equilibrium.
+  std::optional<std::string> startsFromEquilibriumOf = std::nullopt;
 };
 
 struct ReportStage {
@@ -97,12 +100,19 @@ struct ReportInput {
   // volume change; one line ("tissue rigid (estimate ...)") when no tissue is elastic.
   std::vector<std::string> tissue;
   // Postures at their static equilibrium, in schedule order; empty for a simulated run. The
-  // report then gives each posture's coverage and fundus map instead of a time course.
+  // report gives each one's coverage and fundus map; when every posture is one
+  // (isEquilibriumReport) instead of a time course, else (a mixed schedule, whose equilibria
+  // come first) beside the simulated postures' time course.
   std::vector<ReportEquilibrium> equilibria;
   // A run read back after it was stopped (Ctrl-C, a kill) before the end of its schedule: the
   // report's headline says so, and every mean is over the part simulated only.
   bool incomplete = false;
   double scheduledDuration = 0.0;  // [s] the schedule's full length (set when incomplete)
 };
+
+// Whether every posture of the report is at its static equilibrium: nothing was simulated.
+inline bool isEquilibriumReport(const ReportInput& in) {
+  return !in.equilibria.empty() && in.equilibria.size() >= in.postures.size();
+}
 
 }  // namespace protocols

@@ -95,6 +95,8 @@ Json posturesOf(const ReportInput& in) {
       posture["retina_coverage_at_end"] = optionalNumber(p.retinaAtEnd);
       posture["equilibrium_retina_coverage"] = optionalNumber(p.equilibriumRetina);
     }
+    if (p.startsFromEquilibriumOf)
+      posture["starts_from_equilibrium_of"] = *p.startsFromEquilibriumOf;
     postures.push_back(posture);
   }
   return postures;

@@ -96,6 +96,29 @@ void renderUnsteadyPosture(const ReportPosture& p, std::ostringstream& s) {
   s << "</p>\n";
 }
 
+// The headline of a run that simulated: the schedule's means and the end; a mixed schedule says
+// how its postures at equilibrium enter the means.
+void renderSimulatedHeadline(const ReportInput& in, std::ostringstream& s) {
+  const std::size_t atEquilibrium = in.equilibria.size();
+  s << "<p>Over "
+    << (in.incomplete ? "the part of the schedule simulated (" : "the whole schedule (");
+  if (atEquilibrium > 0 && atEquilibrium < in.postures.size())
+    s << atEquilibrium
+      << (atEquilibrium == 1 ? " posture at equilibrium as one nominal second"
+                             : " postures at equilibrium, one nominal second each")
+      << ", then " << formatNumber(in.frames.back().time - in.postures[atEquilibrium].start, 4)
+      << " s simulated";
+  else
+    s << formatNumber(in.summary.duration, 4) << " s simulated";
+  s << ") oil covered on average <strong>" << formatPercent(in.summary.regions[0])
+    << "</strong> of the retina; at the end " << formatPercent(in.frames.back().retina().fraction)
+    << ".";
+  for (std::size_t b = 0; b < in.breaks.size() && b < in.summary.breakTimeCovered.size(); ++b)
+    s << " Break " << escapeXml(in.breaks[b].name) << " was covered "
+      << formatPercent(in.summary.breakTimeCovered[b]) << " of the time.";
+  s << "</p>\n";
+}
+
 }  // namespace
 
 std::string renderReportHtml(const ReportInput& in) {
@@ -115,7 +138,8 @@ std::string renderReportHtml(const ReportInput& in) {
 
   s << "<h2>Scenario</h2>\n";
   for (const auto& p : in.scenario) s << "<p>" << escapeXml(p) << "</p>\n";
-  const bool equilibrium = !in.equilibria.empty();
+  const bool equilibrium = isEquilibriumReport(in);
+  const bool mixed = !equilibrium && !in.equilibria.empty();
   if (equilibrium) {
     s << "<p>Over the schedule's " << in.equilibria.size()
       << " postures at equilibrium (each weighted alike; the transients between postures are "
@@ -124,15 +148,8 @@ std::string renderReportHtml(const ReportInput& in) {
       << formatPercent(in.frames.back().retina().fraction) << ".</p>\n";
     renderEquilibria(in, s);
   } else if (!in.frames.empty()) {
-    s << "<p>Over "
-      << (in.incomplete ? "the part of the schedule simulated (" : "the whole schedule (")
-      << formatNumber(in.summary.duration, 4) << " s simulated) oil covered on average <strong>"
-      << formatPercent(in.summary.regions[0]) << "</strong> of the retina; at the end "
-      << formatPercent(in.frames.back().retina().fraction) << ".";
-    for (std::size_t b = 0; b < in.breaks.size() && b < in.summary.breakTimeCovered.size(); ++b)
-      s << " Break " << escapeXml(in.breaks[b].name) << " was covered "
-        << formatPercent(in.summary.breakTimeCovered[b]) << " of the time.";
-    s << "</p>\n";
+    renderSimulatedHeadline(in, s);
+    if (mixed) renderEquilibria(in, s);
   }
 
   s << "<h2>Oil coverage over time</h2>\n" << renderCoverageChart(in);
@@ -140,7 +157,9 @@ std::string renderReportHtml(const ReportInput& in) {
     s << "<p>Shaded bands are the postures of the schedule, each shown over one nominal second "
          "at its equilibrium.</p>\n";
   else
-    s << "<p>Shaded bands are the postures of the schedule. A wall point counts as oil-covered "
+    s << "<p>Shaded bands are the postures of the schedule"
+      << (mixed ? "; each posture at its equilibrium is shown over one nominal second" : "")
+      << ". A wall point counts as oil-covered "
          "when the SPH-weighted oil fraction of the fluid next to it is at least "
       << formatPercent(kOilCoveredThreshold) << "; a break counts as covered when at least "
       << formatPercent(kBreakCoveredFraction) << " of its area is oil-covered.</p>\n";
@@ -192,7 +211,9 @@ std::string renderReportHtml(const ReportInput& in) {
   }
 
   if (!equilibrium) {
-    s << "<h2>Fundus map of oil coverage</h2>\n" << renderFundusMap(in);
+    ReportInput last = in;  // the map of the last frame, not of an equilibrium
+    last.equilibria.clear();
+    s << "<h2>Fundus map of oil coverage</h2>\n" << renderFundusMap(last);
     s << "<p>The retina unrolled around the posterior pole (azimuthal equidistant projection: "
          "the distance from the centre is the angle from the posterior pole, seen from the "
          "front, superior up). Dots are wall particles at t = "

@@ -13,6 +13,19 @@ namespace protocols {
 
 namespace {
 
+// [s] What a run simulates: the postures that are not at their equilibrium; for an equilibrium
+// schedule, its nominal seconds.
+double simulatedDuration(const Scenario& s) {
+  double t = 0.0;
+  bool simulates = false;
+  for (const ScheduledPosture& p : s.schedule)
+    if (!p.equilibrium) {
+      t += p.duration;
+      simulates = true;
+    }
+  return simulates ? t : s.totalDuration();
+}
+
 // What the scene holds and what its fields and neighbour lists take.
 void describeScene(const Scenario& s, const sim::Pipeline& pipeline, ScenarioPlan& plan) {
   const sim::World& world = *s.world;
@@ -26,7 +39,7 @@ void describeScene(const Scenario& s, const sim::Pipeline& pipeline, ScenarioPla
     return (l.offsets.capacity() + l.indices.capacity()) * sizeof(sim::Index);
   };
   plan.neighborListBytes = listBytes(world.fluidNeighbors()) + listBytes(world.wallNeighbors());
-  plan.simulatedDuration = s.totalDuration();
+  plan.simulatedDuration = simulatedDuration(s);
 #ifdef _OPENMP
   plan.threads = omp_get_max_threads();
 #endif

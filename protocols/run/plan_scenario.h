@@ -62,7 +62,9 @@ struct ScenarioPlan {
   // users see what each effect costs in steps (e.g. the capillary or elastic-wave limit).
   std::vector<std::pair<std::string, double>> stageTimeStepLimits;
   long rejectedSteps = 0;
-  double simulatedDuration = 0.0;         // [s]
+  // [s] the simulated postures' durations; an equilibrium schedule's nominal seconds (what
+  // simulating them would cost, shown beside the solve)
+  double simulatedDuration = 0.0;
   std::array<PresetEstimate, 3> presets;  // draft, standard, fine
 };
 

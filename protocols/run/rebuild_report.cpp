@@ -7,10 +7,12 @@
 #include <sstream>
 
 #include "protocols/assembly/assemble_scenario.h"
+#include "protocols/equilibrium/posture_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/frame_reader.h"
 #include "protocols/io/io_error.h"
 #include "protocols/report/write_report.h"
+#include "protocols/run/equilibrium_postures.h"
 #include "protocols/run/scenario_report_input.h"
 #include "protocols/run/unsteady_postures.h"
 #include "protocols/tissue/tissue_measures.h"
@@ -92,6 +94,33 @@ bool ranWholeSchedule(const FrameReader& reader, std::size_t postures, double la
   return std::find(ended.begin(), ended.end(), static_cast<double>(postures - 1)) != ended.end();
 }
 
+// Every frame's coverage (and tissue state) recomputed from its fluid positions and materials,
+// appended to r.frames; r.lastFractions and r.lastTissue are the last frame's.
+void measureRunFrames(const FrameReader& reader, const Scenario& s, RunResults& r) {
+  std::vector<sim::Vec3> x;
+  std::vector<std::int32_t> ids;
+  const bool tissue = std::find(s.outputFields.begin(), s.outputFields.end(), sim::field::kId) !=
+                          s.outputFields.end() &&
+                      s.retinaSamples.moves();
+  for (const FrameInfo& f : reader.frames()) {
+    const FieldData position = reader.readField(f.index, "fluid", sim::field::kPosition);
+    const FieldData material = reader.readField(f.index, "fluid", sim::field::kMaterial);
+    x.resize(position.rows);
+    for (std::size_t i = 0; i < position.rows; ++i)
+      x[i] = sim::Vec3(position.real(i, 0), position.real(i, 1), position.real(i, 2));
+    if (tissue) ids = reader.readField(f.index, "fluid", sim::field::kId).integers;
+    if (!s.tissues.empty()) {
+      if (!tissue) {
+        ids.resize(x.size());
+        for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<std::int32_t>(i);
+      }
+      r.lastTissue = measureTissues(s, x, ids);
+    }
+    r.lastFractions = measureWallFractions(s, x, material.integers, ids);
+    r.frames.push_back(measureFrameCoverage(s.retina, r.lastFractions, f.time));
+  }
+}
+
 }  // namespace
 
 Protocol loadRunProtocol(const std::filesystem::path& folder, ScenarioOptions& options) {
@@ -134,33 +163,19 @@ void rebuildReport(const std::filesystem::path& folder) {
             std::to_string(s.world->walls.size()),
         "rebuild the report with the toolkit version that ran it (" + info.toolkitVersion + ")");
 
+  // A mixed schedule's postures at equilibrium are solved again (deterministic, seconds): their
+  // frames come before the simulated ones.
+  const std::size_t leading = equilibriaBeforeSimulation(s);
+  const SolvedEquilibria equilibria =
+      leading > 0 ? solveEquilibriumPostures(protocol, s, leading, {}, {}) : SolvedEquilibria{};
   RunResults r;
-  std::vector<sim::Vec3> x;
-  std::vector<std::int32_t> ids;
-  const bool tissue = std::find(s.outputFields.begin(), s.outputFields.end(), sim::field::kId) !=
-                          s.outputFields.end() &&
-                      s.retinaSamples.moves();
-  for (const FrameInfo& f : reader.frames()) {
-    const FieldData position = reader.readField(f.index, "fluid", sim::field::kPosition);
-    const FieldData material = reader.readField(f.index, "fluid", sim::field::kMaterial);
-    x.resize(position.rows);
-    for (std::size_t i = 0; i < position.rows; ++i)
-      x[i] = sim::Vec3(position.real(i, 0), position.real(i, 1), position.real(i, 2));
-    if (tissue) ids = reader.readField(f.index, "fluid", sim::field::kId).integers;
-    if (!s.tissues.empty()) {
-      if (!tissue) {
-        ids.resize(x.size());
-        for (std::size_t i = 0; i < ids.size(); ++i) ids[i] = static_cast<std::int32_t>(i);
-      }
-      r.lastTissue = measureTissues(s, x, ids);
-    }
-    r.lastFractions = measureWallFractions(s, x, material.integers, ids);
-    r.frames.push_back(measureFrameCoverage(s.retina, r.lastFractions, f.time));
-  }
-  if (r.frames.empty())
+  r.frames = equilibria.frames;
+  measureRunFrames(reader, s, r);
+  if (reader.frames().empty())
     throw IoError(h5.string(), "/frames", "the run has no complete frame", "run it again");
   const FrameInfo& lastFrame = reader.frames().back();
-  if (lastFrame.step > 0) r.meanTimeStep = lastFrame.time / static_cast<double>(lastFrame.step);
+  if (lastFrame.step > 0)
+    r.meanTimeStep = (lastFrame.time - equilibria.end) / static_cast<double>(lastFrame.step);
   const SeriesData stages = reader.readSeries("stage_seconds");
   for (std::size_t c = 1; c < stages.columns.size(); ++c)
     r.timers.push_back(
@@ -180,6 +195,7 @@ void rebuildReport(const std::filesystem::path& folder) {
   }
   r.decisions = sim::assemblePipeline(*s.world, s.pipelineOptions).decisions();
   ReportInput in = makeRunReportInput(protocol, s, r);
+  if (leading > 0) addLeadingEquilibria(equilibria, in);
   const double scheduled = s.totalDuration();  // [s]
   if (!ranWholeSchedule(reader, s.schedule.size(), lastFrame.time, scheduled)) {
     in.incomplete = true;

@@ -26,6 +26,7 @@
 #include "protocols/coverage/schedule_coverage.h"
 #include "protocols/format/protocol.h"
 #include "protocols/io/frame_reader.h"
+#include "protocols/run/equilibrium_postures.h"
 #include "protocols/run/pressure_solve_totals.h"
 #include "protocols/run/steady_state.h"
 #include "protocols/scenario/scenario.h"
@@ -50,13 +51,15 @@ struct RunOptions {
   std::string accuracyOverride;          // the preset name given on the command line, recorded for
                                          // `tamponade report DIR` ("" = the protocol's own)
   std::optional<SteadyCriteria> steady;  // "until steady": default steadyCriteriaOf(protocol)
+  // A mixed schedule: called after each of the postures at equilibrium it begins with.
+  std::function<void(const EquilibriumProgress&)> equilibriumProgress;
 };
 
 struct RunSummary {
   bool stopped = false;  // a stop was requested: checkpoint written, no report
   std::size_t frames = 0;
   long steps = 0;
-  double simulatedTime = 0.0;   // [s]
+  double simulatedTime = 0.0;   // [s] (a mixed schedule's postures at equilibrium not included)
   double wallSeconds = 0.0;     // [s]
   double retinaCoverage = 0.0;  // [1] time-weighted mean
   PressureSolveTotals pressureSolve;
@@ -68,6 +71,10 @@ struct RunSummary {
 
 // Runs `scenario` (built from `protocol`). Throws IoError for output problems, SimError when the
 // simulation fails (e.g. a particle escapes the cavity).
+// A mixed schedule (leadingEquilibria(scenario) > 0) first solves the postures at equilibrium it
+// begins with (equilibrium_postures.h; again on resume, for the report) and simulates the rest
+// on the schedule's clock, from the end of their nominal seconds; its fluid starts from the last
+// equilibrium when the scenario was assembled by assembleStartingScenario.
 // Steady postures' durations in the scenario's schedule become what was run, and every ended
 // posture's ScheduledPosture::endedSteady is set (see above).
 RunSummary runScenario(const Protocol& protocol, Scenario& scenario, const RunOptions& options);

@@ -111,6 +111,12 @@ std::string tamponadeSentence(const Protocol& p, const Scenario& s) {
   return fill.str();
 }
 
+// Whether posture `k` is simulated right after a posture at its equilibrium (a mixed schedule):
+// it starts from that equilibrium (protocols/equilibrium/start_from_equilibrium.h).
+bool startsFromEquilibrium(const Scenario& s, std::size_t k) {
+  return k > 0 && !s.schedule[k].equilibrium && s.schedule[k - 1].equilibrium;
+}
+
 std::string scheduleSentence(const Scenario& s) {
   std::ostringstream schedule;
   schedule << "Posture schedule:";
@@ -128,6 +134,8 @@ std::string scheduleSentence(const Scenario& s) {
       schedule << " until steady (reached after " << seconds << ")";
     else
       schedule << " until steady (not reached; stopped at the maximum, " << seconds << ")";
+    if (startsFromEquilibrium(s, k))
+      schedule << ", simulated from the " << s.schedule[k - 1].label << " equilibrium";
   }
   schedule << ".";
   return schedule.str();
@@ -214,9 +222,12 @@ ReportInput makeReportInput(const Protocol& p, const Scenario& s) {
   in.eyeSide = std::string(toString(p.eye.side.value));
   in.scenario = scenarioParagraphs(p, s);
   double t = 0.0;
-  for (const auto& posture : s.schedule) {
+  for (std::size_t k = 0; k < s.schedule.size(); ++k) {
+    const ScheduledPosture& posture = s.schedule[k];
     in.postures.push_back({posture.label, t, t + posture.duration,
                            posture.untilSteady ? posture.endedSteady : std::nullopt});
+    if (startsFromEquilibrium(s, k))
+      in.postures.back().startsFromEquilibriumOf = s.schedule[k - 1].label;
     t += posture.duration;
   }
   for (const anatomy::RetinalBreak& br : s.breaks)

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "protocols/assembly/assemble_scenario.h"
+#include "protocols/equilibrium/posture_equilibrium.h"
 #include "protocols/io/checkpoint.h"
 #include "protocols/io/frame_reader.h"
 #include "protocols/io/io_error.h"
@@ -69,6 +70,7 @@ ScenarioRun::ScenarioRun(const Protocol& protocol, Scenario& scenario, const Run
 
 void ScenarioRun::open() {
   if (!options_.resume) requireStartTimeStep(s_, pipeline_.chooseTimeStep(world_));  // no files yet
+  solveLeadingEquilibria();
   state_.nextFrame = world_.time + interval_;
   if (options_.resume)
     resume();
@@ -78,6 +80,24 @@ void ScenarioRun::open() {
   totalMass_ =
       r.sum(world_.particles.size(), [&](std::size_t i) { return world_.particles.mass[i]; });
   if (!options_.resume) record();
+}
+
+// A mixed schedule: the postures at equilibrium it begins with, solved before the first step
+// (their frames come first; their interfaces are written once) and again on resume, for the
+// report. The simulation starts at the end of their nominal seconds, on the schedule's clock.
+void ScenarioRun::solveLeadingEquilibria() {
+  const std::size_t count = equilibriaBeforeSimulation(s_);
+  if (count == 0) return;
+  equilibria_ = solveEquilibriumPostures(
+      protocol_, s_, count, options_.resume ? std::filesystem::path() : options_.outputFolder,
+      options_.equilibriumProgress);
+  frames_ = equilibria_.frames;
+  simulatedStart_ = equilibria_.end;
+  if (options_.resume) return;  // the checkpoint holds the clock and the posture
+  world_.time = simulatedStart_;
+  state_.posture = count;
+  state_.postureStart = simulatedStart_;
+  state_.nextSample = simulatedStart_;
 }
 
 void ScenarioRun::start() {
@@ -268,7 +288,8 @@ bool ScenarioRun::runPosture(std::size_t k) {
       state_.nextFrame = nextTimeAfter(state_.nextFrame, interval_, world_.time);
     }
     if (options_.progress)
-      options_.progress({world_.time, s_.totalDuration(), world_.stepCount, posture.label});
+      options_.progress({world_.time - simulatedStart_, s_.totalDuration() - simulatedStart_,
+                         world_.stepCount, posture.label});
     bool steady = false;
     if (posture.untilSteady && world_.time >= state_.nextSample) steady = sampleSteadiness();
     if (steady || world_.time >= postureEnd) endPosture(steady);
@@ -300,7 +321,7 @@ RunSummary ScenarioRun::summary(bool stopped) const {
   summary.stopped = stopped;
   summary.frames = frames_.size();
   summary.steps = world_.stepCount;
-  summary.simulatedTime = world_.time;
+  summary.simulatedTime = world_.time - simulatedStart_;
   summary.wallSeconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - wallStart_).count();
   return summary;
@@ -315,11 +336,13 @@ RunSummary ScenarioRun::finish() {
   record();  // the end state (skipped when the last step already wrote it)
   writer_->close();
   const double meanStep =
-      world_.stepCount > 0 ? world_.time / static_cast<double>(world_.stepCount) : 0.0;
+      world_.stepCount > 0 ? (world_.time - simulatedStart_) / static_cast<double>(world_.stepCount)
+                           : 0.0;
   const RunResults results{
       frames_,  lastFractions_, pipeline_.timers().entries(), pipeline_.decisions(), lastTissue_,
       meanStep, state_.solve};
-  const ReportInput in = makeRunReportInput(protocol_, s_, results);
+  ReportInput in = makeRunReportInput(protocol_, s_, results);
+  if (!equilibria_.postures.empty()) addLeadingEquilibria(equilibria_, in);
   if (protocol_.outputs.report.value) writeReport(in, options_.outputFolder);
   RunSummary out = summary(false);
   out.retinaCoverage = in.summary.regions[0];

@@ -35,6 +35,7 @@ class ScenarioRun {
   RunSummary finish();
 
  private:
+  void solveLeadingEquilibria();
   void start();
   void resume();
   void remeasureFrames(const CheckpointState& checkpoint);
@@ -63,7 +64,9 @@ class ScenarioRun {
   std::optional<FrameWriter> writer_;
   std::vector<FrameCoverage> frames_;
   WallOilFractions lastFractions_;
-  TissueMeasures lastTissue_;  // of the last frame
+  TissueMeasures lastTissue_;    // of the last frame
+  SolvedEquilibria equilibria_;  // the postures at equilibrium a mixed schedule begins with
+  double simulatedStart_ = 0.0;  // [s] schedule time at which the simulation starts
   std::vector<sim::Vec3> fluidPositions_;
   std::vector<std::int32_t> fluidMaterials_, fluidIds_;
 };

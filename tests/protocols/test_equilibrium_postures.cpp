@@ -128,9 +128,32 @@ TEST_CASE("Equilibrium schedules: protocol errors name the key", "[unit][equilib
     }
     return "";
   };
-  const std::string mixed = errorOf(eyeProtocol(posture("upright") + posture("supine", "10 s")));
-  CHECK(mixed.find("mixes duration = \"equilibrium\"") != std::string::npos);
-  CHECK(mixed.find("eq.toml:") != std::string::npos);
+  // Postures at equilibrium first, then simulated ones (the first starts from the last
+  // equilibrium): accepted, as are all-equilibrium and all-simulated schedules.
+  CHECK(errorOf(eyeProtocol(posture("upright") + posture("supine", "10 s"))).empty());
+  CHECK(errorOf(eyeProtocol(posture("upright") + posture("supine") + posture("upright", "1 s") +
+                            posture("supine", "until steady")))
+            .empty());
+  CHECK(errorOf(eyeProtocol(posture("upright", "1 s") + posture("supine", "1 s"))).empty());
+  // An equilibrium after a simulated posture: refused at that posture's duration (line 17: eight
+  // lines before the postures, then three per posture), naming both postures and the fix.
+  const std::string late =
+      errorOf(eyeProtocol(posture("upright") + posture("supine", "10 s") + posture("face-down")));
+  INFO(late);
+  CHECK(late.find("eq.toml:17:") != std::string::npos);
+  CHECK(late.find("posture 3 (face-down) asks for its equilibrium after the simulated posture 2 "
+                  "(supine)") != std::string::npos);
+  CHECK(late.find("move the postures with duration = \"equilibrium\" before the simulated "
+                  "ones") != std::string::npos);
+  // schedule.start has nothing to choose where the schedule begins with an equilibrium.
+  const std::string start = errorOf(
+      eyeProtocol("start = \"fill_plane\"\n" + posture("supine") + posture("upright", "1 s")));
+  INFO(start);
+  CHECK(start.find("eq.toml:9:") != std::string::npos);
+  CHECK(start.find("schedule.start does not apply") != std::string::npos);
+  CHECK(start.find("starts from the equilibrium of the posture before it (supine)") !=
+        std::string::npos);
+  CHECK(start.find("remove schedule.start") != std::string::npos);
   const std::string wetting =
       errorOf(eyeProtocol(posture("upright"), "contact_angle = \"0 deg\"\n"));
   CHECK(wetting.find("contact_angle") != std::string::npos);
