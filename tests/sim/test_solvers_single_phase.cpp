@@ -28,7 +28,8 @@ TEST_CASE(
     "Each solver keeps a settling water column finite, inside the tank and compressed "
     "less than its tolerance",
     "[stability][solvers]") {
-  const std::string solver = GENERATE("dfsph", "indsph", "iisph", "number_density", "wcsph", "vslsph");
+  const std::string solver =
+      GENERATE("dfsph", "indsph", "iisph", "number_density", "wcsph", "vslsph");
   const Real d = 0.005, height = 0.06;
   auto tank = testing::hydrostaticTank(0.03, height, d);
   World& w = *tank.world;
