@@ -14,13 +14,16 @@ namespace sim {
 NeighborSearch::NeighborSearch(const Box& domain, Real supportRadius)
     : NeighborSearch(domain, supportRadius, supportRadius) {}
 
-NeighborSearch::NeighborSearch(const Box& domain, Real supportRadius, Real cellSize)
-    : domain_(domain), radius_(supportRadius) {
+NeighborSearch::NeighborSearch(const Box& domain, Real supportRadius, Real largestSupport)
+    : domain_(domain), radius_(supportRadius), largest_(largestSupport) {
   require(supportRadius > 0.0, "neighbour search: support radius must be > 0 m");
-  require(cellSize >= supportRadius,
-          "neighbour search: cell size must be at least the support radius");
+  require(largestSupport >= supportRadius,
+          "neighbour search: the largest support must be at least the support radius");
   require(!domain.isEmpty() && domain.volume() > 0.0, "neighbour search: empty domain");
-  invCell_ = 1.0 / cellSize;
+  // Variable support: half-width cells, two cells each way. The 5^3 stencil scans (2.5 R)^3 of
+  // candidates against (3 R)^3 for the 3^3 stencil of R-wide cells (42 % fewer at R = 1.25 h).
+  reach_ = largestSupport > supportRadius ? 2 : 1;
+  invCell_ = reach_ / largestSupport;
   const Vec3 extent = domain.sizes() * invCell_;
   require(extent.maxCoeff() < 2.0e6, "neighbour search: domain is more than 2e6 cells across");
   dims_ = (extent.array().ceil().cast<int>().max(1)).matrix();
@@ -83,7 +86,7 @@ void NeighborSearch::bin(const std::vector<Vec3>& x, CellBins& bins, bool dynami
 void NeighborSearch::binRadii(const std::vector<Real>& radii, CellBins& bins) {
   const std::size_t n = bins.sorted.size();
   if (radii.size() != n) throw SimError("neighbour search: one support radius per particle needed");
-  const Real cell = cellSize();
+  const Real cell = largest_;
   qR2_.resize(n);
   bins.sortedR2.resize(n);
   bool fits = true;
@@ -94,8 +97,9 @@ void NeighborSearch::binRadii(const std::vector<Real>& radii, CellBins& bins) {
     qR2_[i] = r * r;
   }
   if (!fits)  // (not require(): its message would be built, and allocated, every step)
-    throw SimError("neighbour search: a support radius exceeds the grid's cell size " +
-                   std::to_string(cell) + " m");
+    throw SimError(
+        "neighbour search: a support radius exceeds the largest the grid was built for, " +
+        std::to_string(cell) + " m");
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < n; ++k)
     bins.sortedR2[k] = qR2_[static_cast<std::size_t>(bins.sorted[k])];
@@ -156,12 +160,12 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
     for (std::size_t i = lo; i < hi; ++i) {
       const std::int64_t c = qbins.cellOf[i];
       const std::int64_t cz = c / dz, cy = (c % dz) / dy, cx = c % dy;
-      const std::int64_t xlo = std::max<std::int64_t>(cx - 1, 0);
-      const std::int64_t xhi = std::min<std::int64_t>(cx + 1, dims_.x() - 1);
-      const std::int64_t zlo = std::max<std::int64_t>(cz - 1, 0);
-      const std::int64_t zhi = std::min<std::int64_t>(cz + 1, dims_.z() - 1);
-      const std::int64_t ylo = std::max<std::int64_t>(cy - 1, 0);
-      const std::int64_t yhi = std::min<std::int64_t>(cy + 1, dims_.y() - 1);
+      const std::int64_t xlo = std::max<std::int64_t>(cx - reach_, 0);
+      const std::int64_t xhi = std::min<std::int64_t>(cx + reach_, dims_.x() - 1);
+      const std::int64_t zlo = std::max<std::int64_t>(cz - reach_, 0);
+      const std::int64_t zhi = std::min<std::int64_t>(cz + reach_, dims_.z() - 1);
+      const std::int64_t ylo = std::max<std::int64_t>(cy - reach_, 0);
+      const std::int64_t yhi = std::min<std::int64_t>(cy + reach_, dims_.y() - 1);
       // Room for every candidate, so that the scan can store each one and advance only on a hit
       // (no unpredictable branch per candidate).
       std::size_t candidates = 0;

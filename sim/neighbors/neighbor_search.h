@@ -15,9 +15,9 @@
 // buffers to 1.5x when less than 1/16 headroom is left, lists by 25 %), so a running simulation
 // whose pair count drifts slowly does not allocate. Memory: about 2.5x the lists themselves.
 //
-// Variable support (VSLSPH, sim/fluid/vslsph_li2023.h): the grid's cells may be wider than the
-// kernel support (`cellSize`, the largest support any particle may take), and update() may be
-// given per-particle support radii h_i. A dynamic pair is then kept when
+// Variable support (VSLSPH, sim/fluid/vslsph_li2023.h): the grid is built for the largest support
+// R any particle may take (cells R/2 wide, a 5 x 5 x 5 stencil), and update() may be given
+// per-particle support radii h_i <= R. A dynamic pair is then kept when
 // r < max(h, h_i, h_j) (h the kernel's support), a dynamic-wall pair when r < max(h, h_i): a
 // superset of the fixed-h lists, so stages that use the kernel of support h see every pair they
 // would without the radii, and the extra ones carry W = 0. Without radii the scan is the fixed-h
@@ -69,12 +69,12 @@ class NeighborSearch {
   // `domain` must contain every particle for the whole run; a particle leaving it is an error
   // (it has escaped the walls). Memory is one Index per cell: keep the domain tight.
   NeighborSearch(const Box& domain, Real supportRadius);
-  // Cells `cellSize` >= supportRadius wide: per-particle support radii up to cellSize may then be
-  // given to update() (variable smoothing length).
-  NeighborSearch(const Box& domain, Real supportRadius, Real cellSize);
+  // For per-particle support radii up to largestSupport >= supportRadius (variable smoothing
+  // length); equal to supportRadius: the fixed-h grid.
+  NeighborSearch(const Box& domain, Real supportRadius, Real largestSupport);
 
   Real supportRadius() const { return radius_; }
-  Real cellSize() const { return 1.0 / invCell_; }  // [m]
+  Real largestSupport() const { return largest_; }  // [m]
   const Box& domain() const { return domain_; }
   std::int64_t cellCount() const { return cellCount_; }
 
@@ -87,8 +87,8 @@ class NeighborSearch {
   // and dynamic-static lists (entry k belongs to the pair (i, indices[k])), computed in the same
   // pass as the lists with exactly Kernel::gradW's arithmetic.
   void update(const std::vector<Vec3>& dynamicX, const Kernel& kernel);
-  // Same with per-particle support radii h_i [m] (<= cellSize(); nullptr: the fixed-h update): a
-  // pair is kept when r < max(h, h_i, h_j) (see the file comment).
+  // Same with per-particle support radii h_i [m] (<= largestSupport(); nullptr: the fixed-h
+  // update): a pair is kept when r < max(h, h_i, h_j) (see the file comment).
   void update(const std::vector<Vec3>& dynamicX, const Kernel& kernel,
               const std::vector<Real>* supportRadii);
 
@@ -142,6 +142,8 @@ class NeighborSearch {
 
   Box domain_;
   Real radius_;
+  Real largest_;   // [m] largest per-particle support the grid serves
+  int reach_ = 1;  // [cells] stencil half-width: 1 for the fixed support, 2 for variable support
   Real invCell_;
   Eigen::Vector3i dims_;
   std::int64_t cellCount_;

@@ -98,7 +98,7 @@ TEST_CASE("a particle outside the domain is reported by index and position", "[u
   CHECK_THROWS_AS(NeighborSearch(Box(Vec3::Zero(), Vec3::Constant(1.0)), 0.0), SimError);
 }
 
-// Variable support (VSLSPH): one grid of cells as wide as the largest support, and a pair kept
+// Variable support (VSLSPH): one grid built for the largest support, and a pair kept
 // when r < max(h, h_i, h_j) (dynamic) or r < max(h, h_i) (wall), exactly the brute-force sets.
 TEST_CASE("variable-support neighbour search equals brute force with the pair cut",
           "[unit][neighbors]") {
