@@ -14,6 +14,14 @@
 // (zOrder()), which keeps neighbours close in memory. Buffers only grow (per-thread
 // buffers to 1.5x when less than 1/16 headroom is left, lists by 25 %), so a running simulation
 // whose pair count drifts slowly does not allocate. Memory: about 2.5x the lists themselves.
+//
+// Variable support (VSLSPH, sim/fluid/vslsph_li2023.h): the grid is built for the largest support
+// R any particle may take (cells R/2 wide, a 5 x 5 x 5 stencil), and update() may be given
+// per-particle support radii h_i <= R. A dynamic pair is then kept when
+// r < max(h, h_i, h_j) (h the kernel's support), a dynamic-wall pair when r < max(h, h_i): a
+// superset of the fixed-h lists, so stages that use the kernel of support h see every pair they
+// would without the radii, and the extra ones carry W = 0. Without radii the scan is the fixed-h
+// one, branch for branch.
 #pragma once
 
 #include <cstdint>
@@ -51,6 +59,9 @@ struct CellBins {
   std::vector<Index> sorted;         // point indices grouped by cell
   std::vector<std::int64_t> cellOf;  // per point
   std::vector<Vec3> sortedX;         // [m] positions in `sorted` order (contiguous candidate scan)
+  // [m^2] squared search radii max(h, h_i)^2 in `sorted` order; filled only for dynamic points
+  // binned with per-particle support radii (empty otherwise).
+  std::vector<Real> sortedR2;
 };
 
 class NeighborSearch {
@@ -58,8 +69,12 @@ class NeighborSearch {
   // `domain` must contain every particle for the whole run; a particle leaving it is an error
   // (it has escaped the walls). Memory is one Index per cell: keep the domain tight.
   NeighborSearch(const Box& domain, Real supportRadius);
+  // For per-particle support radii up to largestSupport >= supportRadius (variable smoothing
+  // length); equal to supportRadius: the fixed-h grid.
+  NeighborSearch(const Box& domain, Real supportRadius, Real largestSupport);
 
   Real supportRadius() const { return radius_; }
+  Real largestSupport() const { return largest_; }  // [m]
   const Box& domain() const { return domain_; }
   std::int64_t cellCount() const { return cellCount_; }
 
@@ -72,6 +87,10 @@ class NeighborSearch {
   // and dynamic-static lists (entry k belongs to the pair (i, indices[k])), computed in the same
   // pass as the lists with exactly Kernel::gradW's arithmetic.
   void update(const std::vector<Vec3>& dynamicX, const Kernel& kernel);
+  // Same with per-particle support radii h_i [m] (<= largestSupport(); nullptr: the fixed-h
+  // update): a pair is kept when r < max(h, h_i, h_j) (see the file comment).
+  void update(const std::vector<Vec3>& dynamicX, const Kernel& kernel,
+              const std::vector<Real>* supportRadii);
 
   const NeighborList& dynamicDynamic() const { return dd_; }
   const NeighborList& dynamicStatic() const { return ds_; }
@@ -94,14 +113,19 @@ class NeighborSearch {
 
  private:
   void bin(const std::vector<Vec3>& x, CellBins& bins, bool dynamic);
+  // Fills qR2_ (query order) and bins.sortedR2 from the support radii; throws if one exceeds the
+  // cell size.
+  void binRadii(const std::vector<Real>& radii, CellBins& bins);
   // CSR list from query points `qx` to the points in `bins` with positions `px`; `skipSelf` drops
   // the pair (i, i) when both sets are the same.
   // `kernel` non-null: also fill `grad` and `values` (aligned with out.indices); null: `values`
-  // is emptied.
+  // is emptied. `qR2` non-null: per-query squared radii (variable support), with pbins.sortedR2
+  // the points' ones when that is filled (else the fixed radius for the points).
   void buildList(const std::vector<Vec3>& qx, const CellBins& qbins, const CellBins& pbins,
                  bool skipSelf, const Kernel* kernel, NeighborList& out, std::vector<Vec3>& grad,
-                 std::vector<Real>& values);
-  void updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel);
+                 std::vector<Real>& values, const Real* qR2 = nullptr);
+  void updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel,
+                  const std::vector<Real>* supportRadii = nullptr);
 
   // One thread's share of a list being built: accepted neighbours of its block of query points.
   struct ThreadBuffer {
@@ -118,6 +142,8 @@ class NeighborSearch {
 
   Box domain_;
   Real radius_;
+  Real largest_;   // [m] largest per-particle support the grid serves
+  int reach_ = 1;  // [cells] stencil half-width: 1 for the fixed support, 2 for variable support
   Real invCell_;
   Eigen::Vector3i dims_;
   std::int64_t cellCount_;
@@ -128,6 +154,7 @@ class NeighborSearch {
   std::vector<Real> ddW_, dsW_, noW_;
   std::vector<ThreadBuffer> threadBuffers_;
   std::vector<Index> counts_;
+  std::vector<Real> qR2_;  // [m^2] max(h, h_i)^2 per dynamic point (variable support only)
   mutable std::vector<std::uint64_t> mortonScratch_;
 };
 

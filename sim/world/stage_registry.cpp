@@ -146,6 +146,14 @@ const std::vector<SolverEntry>& solverRegistry() {
          return std::make_unique<NumberDensitySolenthaler2008>(o.wcsph);
        },
        {}},
+      {"vslsph",
+       "explicit SPH with per-particle smoothing length from the density (Li et al. 2023)",
+       [](const World&, const PipelineOptions& o) {
+         VslsphParameters p = o.vslsph;
+         if (p.speedOfSound == 0) p.speedOfSound = o.wcsph.speedOfSound;
+         return std::make_unique<VslsphLi2023>(p);
+       },
+       {}},
   };
   return entries;
 }
@@ -175,7 +183,8 @@ const std::vector<EffectEntry>& effectRegistry() {
        }},
       {"velocity_smoothing", "XSPH velocity smoothing (Monaghan 1989), numerical damping", "",
        [](const World&, const PipelineOptions& o) {
-         const bool explicitSolver = o.solver == "wcsph" || o.solver == "number_density";
+         const bool explicitSolver =
+             o.solver == "wcsph" || o.solver == "number_density" || o.solver == "vslsph";
          const bool on = o.velocitySmoothing > 0 && !explicitSolver;
          return StageDecision{
              "velocity_smoothing", on, false,

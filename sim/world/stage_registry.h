@@ -19,6 +19,7 @@
 #include "sim/fluid/iisph_ihmsen2013.h"
 #include "sim/fluid/indsph_wang2023.h"
 #include "sim/fluid/number_density_solenthaler2008.h"
+#include "sim/fluid/vslsph_li2023.h"
 #include "sim/fluid/wcsph_becker2007.h"
 #include "sim/solid/elasticity_peer2018.h"
 #include "sim/world/pipeline.h"
@@ -32,7 +33,8 @@ enum class StageOverride { kAuto, kOn, kOff };
 struct PipelineOptions {
   std::string solver = "dfsph";
   DfsphParameters dfsph;
-  WcsphParameters wcsph;  // also the number_density solver's speed of sound
+  WcsphParameters wcsph;    // also the number_density solver's speed of sound, and VSLSPH's
+  VslsphParameters vslsph;  // speedOfSound 0: wcsph.speedOfSound
   IndsphParameters indsph;
   IisphParameters iisph;
   ImplicitViscosityParameters implicitViscosity;  // wallFriction below overrides its own

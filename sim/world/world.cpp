@@ -77,7 +77,21 @@ void World::updateNeighbors() {
       updatesSinceSort_ = 0;
     }
     // The lists and the per-pair kernel gradients come from one pass (NeighborSearch::update).
-    search_->update(particles.x, kernel);
+    search_->update(particles.x, kernel, variableSupport_);
+  } catch (const SimError& e) {
+    throw SimError(describeEscape(e.what()));
+  }
+}
+
+void World::useVariableSupport(const std::vector<Real>& support, Real maxSupport) {
+  require(initialized_, "World::initialize() must run before useVariableSupport()");
+  require(maxSupport >= supportRadius(),
+          "the largest variable support radius must be at least the kernel's support radius");
+  search_ = std::make_unique<NeighborSearch>(parameters_.domain, supportRadius(), maxSupport);
+  search_->setStatic(walls.x);
+  variableSupport_ = &support;
+  try {
+    search_->update(particles.x, kernel, variableSupport_);
   } catch (const SimError& e) {
     throw SimError(describeEscape(e.what()));
   }

@@ -47,6 +47,14 @@ class World {
   // by Z-order so that neighbours are close in memory.
   void updateNeighbors();
 
+  // Variable support (the VSLSPH solver): from now on the neighbour lists keep a pair when
+  // r < max(h, h_i, h_j), h_i = support[i] [m] (a registered, sorted field), on a grid of cells
+  // maxSupport wide (sim/neighbors/neighbor_search.h). Rebuilds the grid and the lists; the kernel,
+  // its cached values and gradients and the wall volumes keep the fixed support h, so other
+  // stages see a superset of their pairs whose extra ones carry W = 0. Call from attach().
+  void useVariableSupport(const std::vector<Real>& support, Real maxSupport);
+  const std::vector<Real>* variableSupport() const { return variableSupport_; }
+
   Real restDensityOf(Index i) const { return materials[particles.material[i]].restDensity; }
   // Rest volume V0 of a dynamic particle [m^3] (= mass / rest density).
   Real restVolumeOf(Index i) const { return particles.mass[i] / restDensityOf(i); }
@@ -93,6 +101,7 @@ class World {
 
   WorldParameters parameters_;
   std::unique_ptr<NeighborSearch> search_;
+  const std::vector<Real>* variableSupport_ = nullptr;  // [m] per-particle support, or none
   std::vector<Index> permutation_;
   long updatesSinceSort_ = 0;
   bool initialized_ = false;

@@ -144,6 +144,12 @@ TEST_CASE("dam break surge front matches Martin & Moyce 1952 (DFSPH)", "[validat
   checkBand(runDamBreak("dfsph", kEndT), "dfsph");
 }
 
+// VSLSPH (Li et al. 2023) on the same scene and band: explicit like WCSPH, at the scene's speed
+// of sound, with each particle's support grown where the column thins (the surge's tip).
+TEST_CASE("dam break surge front matches Martin & Moyce 1952 (VSLSPH)", "[validation][dam_break]") {
+  checkBand(runDamBreak("vslsph", kEndT), "vslsph");
+}
+
 // ---- determinism (docs/developer-guide.md principle 7): fixed-order reductions, static OpenMP
 // schedules ----
 
@@ -174,7 +180,7 @@ std::pair<std::vector<Vec3>, std::vector<Vec3>> coarseRun(const std::string& sol
 }  // namespace
 
 TEST_CASE("identical runs are bit-identical, also across thread counts", "[unit][determinism]") {
-  for (const std::string solver : {"wcsph", "dfsph"}) {
+  for (const std::string solver : {"wcsph", "dfsph", "vslsph"}) {
     // One 2-thread run only: on an oversubscribed CI machine each 2-thread run costs seconds of
     // OpenMP barrier waits, and repeatability plus 1-vs-2-thread equality already pins it down.
     const auto [single, initial] = coarseRun(solver, 1);

@@ -162,3 +162,10 @@ TEST_CASE("number-density baseline hydrostatic tank matches rho g (H - y)",
 TEST_CASE("IISPH hydrostatic tank matches rho g (H - y)", "[validation][hydrostatic]") {
   checkProfile(runProfile(optionsFor("iisph")));
 }
+
+// VSLSPH (per-particle smoothing length, Li et al. 2023) on the same tank, reference and bounds:
+// its state equation is WCSPH's linearised at the same speed of sound, so the same compressibility
+// allowance holds; the variable support changes the density estimate, not the force balance.
+TEST_CASE("VSLSPH hydrostatic tank matches rho g (H - y)", "[validation][hydrostatic]") {
+  checkProfile(runProfile(optionsFor("vslsph")));
+}

@@ -97,3 +97,52 @@ TEST_CASE("a particle outside the domain is reported by index and position", "[u
   CHECK_THROWS_WITH(search.update(x), Catch::Contains("non-finite"));
   CHECK_THROWS_AS(NeighborSearch(Box(Vec3::Zero(), Vec3::Constant(1.0)), 0.0), SimError);
 }
+
+// Variable support (VSLSPH): one grid built for the largest support, and a pair kept
+// when r < max(h, h_i, h_j) (dynamic) or r < max(h, h_i) (wall), exactly the brute-force sets.
+TEST_CASE("variable-support neighbour search equals brute force with the pair cut",
+          "[unit][neighbors]") {
+  const Box domain(Vec3(-0.1, 0.0, 0.2), Vec3(0.3, 0.25, 0.5));
+  const Real h = 0.02, largest = 0.03;
+  const auto dynamicX = randomCloud(3000, domain, 3);
+  const auto staticX = randomCloud(1500, domain, 4);
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<Real> u(h, largest);
+  std::vector<Real> support(dynamicX.size());
+  for (Real& s : support) s = u(rng);
+  support[0] = h;  // the kernel's own support is a valid value too
+  const Kernel kernel(KernelKind::kCubicSpline, h);
+  NeighborSearch search(domain, h, largest);
+  search.setStatic(staticX);
+  search.update(dynamicX, kernel, &support);
+  std::size_t extra = 0;
+  for (Index i = 0; i < dynamicX.size(); ++i) {
+    std::vector<Index> dd, ds;
+    for (Index j = 0; j < dynamicX.size(); ++j) {
+      const Real cut = std::max({h, support[i], support[j]});
+      if (j != i && (dynamicX[i] - dynamicX[j]).squaredNorm() < cut * cut) dd.push_back(j);
+    }
+    for (Index b = 0; b < staticX.size(); ++b) {
+      const Real cut = std::max(h, support[i]);
+      if ((dynamicX[i] - staticX[b]).squaredNorm() < cut * cut) ds.push_back(b);
+    }
+    REQUIRE(sortedNeighbors(search.dynamicDynamic(), i) == dd);
+    REQUIRE(sortedNeighbors(search.dynamicStatic(), i) == ds);
+    extra += dd.size() - bruteForce(dynamicX[i], dynamicX, h, i).size();
+  }
+  CHECK(extra > 0);  // the variable cut did keep pairs beyond the fixed support
+  // The cached kernel values stay those of the fixed support h (other stages rely on them).
+  const auto& values = search.dynamicDynamicKernelValues();
+  REQUIRE(values.size() == search.dynamicDynamic().totalPairs());
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const Index j = search.dynamicDynamic().indices[k];
+    const Index i = static_cast<Index>(std::upper_bound(search.dynamicDynamic().offsets.begin(),
+                                                        search.dynamicDynamic().offsets.end(),
+                                                        static_cast<Index>(k)) -
+                                       search.dynamicDynamic().offsets.begin() - 1);
+    REQUIRE(values[k] == kernel.W(dynamicX[i] - dynamicX[j]));
+  }
+  // A support above the cell width cannot be searched and is refused.
+  support[1] = 1.5 * largest;
+  CHECK_THROWS_AS(search.update(dynamicX, kernel, &support), SimError);
+}

@@ -47,3 +47,30 @@ TEST_CASE("neighbour search allocates nothing after warm-up", "[unit][neighbors]
   CHECK(search.dynamicDynamicGradients().size() == search.dynamicDynamic().totalPairs());
   CHECK(allocations.load() == 0);
 }
+
+TEST_CASE("variable-support neighbour search allocates nothing after warm-up",
+          "[unit][neighbors]") {
+  const Box domain(Vec3::Zero(), Vec3(0.2, 0.1, 0.1));
+  const Real d = 0.004, h = 2 * d;  // [m]
+  std::vector<Vec3> fluid;
+  for (int a = 1; a < 24; ++a)
+    for (int b = 1; b < 24; ++b)
+      for (int c = 1; c < 20; ++c) fluid.push_back(Vec3(a * d, b * d, c * d));
+  std::vector<Real> support(fluid.size());
+  for (std::size_t i = 0; i < fluid.size(); ++i) support[i] = h * (1.0 + 0.25 * (i % 5) / 4.0);
+  const Kernel kernel(KernelKind::kCubicSpline, h);
+  NeighborSearch search(domain, h, 1.25 * h);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<Real> jitter(-0.02 * d, 0.02 * d);
+  search.update(fluid, kernel, &support);
+  for (auto& x : fluid) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
+  search.update(fluid, kernel, &support);
+  counting = true;
+  for (int step = 0; step < 5; ++step) {
+    for (auto& x : fluid) x += Vec3(jitter(rng), jitter(rng), jitter(rng));
+    search.update(fluid, kernel, &support);
+  }
+  counting = false;
+  CHECK(search.dynamicDynamic().totalPairs() > 0);
+  CHECK(allocations.load() == 0);
+}
