@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "sim/fluid/density_compression.h"
+
 namespace sim {
 namespace {
 
@@ -160,13 +162,7 @@ void VslsphLi2023::correctVelocities(World& world, const StepContext& context) {
   const Real dt = context.dt;
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) p.v[i] += dt * pressureAcceleration_[i];
-  stats_.densityIterations = 0;
-  stats_.averageCompression = reducer_.sum(n, [&](std::size_t i) {
-    return std::max(p.density[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0, Real(0));
-  }) / n;
-  stats_.maxCompression = DeterministicReducer::max(n, [&](std::size_t i) {
-    return p.density[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0;
-  });
+  recordDensityCompression(world, reducer_, stats_);
 }
 
 }  // namespace sim

@@ -5,6 +5,7 @@
 
 #include "sim/core/reduction.h"
 #include "sim/fluid/density.h"
+#include "sim/fluid/density_compression.h"
 #include "sim/fluid/tait_equation.h"
 
 namespace sim {
@@ -75,13 +76,7 @@ void WcsphBecker2007::correctVelocities(World& world, const StepContext& context
   // Applied after the loop: the viscosity term above reads neighbours' velocities.
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) p.v[i] += dt * pressureAcceleration_[i];
-  stats_.densityIterations = 0;
-  stats_.averageCompression = reducer_.sum(n, [&](std::size_t i) {
-    return std::max(p.density[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0, Real(0));
-  }) / n;
-  stats_.maxCompression = DeterministicReducer::max(n, [&](std::size_t i) {
-    return p.density[i] / world.restDensityOf(static_cast<Index>(i)) - 1.0;
-  });
+  recordDensityCompression(world, reducer_, stats_);
 }
 
 }  // namespace sim
