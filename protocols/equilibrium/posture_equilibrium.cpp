@@ -4,6 +4,7 @@
 #include <chrono>
 #include <numbers>
 
+#include "meshing/mesh_measures.h"
 #include "meshing/mesh_query.h"
 #include "meshing/voxel_fractions.h"
 #include "sim/equilibrium/interface_surface.h"
@@ -29,9 +30,9 @@ std::size_t equilibriaBeforeSimulation(const Scenario& s) {
 }
 
 double equilibriumVoxelSpacing(const std::string& preset) {
-  if (preset == "fine") return 0.3e-3;
-  if (preset == "standard") return 0.4e-3;
-  return 0.5e-3;  // draft
+  if (preset == "fine") return 0.2e-3;
+  if (preset == "standard") return 0.25e-3;
+  return 0.3e-3;  // draft
 }
 
 CavityVoxels voxelizeCavity(const Scenario& s, double voxelSpacing) {
@@ -45,6 +46,7 @@ CavityVoxels voxelizeCavity(const Scenario& s, double voxelSpacing) {
   const meshing::MeshQuery query(s.cavity);
   out.fluidFraction = meshing::voxelInsideFractions(
       query, {out.grid.origin, out.grid.spacing, out.grid.nx, out.grid.ny, out.grid.nz});
+  out.wallArea = meshing::measureMesh(s.cavity).area;
   return out;
 }
 
@@ -79,6 +81,7 @@ PostureEquilibrium solvePostureEquilibrium(const Scenario& s, const CavityVoxels
     problem.contactAngle = oil.contactAngleThroughAqueous.value_or(90.0) * std::numbers::pi / 180;
     problem.gravity = gravity;
     problem.oilFraction = fill;
+    problem.wallArea = cavity.wallArea;
     out.solution = sim::equilibrium::solveEquilibrium(problem);
     const sim::equilibrium::WallOilReader reader(out.solution, problem.contactAngle);
 #pragma omp parallel for schedule(static)

@@ -26,14 +26,17 @@ std::size_t leadingEquilibria(const Scenario& scenario);
 // to simulate one, as `tamponade bench accuracy` does, holds each posture its nominal second).
 std::size_t equilibriaBeforeSimulation(const Scenario& scenario);
 
-// Voxel spacing per accuracy preset [m] (the solver's sqrt(t) is 1.5 voxels). Measured in a
-// 12 mm sphere against Young-Laplace: docs/methods/equilibrium.md.
+// Voxel spacing per accuracy preset [m]: 0.3 / 0.25 / 0.2 mm at draft / standard / fine (the
+// solver's sqrt(t) is 1.5 voxels). Coarser voxels leave the supine eye's thin aqueous pool
+// unresolved (+8 points at 0.5 mm); measured in a 12 mm sphere against Young-Laplace and in the
+// emmetropic eye against 0.2 mm: docs/methods/equilibrium.md.
 double equilibriumVoxelSpacing(const std::string& preset);
 
 // The cavity as voxel fluid fractions, built once per scenario.
 struct CavityVoxels {
   sim::equilibrium::VoxelGrid grid;
   std::vector<double> fluidFraction;
+  double wallArea = 0.0;  // [m^2] the cavity mesh's area (calibrates the solver's wall term)
 };
 CavityVoxels voxelizeCavity(const Scenario& scenario, double voxelSpacing);
 

@@ -73,6 +73,19 @@ void selectLowest(const std::vector<double>& psi, const std::vector<std::size_t>
     u[v] = psi[v] < cutPsi - tie ? 1.0 : (psi[v] <= cutPsi + tie ? share : 0.0);
 }
 
+// [1] The true wall area over the discrete one, sqrt(pi / t) int f G*(1 - f) dV; 1 when the true
+// area is not given. A voxel the wall cuts holds its wall and its fluid at one point, so the
+// discrete area exceeds the true one: by 3.5 % in a sphere at the final kernel (sqrt(t) = 1.5
+// voxels), by up to 5.6 % for a plane through the middle of a voxel layer.
+double wallAreaScale(const EquilibriumProblem& p, const GaussianBlur& blur,
+                     const std::vector<double>& blurredFluid) {
+  if (p.wallArea <= 0.0) return 1.0;
+  double contact = 0.0;  // [voxels]
+  for (std::size_t v = 0; v < blurredFluid.size(); ++v)
+    contact += p.fluidFraction[v] * (1.0 - blurredFluid[v]);
+  return p.wallArea / (blur.areaFactor() * contact * p.grid.voxelVolume());
+}
+
 }  // namespace
 
 EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
@@ -125,12 +138,13 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
     GaussianBlur blur(grid, t);
     blur.apply(f, blurredFluid);
     const double a = blur.areaFactor() * problem.tension;  // [N/m^2]
+    const double wallCos = cosTheta * wallAreaScale(problem, blur, blurredFluid);
     bool settled = false;
     for (int it = 0; it < options.maxIterationsPerStage && !settled; ++it) {
       for (std::size_t v = 0; v < n; ++v) oilField[v] = out.oil[v] * f[v];
       blur.apply(oilField, blurredOil);
       for (std::size_t v : fluid)
-        psi[v] = a * (blurredFluid[v] - 2.0 * blurredOil[v] + cosTheta * (1.0 - blurredFluid[v])) +
+        psi[v] = a * (blurredFluid[v] - 2.0 * blurredOil[v] + wallCos * (1.0 - blurredFluid[v])) +
                  potential[v];
       previous = out.oil;
       selectLowest(psi, fluid, f, target, tie, out.oil);
@@ -151,10 +165,11 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
     blur.apply(oilField, blurredOil);
     blur.apply(f, blurredFluid);
     const double a = blur.areaFactor() * problem.tension;
+    const double wallCos = cosTheta * wallAreaScale(problem, blur, blurredFluid);
     double e = 0.0, oilUnits = 0.0;
     for (std::size_t v : fluid) {
       const double chi = oilField[v];
-      e += chi * (a * (blurredFluid[v] - blurredOil[v] + cosTheta * (1.0 - blurredFluid[v])) +
+      e += chi * (a * (blurredFluid[v] - blurredOil[v] + wallCos * (1.0 - blurredFluid[v])) +
                   potential[v]);
       oilUnits += chi;
     }

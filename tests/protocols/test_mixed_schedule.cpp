@@ -117,8 +117,8 @@ TEST_CASE("A simulated posture after postures at equilibrium starts from the las
   CHECK(rows[4][0] == 2.0);
   // The first simulated frame is the particles at the supine equilibrium, before any step: the
   // same places and phases read by the same kernel as startReading's, so it agrees to the
-  // rounding of coverage.csv's six significant digits (below 1e-6 for a fraction; the 0.068
-  // between the supine and the upright start is 5 orders of magnitude above it).
+  // rounding of coverage.csv's six significant digits (below 1e-6 for a fraction; the 0.032
+  // between the supine and the upright start is more than 4 orders of magnitude above it).
   INFO("first simulated frame " << rows[4][1] << ", supine start " << supine[0]
                                 << ", upright start " << upright[0]);
   CHECK(largestDifference(rows[4], supine) < 1e-6);

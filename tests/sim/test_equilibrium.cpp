@@ -28,9 +28,10 @@ constexpr double kVoxel = 0.5e-3;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 EquilibriumProblem sphereProblem(double thetaDeg, double fill, const Vec3& gravity,
-                                 double oilDensity = kOil, double tension = kSigma) {
+                                 double oilDensity = kOil, double tension = kSigma,
+                                 double voxel = kVoxel) {
   EquilibriumProblem p;
-  p.grid = gridAround(Vec3::Constant(-kR), Vec3::Constant(kR), kVoxel, 2);
+  p.grid = gridAround(Vec3::Constant(-kR), Vec3::Constant(kR), voxel, 2);
   p.fluidFraction = fluidFractionsFromDistance(p.grid, [](const Vec3& x) { return x.norm() - kR; });
   p.oilDensity = oilDensity;
   p.aqueousDensity = kAqueous;
@@ -38,6 +39,7 @@ EquilibriumProblem sphereProblem(double thetaDeg, double fill, const Vec3& gravi
   p.contactAngle = thetaDeg * kDeg;
   p.gravity = gravity;
   p.oilFraction = fill;
+  p.wallArea = 4 * std::numbers::pi * kR * kR;
   return p;
 }
 
@@ -109,22 +111,24 @@ TEST_CASE("Equilibrium: vanishing tension gives the flat fill plane", "[validati
 TEST_CASE("Equilibrium at Bond 1.2 in a sphere against Young-Laplace",
           "[validation][equilibrium]") {
   // The clinical case of the toolkit: the retina's 18 deg, and 40, 90, 140 deg, at 80 and 90 %
-  // fill. Measured errors at 0.5 mm (docs/methods/equilibrium.md, the table and its command):
-  // 18 deg -0.8 / -0.9, 40 deg -4.1 / -4.3, 90 deg -0.7 / -1.0, 140 deg -0.1 / -0.2 points. These
-  // are measured bounds of the method at this voxel, not derived ones, and not the 1 point the
-  // toolkit aims for: 5 points everywhere (the 40 deg error), 1.5 points at the retina's 18 deg
-  // and at 90-140 deg, so that neither can grow unnoticed.
+  // fill, at the draft preset's 0.3 mm voxel (what a run uses by default). Measured errors
+  // (docs/methods/equilibrium.md, the table and its command): 18 deg -0.9 / -2.3, 40 deg
+  // -2.6 / -2.7, 90 deg -0.4 / -0.9, 140 deg +0.5 / -0.3 points. These are measured bounds of the
+  // method at this voxel, not derived ones, and not the 1 point the toolkit aims for: 3 points at
+  // 18 and 40 deg (the scheme's contact-line error, which the docs analyse), 1.5 points at
+  // 90-140 deg, so that neither can grow unnoticed.
+  constexpr double kDraftVoxel = 0.3e-3;  // [m] protocols' equilibriumVoxelSpacing("draft")
   for (const double theta : {18.0, 40.0, 90.0, 140.0})
     for (const double fill : {0.8, 0.9}) {
       const double c = (kAqueous - kOil) * kG / kSigma;
       const double reference =
           testref::youngLaplaceSphere(kR, c, theta * kDeg, 1 - fill).upperWetFraction;
-      const EquilibriumSolution s = solveEquilibrium(sphereProblem(theta, fill, Vec3(0, 0, -kG)));
+      const EquilibriumSolution s = solveEquilibrium(
+          sphereProblem(theta, fill, Vec3(0, 0, -kG), kOil, kSigma, kDraftVoxel));
       const double measured = coverageOf(s, theta).fraction;
       INFO("theta " << theta << " fill " << fill << ": " << measured << " vs " << reference);
       CHECK(s.converged);
-      CHECK(std::abs(measured - reference) < 0.05);
-      if (theta != 40.0) CHECK(std::abs(measured - reference) < 0.015);
+      CHECK(std::abs(measured - reference) < (theta < 60.0 ? 0.03 : 0.015));
     }
 }
 

@@ -90,6 +90,7 @@ int main(int argc, char** argv) {
         p.contactAngle = rad;
         p.gravity = Vec3(0, 0, -g);
         p.oilFraction = fill;
+        p.wallArea = 4 * std::numbers::pi * R * R;
         ThresholdDynamicsOptions options;
         options.finalSmoothing = smoothing;
         const EquilibriumSolution s = solveEquilibrium(p, options);
