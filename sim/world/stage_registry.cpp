@@ -123,28 +123,33 @@ const std::vector<SolverEntry>& solverRegistry() {
        [](PipelineOptions& o, Real tolerance) {
          o.dfsph.densityTolerance = tolerance;
          o.dfsph.divergenceTolerance = tolerance;
-       }},
+       },
+       [](PipelineOptions& o, Real omega) { o.dfsph.relaxation = omega; }},
       {"wcsph",
        "weakly compressible SPH, Tait equation (Becker & Teschner 2007)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<WcsphBecker2007>(o.wcsph);
        },
+       {},
        {}},
       {"indsph", "incompressible number-density SPH for multiphase fluids (Wang et al. 2023)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<IndsphWang2023>(o.indsph);
        },
-       [](PipelineOptions& o, Real tolerance) { o.indsph.tolerance = tolerance; }},
+       [](PipelineOptions& o, Real tolerance) { o.indsph.tolerance = tolerance; },
+       [](PipelineOptions& o, Real omega) { o.indsph.relaxation = omega; }},
       {"iisph", "implicit incompressible SPH, relaxed Jacobi (Ihmsen et al. 2013)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<IisphIhmsen2013>(o.iisph);
        },
-       [](PipelineOptions& o, Real tolerance) { o.iisph.tolerance = tolerance; }},
+       [](PipelineOptions& o, Real tolerance) { o.iisph.tolerance = tolerance; },
+       [](PipelineOptions& o, Real omega) { o.iisph.relaxation = omega; }},
       {"number_density",
        "explicit number-density SPH, Tait EOS (Solenthaler & Pajarola 2008)",
        [](const World&, const PipelineOptions& o) {
          return std::make_unique<NumberDensitySolenthaler2008>(o.wcsph);
        },
+       {},
        {}},
       {"vslsph",
        "explicit SPH with per-particle smoothing length from the density (Li et al. 2023)",
@@ -153,6 +158,7 @@ const std::vector<SolverEntry>& solverRegistry() {
          if (p.speedOfSound == 0) p.speedOfSound = o.wcsph.speedOfSound;
          return std::make_unique<VslsphLi2023>(p);
        },
+       {},
        {}},
   };
   return entries;

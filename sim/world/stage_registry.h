@@ -63,6 +63,8 @@ struct SolverEntry {
   // Iterative solvers only: sets the relative density error their solve stops at (explicit
   // solvers have no solve to stop and leave it empty).
   std::function<void(PipelineOptions&, Real)> setTolerance;
+  // Iterative solvers with a relaxed Jacobi update only: sets its relaxation omega in (0, 1].
+  std::function<void(PipelineOptions&, Real)> setRelaxation;
   bool iterative() const { return static_cast<bool>(setTolerance); }
 };
 
