@@ -11,4 +11,4 @@ export OMP_WAIT_POLICY=${OMP_WAIT_POLICY:-passive}
 # owns runs/default_eye and starts it afresh.
 rm -rf runs/default_eye
 ./build/tools/tamponade run data/protocols/default_eye.toml --out runs/default_eye
-echo "report: runs/default_eye/report.html (each posture's interface: runs/default_eye/interface_<k>.ply)"
+echo "report: runs/default_eye/report.html (the interfaces in ParaView: runs/default_eye/interfaces.xmf)"

@@ -14,8 +14,9 @@ namespace {
 
 // Files a run writes into its folder; an attempt that left no checkpoint is started afresh, so
 // they go first (`tamponade run` refuses a folder holding frames).
-constexpr const char* kRunFiles[] = {"frames.h5",   "frames.xmf",   "summary.json",
-                                     "report.html", "coverage.csv", "checkpoint.h5"};
+constexpr const char* kRunFiles[] = {"frames.h5",     "frames.xmf",    "summary.json",
+                                     "report.html",   "coverage.csv",  "checkpoint.h5",
+                                     "interfaces.h5", "interfaces.xmf"};
 
 void clearEarlierAttempt(const std::filesystem::path& folder) {
   for (const char* name : kRunFiles) std::filesystem::remove(folder / name);

@@ -58,8 +58,15 @@ std::string formatXdmfFrame(const XdmfFrame& frame, const std::string& h5FileNam
   for (const XdmfGrid& grid : frame.grids) {
     const std::string count = std::to_string(grid.position.rows);
     out += "        <Grid Name=\"" + escapeXml(grid.name) + "\" GridType=\"Uniform\">\n";
-    out += "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + count +
-           "\" NodesPerElement=\"1\"/>\n";
+    if (grid.triangles) {
+      out += "          <Topology TopologyType=\"Triangle\" NumberOfElements=\"" +
+             std::to_string(grid.triangles->rows) + "\">\n";
+      appendDataItem(out, *grid.triangles, h5FileName, "            ");
+      out += "          </Topology>\n";
+    } else {
+      out += "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" + count +
+             "\" NodesPerElement=\"1\"/>\n";
+    }
     out += "          <Geometry GeometryType=\"XYZ\">\n";
     appendDataItem(out, grid.position, h5FileName, "            ");
     out += "          </Geometry>\n";
@@ -75,7 +82,8 @@ std::string formatXdmfFrame(const XdmfFrame& frame, const std::string& h5FileNam
   return out;
 }
 
-std::string formatXdmfDocument(const std::vector<std::string>& frameTexts) {
+std::string formatXdmfDocument(const std::vector<std::string>& frameTexts,
+                               const std::string& name) {
   std::size_t size = 512;
   for (const auto& text : frameTexts) size += text.size();
   std::string out;
@@ -83,7 +91,8 @@ std::string formatXdmfDocument(const std::vector<std::string>& frameTexts) {
   out += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   out += "<Xdmf Version=\"3.0\">\n";
   out += "  <Domain>\n";
-  out += "    <Grid Name=\"particles\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  out += "    <Grid Name=\"" + escapeXml(name) +
+         "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
   for (const auto& text : frameTexts) out += text;
   out += "    </Grid>\n";
   out += "  </Domain>\n";

@@ -12,6 +12,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,11 +32,13 @@ struct XdmfDataset {
   int bytesPerScalar = 8;  // 8 float64, 4 float32 or int32
 };
 
-// One particle group at one time: its positions and every other field as an attribute.
+// One particle group at one time: its positions and every other field as an attribute. With
+// `triangles` (T x 3 vertex indices) the grid is a triangle surface on those points instead.
 struct XdmfGrid {
   std::string name;  // "fluid", "wall", ...
   XdmfDataset position;
   std::vector<XdmfDataset> attributes;
+  std::optional<XdmfDataset> triangles;
 };
 
 struct XdmfFrame {
@@ -47,8 +50,9 @@ struct XdmfFrame {
 // The <Grid> element text of one frame (cached by the writer: frames never change once written).
 std::string formatXdmfFrame(const XdmfFrame& frame, const std::string& h5FileName);
 
-// The whole document around already formatted frames.
-std::string formatXdmfDocument(const std::vector<std::string>& frameTexts);
+// The whole document around already formatted frames; `name` names the temporal collection.
+std::string formatXdmfDocument(const std::vector<std::string>& frameTexts,
+                               const std::string& name = "particles");
 
 // Writes `text` to `path` through `path`.tmp and a rename, so a reader (or a crash) never sees a
 // half-written sidecar. Throws IoError.

@@ -40,7 +40,8 @@ struct SolvedEquilibria {
 };
 
 // The first `count` postures of the schedule (each must be an equilibrium posture), at the
-// protocol's fill. Writes interface_<k>.ply into `interfaceFolder` unless it is empty; calls
+// protocol's fill. Writes interface_<k>.ply and the series interfaces.h5 + interfaces.xmf
+// (protocols/io/interface_series.h) into `interfaceFolder` unless it is empty; calls
 // `progress` (may be empty) after each posture. Throws SimError when a posture has no equilibrium
 // the method can compute (e.g. no interfacial tension).
 SolvedEquilibria solveEquilibriumPostures(

@@ -1,5 +1,7 @@
 #include "io_test_support.h"
 
+#include <hdf5.h>
+
 #include <unistd.h>
 
 #include <cstdlib>
@@ -249,6 +251,27 @@ std::string checkXml(const std::string& text, std::vector<XmlElement>* elements)
   if (!rootSeen) return problem("no root element");
   if (elements) *elements = std::move(all);
   return "";
+}
+
+DatasetCheck inspectDataset(std::int64_t file, const std::string& path) {
+  DatasetCheck result;
+  H5E_BEGIN_TRY {
+    if (H5Oexists_by_name(file, path.c_str(), H5P_DEFAULT) <= 0) return result;
+  }
+  H5E_END_TRY;
+  hid_t dataset = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
+  hid_t space = H5Dget_space(dataset);
+  hsize_t dims[2] = {0, 0};
+  H5Sget_simple_extent_dims(space, dims, nullptr);
+  hid_t type = H5Dget_type(dataset);
+  result.rows = static_cast<long long>(dims[0]);
+  result.columns = static_cast<long long>(dims[1]);
+  result.isInteger = H5Tget_class(type) == H5T_INTEGER;
+  result.bytes = H5Tget_size(type);
+  H5Tclose(type);
+  H5Sclose(space);
+  H5Dclose(dataset);
+  return result;
 }
 
 }  // namespace iotest

@@ -53,4 +53,13 @@ std::string checkXml(const std::string& text, std::vector<XmlElement>* elements)
 
 std::string readFile(const std::filesystem::path& path);
 
+// Shape and class of dataset `path` in the open HDF5 file `file`; rows = -1 if it does not exist.
+struct DatasetCheck {
+  long long rows = -1;
+  long long columns = -1;
+  bool isInteger = false;
+  std::size_t bytes = 0;
+};
+DatasetCheck inspectDataset(std::int64_t file, const std::string& path);
+
 }  // namespace iotest

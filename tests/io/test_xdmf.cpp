@@ -11,39 +11,6 @@
 #include "protocols/io/frame_writer.h"
 #include "protocols/io/xdmf_document.h"
 
-namespace {
-
-// Shape and class of `path` in `file`, or rows = -1 if it does not exist.
-struct DatasetCheck {
-  long long rows = -1;
-  long long columns = -1;
-  bool isInteger = false;
-  std::size_t bytes = 0;
-};
-
-DatasetCheck inspect(hid_t file, const std::string& path) {
-  DatasetCheck result;
-  H5E_BEGIN_TRY {
-    if (H5Oexists_by_name(file, path.c_str(), H5P_DEFAULT) <= 0) return result;
-  }
-  H5E_END_TRY;
-  hid_t dataset = H5Dopen2(file, path.c_str(), H5P_DEFAULT);
-  hid_t space = H5Dget_space(dataset);
-  hsize_t dims[2] = {0, 0};
-  H5Sget_simple_extent_dims(space, dims, nullptr);
-  hid_t type = H5Dget_type(dataset);
-  result.rows = static_cast<long long>(dims[0]);
-  result.columns = static_cast<long long>(dims[1]);
-  result.isInteger = H5Tget_class(type) == H5T_INTEGER;
-  result.bytes = H5Tget_size(type);
-  H5Tclose(type);
-  H5Sclose(space);
-  H5Dclose(dataset);
-  return result;
-}
-
-}  // namespace
-
 TEST_CASE("the XML checker used below rejects malformed documents", "[unit][io]") {
   // The checker is the oracle of the next test, so it must be able to fail.
   CHECK(iotest::checkXml("<a><b x=\"1\"/></a>", nullptr).empty());
@@ -126,7 +93,7 @@ TEST_CASE("the XDMF sidecar is well-formed and references only existing datasets
     const std::string path = e.text.substr(colon + 1);
     sawStaticPosition |= path == "/static/wall/position";
     sawFrameWallField |= path.find("/wall/wall_oil_fraction") != std::string::npos;
-    const DatasetCheck found = inspect(file, path);
+    const iotest::DatasetCheck found = iotest::inspectDataset(file, path);
     REQUIRE(found.rows >= 0);  // the dataset exists
     // Dimensions are the dataset's exact shape, "rows components" (scalars are rows x 1).
     CHECK(e.attributes.at("Dimensions") ==

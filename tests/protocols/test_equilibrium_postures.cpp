@@ -102,8 +102,14 @@ TEST_CASE("tamponade run writes an equilibrium schedule's report and interfaces"
   INFO(r.output);
   CHECK(r.exitCode == 0);
   CHECK(r.output.find("equilibrium in") != std::string::npos);
-  for (const char* file : {"report.html", "summary.json", "coverage.csv", "interface_1.ply"})
+  for (const char* file : {"report.html", "summary.json", "coverage.csv", "interface_1.ply",
+                           "interfaces.h5", "interfaces.xmf"})
     CHECK(std::filesystem::exists(dir / "out" / file));
+  // The interface as ParaView's time series: the posture's surface at the start of its second.
+  const std::string sidecar = tamponade_test::readText(dir / "out" / "interfaces.xmf");
+  CHECK(sidecar.find("<Grid Name=\"upright\" GridType=\"Uniform\">") != std::string::npos);
+  CHECK(sidecar.find("TopologyType=\"Triangle\"") != std::string::npos);
+  CHECK(sidecar.find("<Time Value=\"0\"/>") != std::string::npos);
   const std::string report = tamponade_test::readText(dir / "out" / "report.html");
   CHECK(report.find("Coverage at each posture's equilibrium") != std::string::npos);
   CHECK(report.find("Fundus map: upright") != std::string::npos);

@@ -123,8 +123,8 @@ TEST_CASE("Equilibrium at Bond 1.2 in a sphere against Young-Laplace",
       const double c = (kAqueous - kOil) * kG / kSigma;
       const double reference =
           testref::youngLaplaceSphere(kR, c, theta * kDeg, 1 - fill).upperWetFraction;
-      const EquilibriumSolution s = solveEquilibrium(
-          sphereProblem(theta, fill, Vec3(0, 0, -kG), kOil, kSigma, kDraftVoxel));
+      const EquilibriumSolution s =
+          solveEquilibrium(sphereProblem(theta, fill, Vec3(0, 0, -kG), kOil, kSigma, kDraftVoxel));
       const double measured = coverageOf(s, theta).fraction;
       INFO("theta " << theta << " fill " << fill << ": " << measured << " vs " << reference);
       CHECK(s.converged);
