@@ -48,16 +48,7 @@ void addTissue(Lines& out, const std::string& prefix, const std::optional<Tissue
           tissue->anchoring.where);
 }
 
-}  // namespace
-
-std::string describeProtocol(const Protocol& p) {
-  Lines out;
-  out.addPlain("# " + p.file.string() + ": valid, format version " +
-               std::to_string(p.formatVersion.value) + "; values in SI units");
-  if (p.title) out.add("title", quoted(p.title->value), p.title->where);
-  out.add("solver", quoted(p.solver.value), p.solver.where);
-
-  const EyeSpec& e = p.eye;
+void addEye(Lines& out, const EyeSpec& e) {
   out.add("eye.kind", quoted(std::string(toString(e.kind.value))), e.kind.where);
   out.add("eye.side", quoted(std::string(toString(e.side.value))), e.side.where);
   out.add("eye.axial_length", e.axialLength, Dimension::kLength);
@@ -83,8 +74,9 @@ std::string describeProtocol(const Protocol& p) {
   }
   addTissue(out, "eye.sclera", e.sclera);
   addTissue(out, "eye.orbital_fat", e.orbitalFat);
+}
 
-  const TamponadeSpec& t = p.tamponade;
+void addTamponade(Lines& out, const TamponadeSpec& t) {
   out.add("tamponade.agent", quoted(t.agent.value), t.agent.where);
   out.add("tamponade.fill", formatQuantity(t.fill.value, Dimension::kFraction), t.fill.where);
   out.add("tamponade.density", t.density, Dimension::kDensity);
@@ -105,25 +97,28 @@ std::string describeProtocol(const Protocol& p) {
   if (!t.isCustom())
     out.addPlain("# properties not given above come from the material library entry '" +
                  t.agent.value + "'");
+}
 
-  out.add("schedule.gravity", formatQuantity(p.schedule.gravity.value, Dimension::kAcceleration),
-          p.schedule.gravity.where);
-  if (p.schedule.start.value != StartName::kFillPlane)
-    out.add("schedule.start", quoted(std::string(toString(p.schedule.start.value))),
-            p.schedule.start.where);
+// The schedule's settings, each posture, and a line with the postures' count and total time.
+void addSchedule(Lines& out, const ScheduleSpec& schedule) {
+  out.add("schedule.gravity", formatQuantity(schedule.gravity.value, Dimension::kAcceleration),
+          schedule.gravity.where);
+  if (schedule.start.value != StartName::kFillPlane)
+    out.add("schedule.start", quoted(std::string(toString(schedule.start.value))),
+            schedule.start.where);
   bool anySteady = false;
-  for (const Posture& posture : p.schedule.postures) anySteady = anySteady || posture.untilSteady;
+  for (const Posture& posture : schedule.postures) anySteady = anySteady || posture.untilSteady;
   if (anySteady) {
     out.add("schedule.steady_window",
-            formatQuantity(p.schedule.steadyWindow.value, Dimension::kDuration),
-            p.schedule.steadyWindow.where);
+            formatQuantity(schedule.steadyWindow.value, Dimension::kDuration),
+            schedule.steadyWindow.where);
     out.add("schedule.steady_coverage_change",
-            formatQuantity(p.schedule.steadyCoverageChange.value, Dimension::kFraction),
-            p.schedule.steadyCoverageChange.where);
+            formatQuantity(schedule.steadyCoverageChange.value, Dimension::kFraction),
+            schedule.steadyCoverageChange.where);
   }
   double total = 0.0;  // [s]
-  for (std::size_t k = 0; k < p.schedule.postures.size(); ++k) {
-    const Posture& s = p.schedule.postures[k];
+  for (std::size_t k = 0; k < schedule.postures.size(); ++k) {
+    const Posture& s = schedule.postures[k];
     const std::string prefix = "schedule.postures[" + std::to_string(k + 1) + "]";
     if (s.name.value == PostureName::kCustom) {
       const auto& g = s.gravityDirection.value;
@@ -142,20 +137,23 @@ std::string describeProtocol(const Protocol& p) {
             s.duration.where);
     total += s.duration.value;
   }
-  out.addPlain("# schedule: " + std::to_string(p.schedule.postures.size()) +
-               (p.schedule.postures.size() == 1 ? " posture" : " postures") + ", at most " +
+  out.addPlain("# schedule: " + std::to_string(schedule.postures.size()) +
+               (schedule.postures.size() == 1 ? " posture" : " postures") + ", at most " +
                formatQuantity(total, Dimension::kDuration) + " (" + formatIn(total, "min") +
                ") simulated");
+}
 
-  const std::span<const std::string_view> effects = effectSwitchNames();
-  for (std::size_t k = 0; k < effects.size(); ++k)
-    out.add(fmt::format("effects.{}", effects[k]),
-            std::string(toString(p.effects.settings[k].value)) +
-                (p.effects.settings[k].value == EffectSetting::kAuto ? " (inferred from the scene)"
-                                                                     : " (forced)"),
-            p.effects.settings[k].where);
+void addEffects(Lines& out, const EffectSwitches& effects) {
+  const std::span<const std::string_view> names = effectSwitchNames();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    out.add(fmt::format("effects.{}", names[k]),
+            std::string(toString(effects.settings[k].value)) +
+                (effects.settings[k].value == EffectSetting::kAuto ? " (inferred from the scene)"
+                                                                   : " (forced)"),
+            effects.settings[k].where);
+}
 
-  const AccuracySpec& a = p.accuracy;
+void addAccuracy(Lines& out, const AccuracySpec& a) {
   out.add("accuracy.preset", quoted(std::string(toString(a.preset.value))), a.preset.where);
   out.add("accuracy.particle_spacing", formatQuantity(a.particleSpacing.value, Dimension::kLength),
           a.particleSpacing.where);
@@ -169,8 +167,9 @@ std::string describeProtocol(const Protocol& p) {
           a.surfaceStress.where);
   out.add("accuracy.wall_model", quoted(std::string(toString(a.wallModel.value))),
           a.wallModel.where);
+}
 
-  const OutputsSpec& o = p.outputs;
+void addOutputs(Lines& out, const OutputsSpec& o) {
   out.add("outputs.folder", quoted(o.folder.value), o.folder.where);
   out.add("outputs.frame_interval", formatQuantity(o.frameInterval.value, Dimension::kDuration),
           o.frameInterval.where);
@@ -179,6 +178,22 @@ std::string describeProtocol(const Protocol& p) {
   out.add("outputs.fields", "[" + fields + "]",
           o.fields.empty() ? SourceLocation{} : o.fields.front().where);
   out.add("outputs.report", o.report.value ? "true" : "false", o.report.where);
+}
+
+}  // namespace
+
+std::string describeProtocol(const Protocol& p) {
+  Lines out;
+  out.addPlain("# " + p.file.string() + ": valid, format version " +
+               std::to_string(p.formatVersion.value) + "; values in SI units");
+  if (p.title) out.add("title", quoted(p.title->value), p.title->where);
+  out.add("solver", quoted(p.solver.value), p.solver.where);
+  addEye(out, p.eye);
+  addTamponade(out, p.tamponade);
+  addSchedule(out, p.schedule);
+  addEffects(out, p.effects);
+  addAccuracy(out, p.accuracy);
+  addOutputs(out, p.outputs);
   return out.take();
 }
 

@@ -213,10 +213,10 @@ StoredField describeStored(hid_t group, const std::string& name, const Place& gr
 
 }  // namespace
 
-CheckpointState readCheckpoint(const std::filesystem::path& path,
-                               const std::map<std::string, sim::FieldRegistry*>& restoreInto) {
-  hdf5::silenceErrorPrinting();
-  const Place root{path.string(), "/"};
+namespace {
+
+// Opens the file and checks that it is a checkpoint of this toolkit's format version.
+Handle openCheckpoint(const std::filesystem::path& path, const Place& root) {
   if (!std::filesystem::exists(path))
     throw IoError(root.file, "", "no checkpoint at this path",
                   "resume a run folder that holds a checkpoint.h5");
@@ -234,15 +234,12 @@ CheckpointState readCheckpoint(const std::filesystem::path& path,
                       " is not this toolkit's (" +
                       std::to_string(layout::kCheckpointFormatVersion) + ")",
                   "resume with the toolkit version that wrote it");
+  return file;
+}
 
-  CheckpointState state;
-  state.time = hdf5::readDoubleAttribute(file.get(), "time", root);
-  state.step = hdf5::readInt64Attribute(file.get(), "step", root);
-  state.dt = hdf5::readDoubleAttribute(file.get(), "dt", root);
-  const std::int64_t storedChecksum = hdf5::readInt64Attribute(file.get(), "checksum", root);
-  state.groups = restoreInto;
-
-  Handle counters = hdf5::openGroup(file.get(), "counters", root);
+// The counters group's attributes, integer or real by their stored type.
+void readCounters(hid_t file, const Place& root, CheckpointState& state) {
+  Handle counters = hdf5::openGroup(file, "counters", root);
   const Place counterPlace = root.at("counters");
   for (const std::string& name : hdf5::attributeNames(counters.get(), counterPlace)) {
     Handle attribute = checked(H5Aopen(counters.get(), name.c_str(), H5P_DEFAULT), counterPlace,
@@ -253,8 +250,10 @@ CheckpointState readCheckpoint(const std::filesystem::path& path,
     else
       state.realCounters[name] = hdf5::readDoubleAttribute(counters.get(), name, counterPlace);
   }
+}
 
-  Handle blobs = hdf5::openGroup(file.get(), "blobs", root);
+void readBlobs(hid_t file, const Place& root, CheckpointState& state) {
+  Handle blobs = hdf5::openGroup(file, "blobs", root);
   for (const std::string& name : hdf5::linkNames(blobs.get(), root.at("blobs"))) {
     const Place place = root.at("blobs/" + name);
     Handle dataset =
@@ -265,10 +264,62 @@ CheckpointState readCheckpoint(const std::filesystem::path& path,
       check(H5Dread(dataset.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, bytes.data()),
             place, "cannot read blob");
   }
+}
 
-  // Validate every group and field before restoring anything: a mismatch leaves the registries
-  // untouched.
-  Handle groups = hdf5::openGroup(file.get(), "groups", root);
+// Checks that a stored group holds exactly the fields `registry` checkpoints, each of the same
+// kind, width and particle count; returns the opened group.
+Handle validateGroup(hid_t groups, const std::string& name, const sim::FieldRegistry& registry,
+                     const Place& groupsPlace) {
+  const Place place = groupsPlace.at(name);
+  Handle group = hdf5::openGroup(groups, name, groupsPlace);
+  const std::vector<std::string> storedFields = hdf5::linkNames(group.get(), place);
+  std::vector<std::string> missing;
+  std::vector<std::string> wanted;
+  for (const auto& field : registry) {
+    if (!field->info().checkpointed) continue;
+    wanted.push_back(field->info().name);
+    if (std::find(storedFields.begin(), storedFields.end(), field->info().name) ==
+        storedFields.end())
+      missing.push_back(field->info().name);
+  }
+  if (!missing.empty())
+    throw IoError(place.file, place.object,
+                  "field(s) " + joinNames(missing) +
+                      " are checkpointed by this run but absent from the checkpoint",
+                  "the checkpoint was written with other effects active; resume with the "
+                  "protocol and toolkit version that wrote it, or start the run afresh");
+  std::vector<std::string> extra;
+  for (const auto& stored : storedFields)
+    if (std::find(wanted.begin(), wanted.end(), stored) == wanted.end()) extra.push_back(stored);
+  if (!extra.empty())
+    throw IoError(place.file, place.object,
+                  "field(s) " + joinNames(extra) +
+                      " are in the checkpoint but this run does not checkpoint them",
+                  "resume with the protocol and toolkit version that wrote the checkpoint");
+  for (const auto& field : registry) {
+    if (!field->info().checkpointed) continue;
+    const StoredField s = describeStored(group.get(), field->info().name, place);
+    const Place fieldPlace = place.at(field->info().name);
+    if (s.kind != field->kind() || s.components != static_cast<hsize_t>(field->components()))
+      throw IoError(place.file, fieldPlace.object,
+                    "stored as " + hdf5::elementName(s.kind, static_cast<int>(s.components)) +
+                        " but this run's field is " +
+                        hdf5::elementName(field->kind(), field->components()),
+                    "resume with the toolkit version that wrote the checkpoint");
+    if (s.rows != registry.size())
+      throw IoError(place.file, fieldPlace.object,
+                    "holds " + std::to_string(s.rows) + " particles but this run has " +
+                        std::to_string(registry.size()),
+                    "resume with the protocol (and accuracy) that wrote the checkpoint");
+  }
+  return group;
+}
+
+// Validates every group and field before anything is restored, so that a mismatch leaves the
+// registries untouched; returns the opened groups in the order of `restoreInto`.
+std::vector<Handle> validateGroups(hid_t file, const Place& root,
+                                   const std::map<std::string, sim::FieldRegistry*>& restoreInto) {
+  Handle groups = hdf5::openGroup(file, "groups", root);
   const Place groupsPlace = root.at("groups");
   const std::vector<std::string> stored = hdf5::linkNames(groups.get(), groupsPlace);
   std::vector<std::string> extraGroups;
@@ -287,53 +338,30 @@ CheckpointState readCheckpoint(const std::filesystem::path& path,
     if (std::find(stored.begin(), stored.end(), name) == stored.end())
       throw IoError(root.file, place.object, "particle group is not in the checkpoint",
                     "resume with the protocol that wrote the checkpoint");
-    Handle group = hdf5::openGroup(groups.get(), name, groupsPlace);
-    const std::vector<std::string> storedFields = hdf5::linkNames(group.get(), place);
-    std::vector<std::string> missing;
-    std::vector<std::string> wanted;
-    for (const auto& field : *registry) {
-      if (!field->info().checkpointed) continue;
-      wanted.push_back(field->info().name);
-      if (std::find(storedFields.begin(), storedFields.end(), field->info().name) ==
-          storedFields.end())
-        missing.push_back(field->info().name);
-    }
-    if (!missing.empty())
-      throw IoError(root.file, place.object,
-                    "field(s) " + joinNames(missing) +
-                        " are checkpointed by this run but absent from the checkpoint",
-                    "the checkpoint was written with other effects active; resume with the "
-                    "protocol and toolkit version that wrote it, or start the run afresh");
-    std::vector<std::string> extra;
-    for (const auto& name2 : storedFields)
-      if (std::find(wanted.begin(), wanted.end(), name2) == wanted.end()) extra.push_back(name2);
-    if (!extra.empty())
-      throw IoError(root.file, place.object,
-                    "field(s) " + joinNames(extra) +
-                        " are in the checkpoint but this run does not checkpoint them",
-                    "resume with the protocol and toolkit version that wrote the checkpoint");
-    for (const auto& field : *registry) {
-      if (!field->info().checkpointed) continue;
-      const StoredField s = describeStored(group.get(), field->info().name, place);
-      const Place fieldPlace = place.at(field->info().name);
-      if (s.kind != field->kind() || s.components != static_cast<hsize_t>(field->components()))
-        throw IoError(root.file, fieldPlace.object,
-                      "stored as " + hdf5::elementName(s.kind, static_cast<int>(s.components)) +
-                          " but this run's field is " +
-                          hdf5::elementName(field->kind(), field->components()),
-                      "resume with the toolkit version that wrote the checkpoint");
-      if (s.rows != registry->size())
-        throw IoError(root.file, fieldPlace.object,
-                      "holds " + std::to_string(s.rows) + " particles but this run has " +
-                          std::to_string(registry->size()),
-                      "resume with the protocol (and accuracy) that wrote the checkpoint");
-    }
-    groupHandles.push_back(std::move(group));
+    groupHandles.push_back(validateGroup(groups.get(), name, *registry, groupsPlace));
   }
+  return groupHandles;
+}
 
+}  // namespace
+
+CheckpointState readCheckpoint(const std::filesystem::path& path,
+                               const std::map<std::string, sim::FieldRegistry*>& restoreInto) {
+  hdf5::silenceErrorPrinting();
+  const Place root{path.string(), "/"};
+  Handle file = openCheckpoint(path, root);
+  CheckpointState state;
+  state.time = hdf5::readDoubleAttribute(file.get(), "time", root);
+  state.step = hdf5::readInt64Attribute(file.get(), "step", root);
+  state.dt = hdf5::readDoubleAttribute(file.get(), "dt", root);
+  const std::int64_t storedChecksum = hdf5::readInt64Attribute(file.get(), "checksum", root);
+  state.groups = restoreInto;
+  readCounters(file.get(), root, state);
+  readBlobs(file.get(), root, state);
+  const std::vector<Handle> groupHandles = validateGroups(file.get(), root, restoreInto);
   std::size_t k = 0;
   for (const auto& [name, registry] : restoreInto) {
-    const Place place = groupsPlace.at(name);
+    const Place place = root.at("groups").at(name);
     for (const auto& field : *registry)
       if (field->info().checkpointed)
         hdf5::restoreFieldDataset(groupHandles[k].get(), *field, place);

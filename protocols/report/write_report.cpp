@@ -119,10 +119,9 @@ void renderSimulatedHeadline(const ReportInput& in, std::ostringstream& s) {
   s << "</p>\n";
 }
 
-}  // namespace
-
-std::string renderReportHtml(const ReportInput& in) {
-  std::ostringstream s;
+// The document head, the title, and the notes above the scenario (an incomplete run, unsteady
+// postures).
+void renderHead(const ReportInput& in, std::ostringstream& s) {
   s << "<!DOCTYPE html>\n<html xmlns=\"http://www.w3.org/1999/xhtml\" lang=\"en\">\n<head>\n"
     << "<meta charset=\"utf-8\"/>\n<title>" << escapeXml(in.title) << "</title>\n<style>" << kStyle
     << "</style>\n</head>\n<body>\n";
@@ -135,7 +134,10 @@ std::string renderReportHtml(const ReportInput& in) {
          "<code>tamponade run --resume</code> on its folder for the whole schedule.</p>\n";
   for (const ReportPosture& posture : in.postures)
     if (posture.endedSteady && !*posture.endedSteady) renderUnsteadyPosture(posture, s);
+}
 
+// The scenario's lines and the headline: the mean coverage over the schedule.
+void renderScenario(const ReportInput& in, std::ostringstream& s) {
   s << "<h2>Scenario</h2>\n";
   for (const auto& p : in.scenario) s << "<p>" << escapeXml(p) << "</p>\n";
   const bool equilibrium = isEquilibriumReport(in);
@@ -151,7 +153,11 @@ std::string renderReportHtml(const ReportInput& in) {
     renderSimulatedHeadline(in, s);
     if (mixed) renderEquilibria(in, s);
   }
+}
 
+void renderCoverageOverTime(const ReportInput& in, std::ostringstream& s) {
+  const bool equilibrium = isEquilibriumReport(in);
+  const bool mixed = !equilibrium && !in.equilibria.empty();
   s << "<h2>Oil coverage over time</h2>\n" << renderCoverageChart(in);
   if (equilibrium)
     s << "<p>Shaded bands are the postures of the schedule, each shown over one nominal second "
@@ -163,7 +169,9 @@ std::string renderReportHtml(const ReportInput& in) {
          "when the SPH-weighted oil fraction of the fluid next to it is at least "
       << formatPercent(kOilCoveredThreshold) << "; a break counts as covered when at least "
       << formatPercent(kBreakCoveredFraction) << " of its area is oil-covered.</p>\n";
+}
 
+void renderRegionTable(const ReportInput& in, std::ostringstream& s) {
   s << "<h2>Coverage by region</h2>\n<table>\n<tr><th>region</th><th>area [mm&#178;]</th>"
        "<th>mean over time</th><th>minimum</th><th>at the end</th><th>dry at the end</th></tr>\n";
   for (std::size_t r = 0; r < kReportedRegions.size(); ++r) {
@@ -177,7 +185,9 @@ std::string renderReportHtml(const ReportInput& in) {
       << formatPercent(last.area > 0 ? last.dryArea / last.area : 0.0) << "</td></tr>\n";
   }
   s << "</table>\n";
+}
 
+void renderTissue(const ReportInput& in, std::ostringstream& s) {
   s << "<h2>Tissue</h2>\n";
   if (in.tissue.empty()) {
     s << "<p>no tissue in the protocol: rigid cavity wall</p>\n";
@@ -189,7 +199,9 @@ std::string renderReportHtml(const ReportInput& in) {
     s << "</ul>\n<p>Displacements from the rest state; the coverage above is measured on the "
          "retina where the tissue has carried it (protocols/tissue/tissue_particles.h).</p>\n";
   }
+}
 
+void renderBreakTable(const ReportInput& in, std::ostringstream& s) {
   s << "<h2>Retinal breaks</h2>\n";
   if (in.breaks.empty()) {
     s << "<p>The protocol has no retinal breaks.</p>\n";
@@ -209,17 +221,21 @@ std::string renderReportHtml(const ReportInput& in) {
     }
     s << "</table>\n";
   }
+}
 
-  if (!equilibrium) {
-    ReportInput last = in;  // the map of the last frame, not of an equilibrium
-    last.equilibria.clear();
-    s << "<h2>Fundus map of oil coverage</h2>\n" << renderFundusMap(last);
-    s << "<p>The retina unrolled around the posterior pole (azimuthal equidistant projection: "
-         "the distance from the centre is the angle from the posterior pole, seen from the "
-         "front, superior up). Dots are wall particles at t = "
-      << formatNumber(in.mapTime, 4) << " s; dashed lines separate the quadrants.</p>\n";
-  }
+// A simulated run's map at its last frame (an equilibrium report draws its maps per posture).
+void renderFundusSection(const ReportInput& in, std::ostringstream& s) {
+  if (isEquilibriumReport(in)) return;
+  ReportInput last = in;  // the map of the last frame, not of an equilibrium
+  last.equilibria.clear();
+  s << "<h2>Fundus map of oil coverage</h2>\n" << renderFundusMap(last);
+  s << "<p>The retina unrolled around the posterior pole (azimuthal equidistant projection: "
+       "the distance from the centre is the angle from the posterior pole, seen from the "
+       "front, superior up). Dots are wall particles at t = "
+    << formatNumber(in.mapTime, 4) << " s; dashed lines separate the quadrants.</p>\n";
+}
 
+void renderPipelineTable(const ReportInput& in, std::ostringstream& s) {
   if (!in.stages.empty())
     s << "<h2>Pipeline</h2>\n<table>\n<tr><th>stage</th><th>in use</th><th>why</th>"
          "<th>time [s]</th><th>calls</th></tr>\n";
@@ -228,13 +244,31 @@ std::string renderReportHtml(const ReportInput& in) {
       << "</td><td>" << escapeXml(st.reason) << "</td><td class=\"n\">"
       << formatNumber(st.seconds, 4) << "</td><td class=\"n\">" << st.calls << "</td></tr>\n";
   if (!in.stages.empty()) s << "</table>\n";
+}
 
+void renderAccuracyTable(const ReportInput& in, std::ostringstream& s) {
   s << "<h2>Accuracy settings</h2>\n<table>\n<tr><th>setting</th><th>value</th>"
        "<th>estimated error / source</th></tr>\n";
   for (const auto& a : in.accuracy)
     s << "<tr><td>" << escapeXml(a.name) << "</td><td>" << escapeXml(a.value) << "</td><td>"
       << escapeXml(a.note) << "</td></tr>\n";
-  s << "</table>\n</body>\n</html>\n";
+  s << "</table>\n";
+}
+
+}  // namespace
+
+std::string renderReportHtml(const ReportInput& in) {
+  std::ostringstream s;
+  renderHead(in, s);
+  renderScenario(in, s);
+  renderCoverageOverTime(in, s);
+  renderRegionTable(in, s);
+  renderTissue(in, s);
+  renderBreakTable(in, s);
+  renderFundusSection(in, s);
+  renderPipelineTable(in, s);
+  renderAccuracyTable(in, s);
+  s << "</body>\n</html>\n";
   return s.str();
 }
 

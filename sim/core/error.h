@@ -17,5 +17,11 @@ class SimError : public std::runtime_error {
 inline void require(bool condition, const std::string& what) {
   if (!condition) throw SimError(what);
 }
+// The same for a fixed message: nothing is built unless it throws. Checks that run every step
+// (Pipeline::step's) would otherwise allocate a std::string each time for a message longer than
+// the 15 characters a string holds without the heap.
+inline void require(bool condition, const char* what) {
+  if (!condition) throw SimError(what);
+}
 
 }  // namespace sim

@@ -4,6 +4,7 @@
 // fluid" to every phase. This is the ordinary mass-weighted density of multiphase DFSPH/WCSPH.
 #pragma once
 
+#include "sim/fluid/neighbor_sums.h"
 #include "sim/world/world.h"
 
 namespace sim {
@@ -16,13 +17,12 @@ void computeDensities(World& world, std::vector<Real>& density);
 // density (weight = 1, Wang et al. 2023 eq. 6) differ only in weight and combine.
 template <class Weight, class Combine>
 void kernelSums(const World& world, std::vector<Real>& out, Weight weight, Combine combine) {
-  const auto& p = world.particles;
   const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
   const Kernel& kernel = world.kernel;
   const Real w0 = kernel.W0();
-  const Index n = static_cast<Index>(p.size());
+  const Index n = static_cast<Index>(world.particles.size());
   out.resize(n);
   // The neighbour pass caches W per pair with the same arithmetic as kernel.W(x_i - x_j), so the
   // cached sums are bit-identical; without a cache (lists built without a kernel) evaluate W.
@@ -44,16 +44,11 @@ void kernelSums(const World& world, std::vector<Real>& out, Weight weight, Combi
     }
     return;
   }
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    Real fluid = weight(i) * w0;
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-      fluid += weight(*j) * kernel.W(p.x[i] - p.x[*j]);
-    Real wall = 0;
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      wall += walls.volume[*b] * kernel.W(p.x[i] - walls.x[*b]);
-    out[i] = combine(i, fluid, wall);
-  }
+  neighborSums(
+      world, [&](Index i) { return weight(i) * w0; },
+      [&](Index, Index j, const Vec3& xij) { return weight(j) * kernel.W(xij); },
+      [&](Index, const Vec3& xib) { return kernel.W(xib); },
+      [&](Index i, Real fluid, Real wall) { out[i] = combine(i, fluid, wall); });
 }
 
 // Number of fluid plus wall neighbours of particle i (used to recognise free-surface particles).

@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "sim/fluid/tait_equation.h"
-
 #include "sim/fluid/indsph_wang2023.h"
+#include "sim/fluid/neighbor_sums.h"
+#include "sim/fluid/tait_equation.h"
 
 namespace sim {
 
@@ -42,9 +42,7 @@ void NumberDensitySolenthaler2008::beginStep(World& world, const StepContext&) {
 
 void NumberDensitySolenthaler2008::correctVelocities(World& world, const StepContext& context) {
   auto& p = world.particles;
-  const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
   const Kernel& kernel = world.kernel;
   const Real h = kernel.supportRadius();
   const Real alphaC = params_.artificialViscosity * params_.speedOfSound;
@@ -67,9 +65,8 @@ void NumberDensitySolenthaler2008::correctVelocities(World& world, const StepCon
                  kernel.gradW(xij);
       }
     }
-    Vec3 g = Vec3::Zero();
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      g += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+    const Vec3 g = wallVolumeSum(world, i, Vec3(Vec3::Zero()),
+                                 [&](const Vec3& xib) -> Vec3 { return kernel.gradW(xib); });
     force -= pi * g / world.restVolumeOf(i);
     acceleration_[i] = force / p.mass[i];
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/fluid/density_compression.h"
+#include "sim/fluid/neighbor_sums.h"
 
 namespace sim {
 namespace {
@@ -76,25 +77,25 @@ void VslsphLi2023::beginStep(World& world, const StepContext&) {
 
 void VslsphLi2023::computeDensities(World& world) {
   auto& p = world.particles;
-  const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
   const Kernel& kernel = world.kernel;
   const Real w0 = kernel.W0();
-  const Index n = static_cast<Index>(p.size());
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    const Real si = scale_[i];
-    Real delta = si * si * si * w0;
-    for (const Index* jp = nf.begin(i); jp != nf.end(i); ++jp)
-      delta += averageW(kernel, (p.x[i] - p.x[*jp]).norm(), si, scale_[*jp]);
-    Real wall = 0;  // walls carry the fixed support h (scale 1)
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      wall += walls.volume[*b] * wallW(kernel, (p.x[i] - walls.x[*b]).norm(), si);
-    delta += wall / world.restVolumeOf(i);
-    numberDensity_[i] = delta;
-    p.density[i] = p.mass[i] * delta;
-  }
+  // Walls carry the fixed support h (scale 1); their volume sum over particle i's rest volume
+  // counts them as neighbours of i's own kind.
+  neighborSums(
+      world,
+      [&](Index i) {
+        const Real si = scale_[i];
+        return si * si * si * w0;
+      },
+      [&](Index i, Index j, const Vec3& xij) {
+        return averageW(kernel, xij.norm(), scale_[i], scale_[j]);
+      },
+      [&](Index i, const Vec3& xib) { return wallW(kernel, xib.norm(), scale_[i]); },
+      [&](Index i, Real fluid, Real wall) {
+        const Real delta = fluid + wall / world.restVolumeOf(i);
+        numberDensity_[i] = delta;
+        p.density[i] = p.mass[i] * delta;
+      });
 }
 
 void VslsphLi2023::computePressuresAndSupports(World& world) {
@@ -117,9 +118,7 @@ void VslsphLi2023::computePressuresAndSupports(World& world) {
 
 Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
   const auto& p = world.particles;
-  const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
   const Kernel& kernel = world.kernel;
   const Real h = kernel.supportRadius();
   const Real alphaC = params_.artificialViscosity * params_.speedOfSound;
@@ -141,11 +140,9 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
     }
     a -= term * gradW;
   }
-  Vec3 g = Vec3::Zero();
-  for (const Index* b = nw.begin(i); b != nw.end(i); ++b) {
-    const Vec3 xib = p.x[i] - walls.x[*b];
-    g += walls.volume[*b] * wallGradW(kernel, xib, xib.norm(), si);
-  }
+  const Vec3 g = wallVolumeSum(world, i, Vec3(Vec3::Zero()), [&](const Vec3& xib) -> Vec3 {
+    return wallGradW(kernel, xib, xib.norm(), si);
+  });
   // Walls have no pressure of their own (p_b = 0 in eq. 17), so a wall pair carries p_i once:
   // Akinci et al. 2012's wall force, as in WCSPH. The mirrored p_b = p_i doubles it; on the
   // settling column that threw a particle over the wall within 0.5 s, with or without variable h.

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 #include <sstream>
+#include <string_view>
 
 #include "sim/core/error.h"
 #include "sim/core/reduction.h"
@@ -54,23 +55,42 @@ void Pipeline::attach(World& world) {
 }
 
 TimeStepInfo Pipeline::chooseTimeStep(const World& world) const {
+  TimeStepInfo info;
+  chooseTimeStep(world, info);
+  return info;
+}
+
+// Writes into `info` in place: step() passes its member, whose strings keep their buffers from
+// step to step, so a stage name longer than a string's 15 in-place characters
+// ("velocity_smoothing", "implicit_viscosity") costs no allocation per step.
+void Pipeline::chooseTimeStep(const World& world, TimeStepInfo& info) const {
   const auto& params = world.parameters();
   const Real d = world.particleSpacing();
   const auto& v = world.particles.v;
   const Real vmax = maxSpeed(v);
-  TimeStepInfo info{params.maxTimeStep, "max", 0, {}};
-  auto limit = [&](Real dt, const std::string& by) {
-    if (dt < info.dt) info = {dt, by, 0, {}};
+  info.dt = params.maxTimeStep;
+  info.limitedBy.assign("max");
+  info.wanted = 0;
+  info.wantedBy.clear();
+  auto limit = [&](Real dt, std::string_view by) {
+    if (dt < info.dt) {
+      info.dt = dt;
+      info.limitedBy.assign(by);
+    }
   };
   // Advection CFL, plus a body-force bound so a scene starting at rest does not take a step in
   // which gravity alone moves particles by more than cfl * d.
   if (vmax > 0) limit(params.cflNumber * d / vmax, "cfl");
   const Real g = world.gravity.norm();
   if (g > 0) limit(params.cflNumber * std::sqrt(d / g), "cfl");
-  limit(solver_->maxTimeStep(world), std::string(solver_->name()));
-  for (const auto& e : effects_) limit(e->maxTimeStep(world), std::string(e->name()));
-  if (info.dt < params.minTimeStep) info = {params.minTimeStep, "min", info.dt, info.limitedBy};
-  return info;
+  limit(solver_->maxTimeStep(world), solver_->name());
+  for (const auto& e : effects_) limit(e->maxTimeStep(world), e->name());
+  if (info.dt < params.minTimeStep) {
+    info.wanted = info.dt;
+    info.wantedBy.assign(info.limitedBy);
+    info.dt = params.minTimeStep;
+    info.limitedBy.assign("min");
+  }
 }
 
 Real Pipeline::step(World& world) {
@@ -85,7 +105,7 @@ Real Pipeline::step(World& world) {
     ScopedStageTimer t(timers_, solverBeginSlot_);
     solver_->beginStep(world, StepContext{world.lastTimeStep});
   }
-  lastStep_ = chooseTimeStep(world);
+  chooseTimeStep(world, lastStep_);
   requireAboveMinimum(world, lastStep_);
   const Real maxDisplacement = world.parameters().maxDisplacement * world.particleSpacing();
   velocityAtStart_ = p.v;
@@ -106,7 +126,10 @@ Real Pipeline::step(World& world) {
     const Real shorter = 0.5 * maxDisplacement / vmax;  // [s]
     if (shorter < world.parameters().minTimeStep)
       requireAboveMinimum(world, {world.parameters().minTimeStep, "min", shorter, "rejected"});
-    lastStep_ = {std::max(shorter, world.parameters().minTimeStep), "rejected", 0, {}};
+    lastStep_.dt = std::max(shorter, world.parameters().minTimeStep);
+    lastStep_.limitedBy.assign("rejected");
+    lastStep_.wanted = 0;
+    lastStep_.wantedBy.clear();
   }
   rejectedSteps_ += attempt;
   const Real dt = lastStep_.dt;

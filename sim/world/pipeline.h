@@ -5,6 +5,7 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "sim/core/stage_timer.h"
@@ -69,6 +70,8 @@ class Pipeline {
   // Throws SimError when `step` had to be raised to the minimum and the world's parameters say
   // to stop then (WorldParameters::stopBelowMinTimeStep).
   void requireAboveMinimum(const World& world, const TimeStepInfo& step) const;
+  // chooseTimeStep() into an existing record, reusing its strings' buffers.
+  void chooseTimeStep(const World& world, TimeStepInfo& info) const;
   // Anchored particles back to velocity 0 after the pressure solve (see pipeline.cpp).
   void constrainFixed(World& world);
 

@@ -1,4 +1,4 @@
-// Shared fixtures of the io tests: a temporary folder, particle sets filled with awkward doubles
+// Shared fixtures of the io tests: particle sets filled with awkward doubles
 // (so "bit-identical" means something), bitwise comparison, and a small strict XML checker.
 #pragma once
 
@@ -13,20 +13,6 @@
 #include "sim/core/particle_set.h"
 
 namespace iotest {
-
-// A fresh folder under $TMPDIR (or /tmp), removed with everything in it on destruction.
-class TempDir {
- public:
-  TempDir();
-  ~TempDir();
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  const std::filesystem::path& path() const { return path_; }
-  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
-
- private:
-  std::filesystem::path path_;
-};
 
 // Fills `particles` with n particles whose values depend on (seed, i): random bit patterns over
 // the full double range plus signed zeros, subnormals and extremes. Registers the extra fields

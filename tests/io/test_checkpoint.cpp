@@ -12,6 +12,7 @@
 #include "io_test_support.h"
 #include "protocols/io/checkpoint.h"
 #include "protocols/io/io_error.h"
+#include "tests/support/scratch_directory.h"
 
 using protocols::CheckpointState;
 using protocols::IoError;
@@ -37,7 +38,7 @@ CheckpointState sampleState(sim::DynamicParticles& fluid, sim::WallParticles& wa
 }  // namespace
 
 TEST_CASE("checkpoints restore every checkpointed field bit-identically", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid, restoredFluid;
   sim::WallParticles walls, restoredWalls;
   iotest::fillFluid(fluid, 400, 11);
@@ -77,7 +78,7 @@ TEST_CASE("checkpoints restore every checkpointed field bit-identically", "[unit
 }
 
 TEST_CASE("checkpoint mismatches are reported by name and restore nothing", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid;
   sim::WallParticles walls;
   iotest::fillFluid(fluid, 50, 1);
@@ -139,7 +140,7 @@ TEST_CASE("checkpoint mismatches are reported by name and restore nothing", "[un
 }
 
 TEST_CASE("a leftover checkpoint.h5.tmp does not affect the previous checkpoint", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid;
   sim::WallParticles walls;
   iotest::fillFluid(fluid, 200, 1);
@@ -175,7 +176,7 @@ TEST_CASE("a leftover checkpoint.h5.tmp does not affect the previous checkpoint"
 }
 
 TEST_CASE("a writer killed while checkpointing leaves the last complete checkpoint", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   constexpr std::size_t kParticles = 20000;  // ~3 MB per checkpoint: the kill lands mid-write
   int pipeFds[2];
   REQUIRE(pipe(pipeFds) == 0);
@@ -228,7 +229,7 @@ TEST_CASE("a writer killed while checkpointing leaves the last complete checkpoi
 }
 
 TEST_CASE("a checkpoint with a flipped bit in its particle data is refused", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid, restored;
   sim::WallParticles walls, restoredWalls;
   iotest::fillFluid(fluid, 400, 21);

@@ -15,6 +15,7 @@
 #include "io_test_support.h"
 #include "protocols/io/frame_reader.h"
 #include "protocols/io/frame_writer.h"
+#include "tests/support/scratch_directory.h"
 
 namespace {
 
@@ -53,7 +54,7 @@ TEST_CASE("a run killed while writing frames leaves every completed frame readab
   const std::pair<int, int> kills[] = {{3, 0},    {3, 700},  {3, 1500}, {3, 2300}, {3, 3100},
                                        {3, 4700}, {3, 6100}, {3, 9000}, {60, 0},   {60, 2900}};
   for (const auto& [warmUp, delay] : kills) {
-    iotest::TempDir dir;
+    const tamponade_test::ScratchDirectory dir("tamponade-io");
     int pipeFds[2];
     REQUIRE(pipe(pipeFds) == 0);
     const pid_t child = fork();

@@ -13,6 +13,7 @@
 #include "protocols/io/frame_reader.h"
 #include "protocols/io/frame_writer.h"
 #include "protocols/io/io_error.h"
+#include "tests/support/scratch_directory.h"
 
 using protocols::FrameReader;
 using protocols::FrameWriter;
@@ -50,7 +51,7 @@ void requireFrameMatches(const FrameReader& reader, std::size_t index, const std
 }  // namespace
 
 TEST_CASE("frames round trip bit-identically with units, times and metadata", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid;
   sim::WallParticles walls;
   iotest::fillWall(walls, 300, 7);
@@ -105,7 +106,7 @@ TEST_CASE("frames round trip bit-identically with units, times and metadata", "[
 }
 
 TEST_CASE("frame datasets are chunked, shuffled and gzip-4 compressed", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid;
   iotest::fillFluid(fluid, 500, 1);
   // Compressible positions (a lattice), as in a real run, to see that compression happens.
@@ -147,7 +148,7 @@ TEST_CASE("frame datasets are chunked, shuffled and gzip-4 compressed", "[unit][
 }
 
 TEST_CASE("float32 frames store each value rounded to float", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid;
   iotest::fillFluid(fluid, 200, 3);
   for (std::size_t i = 0; i < fluid.size(); ++i)
@@ -171,7 +172,7 @@ TEST_CASE("float32 frames store each value rounded to float", "[unit][io]") {
 }
 
 TEST_CASE("series tables append rows and keep their columns", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   {
     FrameWriter writer(dir / "frames.h5", {});
     for (int r = 0; r < 70; ++r)  // more than one 64-row chunk
@@ -202,7 +203,7 @@ TEST_CASE("series tables append rows and keep their columns", "[unit][io]") {
 }
 
 TEST_CASE("resuming drops frames and series rows after the checkpoint", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid;
   sim::WallParticles walls;
   iotest::fillWall(walls, 50, 2);
@@ -240,7 +241,7 @@ TEST_CASE("resuming drops frames and series rows after the checkpoint", "[unit][
 }
 
 TEST_CASE("bad use of frame files is reported with file and object", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid;
   iotest::fillFluid(fluid, 10, 1);
   {
@@ -305,7 +306,7 @@ TEST_CASE("bad use of frame files is reported with file and object", "[unit][io]
 
 TEST_CASE("empty particle groups are written and read back as zero rows", "[unit][io]") {
   // A scene without tissue still passes its (empty) tissue group: nothing may fail on zero rows.
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles tissue;
   {
     FrameWriter writer(dir / "frames.h5", {});
@@ -323,7 +324,7 @@ TEST_CASE("fields spanning several chunks (compressed on all threads) read back 
   // Above 512 KiB a field is split into chunks that are shuffled and deflated in parallel and
   // handed to HDF5 pre-filtered; reading goes through HDF5's own filters, so a byte wrong in
   // the shuffle or the zlib stream would fail here.
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid;
   iotest::fillFluid(fluid, 40000, 21);  // position 0.9 MiB = 2 chunks, stress 2.7 MiB = 6
   sim::FieldRegistry labels;

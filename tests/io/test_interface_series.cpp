@@ -10,6 +10,7 @@
 #include "io_test_support.h"
 #include "protocols/io/interface_series.h"
 #include "protocols/io/io_error.h"
+#include "tests/support/scratch_directory.h"
 
 namespace {
 
@@ -34,7 +35,7 @@ std::vector<T> readAll(hid_t file, const std::string& path, hid_t memoryType, st
 }  // namespace
 
 TEST_CASE("equilibrium interfaces: one Triangle grid per posture, bit for bit", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   const std::vector<protocols::PostureInterface> postures = {
       tetrahedron("supine", 0.0, 1e-3 / 7.0),
       {"full fill", 1.0, {}, {}},
@@ -94,7 +95,7 @@ TEST_CASE("equilibrium interfaces: one Triangle grid per posture, bit for bit", 
 }
 
 TEST_CASE("equilibrium interfaces: nothing to write, or an unwritable folder", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   protocols::writeInterfaceSeries(dir.path(), {{"full fill", 0.0, {}, {}}});
   CHECK_FALSE(std::filesystem::exists(dir / "interfaces.h5"));
   CHECK_FALSE(std::filesystem::exists(dir / "interfaces.xmf"));

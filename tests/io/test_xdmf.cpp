@@ -10,6 +10,7 @@
 #include "io_test_support.h"
 #include "protocols/io/frame_writer.h"
 #include "protocols/io/xdmf_document.h"
+#include "tests/support/scratch_directory.h"
 
 TEST_CASE("the XML checker used below rejects malformed documents", "[unit][io]") {
   // The checker is the oracle of the next test, so it must be able to fail.
@@ -23,7 +24,7 @@ TEST_CASE("the XML checker used below rejects malformed documents", "[unit][io]"
 }
 
 TEST_CASE("the XDMF sidecar is well-formed and references only existing datasets", "[unit][io]") {
-  iotest::TempDir dir;
+  const tamponade_test::ScratchDirectory dir("tamponade-io");
   sim::DynamicParticles fluid;
   sim::WallParticles walls;
   iotest::fillWall(walls, 120, 1);

@@ -14,13 +14,14 @@
 #include "meshing/mesh_measures.h"
 #include "meshing/mesh_writer.h"
 #include "test_meshes.h"
+#include "tests/support/scratch_directory.h"
 
 using namespace meshing;
-using meshing_test::TempDir;
+using tamponade_test::ScratchDirectory;
 
 TEST_CASE("import round trip keeps topology, area and volume in STL, OBJ, PLY and OFF",
           "[unit][import]") {
-  const TempDir dir("roundtrip");
+  const ScratchDirectory dir("tamponade-meshing-roundtrip");
   const TriangleMesh sphere = meshing_test::eyeSphere(3);  // [m]
   const MeshMeasures expected = measureMesh(sphere);
   const std::string files[] = {dir.file("eye.stl"), dir.file("eye.obj"), dir.file("eye.ply"),
@@ -50,7 +51,7 @@ TEST_CASE("import round trip keeps topology, area and volume in STL, OBJ, PLY an
 }
 
 TEST_CASE("units: declared, guessed from size with a warning", "[unit][import]") {
-  const TempDir dir("units");
+  const ScratchDirectory dir("tamponade-meshing-units");
   const TriangleMesh sphere = meshing_test::eyeSphere(2);
   writeMesh(sphere, dir.file("mm.stl"), 1000.0);  // diagonal ~41 units: mm
   writeMesh(sphere, dir.file("m.obj"), 1.0);      // diagonal ~0.041 units: m
@@ -96,7 +97,7 @@ void writeBinaryStl(const std::string& path, const float corner[4][3]) {
 
 TEST_CASE("unreadable files give MeshError naming the file, the problem and the fix",
           "[unit][import]") {
-  const TempDir dir("badfiles");
+  const ScratchDirectory dir("tamponade-meshing-badfiles");
   const TriangleMesh sphere = meshing_test::eyeSphere(1);
   struct Case {
     std::string name;
@@ -189,7 +190,7 @@ TEST_CASE("loadMesh: shipped test meshes load, repair or refuse", "[unit][import
 }
 
 TEST_CASE("import applies nested node transforms (COLLADA)", "[unit][import]") {
-  const TempDir dir("transforms");
+  const ScratchDirectory dir("tamponade-meshing-transforms");
   // A tetrahedron with 10-unit legs under two nodes: outer scales by 2 and moves +5 in x, inner
   // moves +1 in y (before the outer scale, so +2 in the end).
   meshing_test::writeText(dir.file("tet.dae"), R"DAE(<?xml version="1.0" encoding="utf-8"?>

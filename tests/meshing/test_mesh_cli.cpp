@@ -10,6 +10,7 @@
 
 #include "meshing/mesh_writer.h"
 #include "test_meshes.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 
 using namespace meshing;
@@ -17,7 +18,7 @@ using namespace meshing;
 using tamponade_test::runTamponade;
 
 TEST_CASE("mesh check: exit codes and messages for the bad-mesh table", "[unit][cli]") {
-  const meshing_test::TempDir dir("cli");
+  const tamponade_test::ScratchDirectory dir("tamponade-meshing-cli");
   const TriangleMesh sphere = meshing_test::eyeSphere(3);  // [m]
   writeMesh(sphere, dir.file("good.stl"), 1000.0);
   TriangleMesh inverted = sphere;
@@ -76,7 +77,7 @@ TEST_CASE("mesh check: exit codes and messages for the bad-mesh table", "[unit][
 }
 
 TEST_CASE("mesh sample: counts, spacing statistics, PLY output and strict lengths", "[unit][cli]") {
-  const meshing_test::TempDir dir("cli-sample");
+  const tamponade_test::ScratchDirectory dir("tamponade-meshing-cli-sample");
   writeMesh(meshing_test::eyeSphere(3), dir.file("eye.stl"), 1000.0);
   const std::string eye = dir.file("eye.stl");
   const auto ok =

@@ -1,8 +1,6 @@
-// Shared helpers of the meshing tests: temporary directories and meshes built in code (no big
+// Shared helpers of the meshing tests: meshes built in code (no big
 // files in the repository).
 #pragma once
-
-#include <unistd.h>
 
 #include <cstdio>
 #include <filesystem>
@@ -13,25 +11,6 @@
 #include "meshing/triangle_mesh.h"
 
 namespace meshing_test {
-
-// A fresh directory under the system temp dir, removed at the end of the scope.
-class TempDir {
- public:
-  explicit TempDir(const std::string& name)
-      : path_(std::filesystem::temp_directory_path() /
-              ("tamponade-meshing-" + name + "-" + std::to_string(::getpid()))) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  std::string file(const std::string& name) const { return (path_ / name).string(); }
-
- private:
-  std::filesystem::path path_;
-};
 
 inline void writeText(const std::string& path, const std::string& text) {
   std::ofstream(path, std::ios::binary) << text;

@@ -18,6 +18,7 @@
 
 #include "meshing/make_icosphere.h"
 #include "meshing/mesh_writer.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 
 namespace fs = std::filesystem;
@@ -96,8 +97,8 @@ meshing::TriangleMesh twoSpheres() {
 
 TEST_CASE("bad input: refused with exit 2, file:line:column or file, the cause, no result",
           "[unit][cli][bad-input]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_bad_input_test";
-  fs::remove_all(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_bad_input_test");
+  const std::filesystem::path& dir = scratch.path();
   fs::create_directories(dir / "meshdir");
   // Meshes: a directory, a device, a link loop, a PLY without end_header, a sphere 1 unit across
   // (1 mm, or 1 m), two overlapping spheres, a surface of zero-area faces.
@@ -268,15 +269,13 @@ TEST_CASE("bad input: refused with exit 2, file:line:column or file, the cause, 
     for (const std::string& text : c.mustSay) CHECK(r.output.find(text) != std::string::npos);
     CHECK(resultFilesIn(dir).empty());
   }
-  fs::remove_all(dir);
 }
 
 TEST_CASE(
     "bad input: a checkpoint of another protocol is refused, and a stopped run's report says so",
     "[unit][cli][bad-input]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_bad_checkpoint_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_bad_checkpoint_test");
+  const std::filesystem::path& dir = scratch.path();
   // Two protocols of the same eye and particles, different schedules: their checkpoints have the
   // same particle counts and fields, so only the protocol's hash tells them apart.
   writeText(dir / "a.toml", protocolWith(kEmmetropic, "name = \"supine\"\nduration = \"1 s\"\n"));
@@ -316,5 +315,4 @@ TEST_CASE(
     CHECK_FALSE(
         nlohmann::json::parse(readText(dir / "run_a" / "summary.json")).at("complete").get<bool>());
   }
-  fs::remove_all(dir);
 }

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 
 namespace fs = std::filesystem;
@@ -109,9 +110,8 @@ const std::vector<BadOption> kBadOptions = {
 
 TEST_CASE("command line: a bad option exits 2 naming the option, before anything runs",
           "[unit][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_command_options_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_command_options_test");
+  const std::filesystem::path& dir = scratch.path();
   for (const BadOption& c : kBadOptions) {
     const tamponade_test::CommandResult r = runTamponade(c.arguments, dir);
     INFO("tamponade " << c.arguments << "\n" << r.output);
@@ -121,7 +121,6 @@ TEST_CASE("command line: a bad option exits 2 naming the option, before anything
   }
   // Nothing was written.
   CHECK(fs::is_empty(dir));
-  fs::remove_all(dir);
 }
 
 TEST_CASE("command line: --help on every command and sub-command explains its options",

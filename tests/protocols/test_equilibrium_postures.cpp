@@ -12,6 +12,7 @@
 #include "protocols/format/protocol_error.h"
 #include "protocols/run/run_equilibrium.h"
 #include "protocols/scenario/scenario.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 
 using namespace protocols;
@@ -35,10 +36,8 @@ std::string posture(const std::string& name, const std::string& duration = "equi
 std::vector<FrameCoverage> postureCoverages(const std::string& text) {
   const Protocol p = parseProtocolText(text, "eq.toml");
   Scenario s = assembleScenario(p);
-  const std::filesystem::path out =
-      std::filesystem::temp_directory_path() / "tamponade_test_equilibrium_postures";
-  std::filesystem::remove_all(out);
-  std::filesystem::create_directories(out);
+  const tamponade_test::ScratchDirectory scratch("tamponade_test_equilibrium_postures");
+  const std::filesystem::path& out = scratch.path();
   RunOptions options;
   options.outputFolder = out;
   std::vector<FrameCoverage> perPosture;
@@ -63,7 +62,6 @@ std::vector<FrameCoverage> postureCoverages(const std::string& text) {
     }
     perPosture.push_back(f);
   }
-  std::filesystem::remove_all(out);
   return perPosture;
 }
 
@@ -93,10 +91,8 @@ TEST_CASE("Equilibrium postures of the emmetropic eye at 90 % silicone oil agree
 
 TEST_CASE("tamponade run writes an equilibrium schedule's report and interfaces",
           "[unit][equilibrium]") {
-  const std::filesystem::path dir =
-      std::filesystem::temp_directory_path() / "tamponade_test_equilibrium_cli";
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_test_equilibrium_cli");
+  const std::filesystem::path& dir = scratch.path();
   { std::ofstream(dir / "eq.toml") << eyeProtocol(posture("upright")); }
   const auto r = tamponade_test::runTamponade("run eq.toml --out out --threads 1", dir);
   INFO(r.output);
@@ -121,7 +117,6 @@ TEST_CASE("tamponade run writes an equilibrium schedule's report and interfaces"
   const auto rebuilt = tamponade_test::runTamponade("report out", dir);
   CHECK(rebuilt.exitCode == 2);
   CHECK(rebuilt.output.find("holds equilibria") != std::string::npos);
-  std::filesystem::remove_all(dir);
 }
 
 TEST_CASE("Equilibrium schedules: protocol errors name the key", "[unit][equilibrium]") {

@@ -15,6 +15,7 @@
 #include "protocols/format/parse_protocol.h"
 #include "protocols/run/run_equilibrium.h"
 #include "protocols/run/run_scenario.h"
+#include "tests/support/scratch_directory.h"
 
 namespace fs = std::filesystem;
 using namespace protocols;
@@ -40,14 +41,16 @@ std::vector<fs::path> exampleProtocols() {
 TEST_CASE("every shipped example protocol assembles and runs", "[unit][examples]") {
   const std::vector<fs::path> files = exampleProtocols();
   REQUIRE(files.size() >= 10);
-  const fs::path out = fs::temp_directory_path() / "tamponade_test_example_runs";
+  const tamponade_test::ScratchDirectory scratch("tamponade_test_example_runs");
+  int count = 0;
   for (const fs::path& file : files) {
     INFO(file.filename().string());
     Protocol protocol = parseProtocol(file);
     protocol.accuracy.particleSpacing.value = kTrialSpacing;
     Scenario scenario = assembleScenario(protocol);
     CHECK(scenario.world->particles.size() > 100);
-    fs::remove_all(out);
+    // A fresh output folder for each example: a run refuses one holding another protocol's files.
+    const fs::path out = scratch / std::to_string(count++);
     fs::create_directories(out);
     RunOptions run;
     run.outputFolder = out;
@@ -65,5 +68,4 @@ TEST_CASE("every shipped example protocol assembles and runs", "[unit][examples]
       for (const sim::Vec3& v : scenario.world->particles.v) REQUIRE(v.allFinite());
     }
   }
-  fs::remove_all(out);
 }

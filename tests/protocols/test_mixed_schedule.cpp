@@ -20,6 +20,7 @@
 #include "protocols/run/rebuild_report.h"
 #include "protocols/run/run_scenario.h"
 #include "sim/core/particle_set.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 #include "xml_checker.h"
 
@@ -102,9 +103,9 @@ TEST_CASE("A simulated posture after postures at equilibrium starts from the las
   // The test can tell the two starts apart: they differ by far more than its tolerance.
   REQUIRE(std::abs(supine[0] - upright[0]) > 0.02);
 
-  const fs::path out = fs::temp_directory_path() / "tamponade_test_mixed_start";
-  fs::remove_all(out);
-  fs::create_directories(out);
+  const tamponade_test::ScratchDirectory scratch("tamponade_test_mixed_start");
+
+  const std::filesystem::path& out = scratch.path();
   RunOptions run;
   run.outputFolder = out;
   const RunSummary summary = runScenario(mixed, s, run);
@@ -129,14 +130,12 @@ TEST_CASE("A simulated posture after postures at equilibrium starts from the las
   CHECK(json.at("equilibria").at(1).at("posture") == "supine");
   CHECK(json.at("equilibria").at(1).at("regions").at(0).at("fraction").get<double>() ==
         Approx(rows[2][1]).margin(1e-6));
-  fs::remove_all(out);
 }
 
 TEST_CASE("tamponade run: a mixed schedule's outputs, resumed bit-identically",
           "[unit][equilibrium][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_test_mixed_cli";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_test_mixed_cli");
+  const std::filesystem::path& dir = scratch.path();
   // 40 ms upright (about 25 INDSPH steps): long enough to stop at step 16, a z-sort step.
   std::ofstream(dir / "mixed.toml")
       << eyeProtocol(posture("supine", "equilibrium") + posture("upright", "40 ms"));
@@ -199,5 +198,4 @@ TEST_CASE("tamponade run: a mixed schedule's outputs, resumed bit-identically",
   CHECK(plan.exitCode == 0);
   CHECK(plan.output.find("the schedule begins with 1 posture at equilibrium") != std::string::npos);
   CHECK(plan.output.find("equilibria   d [mm]   simulation        total") != std::string::npos);
-  fs::remove_all(dir);
 }

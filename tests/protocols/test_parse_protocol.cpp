@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "protocols/format/parse_protocol.h"
+#include "tests/support/scratch_directory.h"
 
 namespace fs = std::filesystem;
 using protocols::ProtocolError;
@@ -307,7 +308,8 @@ TEST_CASE("values, defaults and locations are kept", "[unit][protocol]") {
 }
 
 TEST_CASE("an imported mesh is found relative to the protocol file", "[unit][protocol]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_protocols_test_mesh";
+  const tamponade_test::ScratchDirectory scratch("tamponade_protocols_test_mesh");
+  const std::filesystem::path& dir = scratch.path();
   fs::create_directories(dir / "meshes");
   std::ofstream(dir / "meshes" / "eye.stl") << "solid eye\nendsolid eye\n";
   const std::string text =
@@ -317,7 +319,6 @@ TEST_CASE("an imported mesh is found relative to the protocol file", "[unit][pro
   CHECK(p.eye.mesh->path.value == (dir / "meshes" / "eye.stl").lexically_normal());
   CHECK(p.eye.mesh->pathAsWritten == "meshes/eye.stl");
   CHECK(p.eye.mesh->metresPerUnit == 1e-3);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("every shipped example protocol parses", "[unit][protocol][examples]") {

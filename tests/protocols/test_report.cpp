@@ -14,6 +14,7 @@
 #include "protocols/report/render_fundus_map.h"
 #include "protocols/report/report_format.h"
 #include "protocols/report/write_report.h"
+#include "tests/support/scratch_directory.h"
 #include "xml_checker.h"
 
 using namespace protocols;
@@ -167,9 +168,8 @@ TEST_CASE("summary.json stays valid JSON when a run has no averages yet", "[unit
 
 TEST_CASE("coverage.csv and summary.json hold the frames and the averages", "[unit][report]") {
   const ReportInput in = constructedRun();
-  const auto folder = std::filesystem::temp_directory_path() / "tamponade_test_report";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
+  const tamponade_test::ScratchDirectory scratch("tamponade_test_report");
+  const std::filesystem::path& folder = scratch.path();
   writeReport(in, folder);
   for (const char* f : {"report.html", "coverage.csv", "summary.json"})
     CHECK(std::filesystem::file_size(folder / f) > 100);
@@ -193,5 +193,4 @@ TEST_CASE("coverage.csv and summary.json hold the frames and the averages", "[un
   CHECK(json.at("title").get<std::string>() == "Test eye <OD> & 90 % fill");
   // Bad folder: IoError naming the file.
   CHECK_THROWS_WITH(writeReport(in, folder / "missing"), Catch::Contains("missing/report.html"));
-  std::filesystem::remove_all(folder);
 }

@@ -23,6 +23,7 @@
 #include "protocols/run/run_scenario.h"
 #include "protocols/run/steady_state.h"
 #include "sim/core/particle_set.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 #include "xml_checker.h"
 
@@ -148,9 +149,8 @@ TEST_CASE("until steady: a settling eye ends its posture before the maximum",
   // with oil and aqueous the meniscus keeps forming along the wall for longer than 0.6 s since
   // gravity acts relative to the aqueous (docs/methods/solvers.md), so only one fluid settles in
   // time.
-  const fs::path dir = fs::temp_directory_path() / "tamponade_steady_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_steady_test");
+  const std::filesystem::path& dir = scratch.path();
   std::ofstream(dir / "steady.toml") << eyeProtocol(
       "[schedule]\nsteady_window = \"0.05 s\"\nsteady_coverage_change = \"1 %\"\n"
       "[[schedule.postures]]\nname = \"supine\"\nduration = \"until steady\"\nmax_duration = \"0.6 "
@@ -179,7 +179,6 @@ TEST_CASE("until steady: a settling eye ends its posture before the maximum",
   fs::remove(dir / "a" / "report.html");
   REQUIRE(runTamponade("report a", dir).exitCode == 0);
   CHECK(readText(dir / "a" / "report.html") == html);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("until steady: a posture stopped at its maximum says so, with its equilibrium distance",
@@ -189,9 +188,8 @@ TEST_CASE("until steady: a posture stopped at its maximum says so, with its equi
   // summary.json, and carry the retina coverage at the posture's static equilibrium. That
   // coverage must be the one an equilibrium run of the same eye and posture reports (the same
   // solver at the same preset's voxel, reached through the report instead of the schedule).
-  const fs::path dir = fs::temp_directory_path() / "tamponade_unsteady_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_unsteady_test");
+  const std::filesystem::path& dir = scratch.path();
   std::ofstream(dir / "unsteady.toml") << eyeProtocol(
       "[schedule]\nsteady_window = \"0.05 s\"\n"
       "[[schedule.postures]]\nname = \"upright\"\nduration = \"until steady\"\n"
@@ -233,14 +231,12 @@ TEST_CASE("until steady: a posture stopped at its maximum says so, with its equi
   fs::remove(dir / "a" / "report.html");
   REQUIRE(runTamponade("report a", dir).exitCode == 0);
   CHECK(readText(dir / "a" / "report.html") == html);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("outputs.fields: only the named fields are written, unknown names are located",
           "[unit][run][fields][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_fields_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_fields_test");
+  const std::filesystem::path& dir = scratch.path();
   const std::string schedule =
       "[schedule]\n[[schedule.postures]]\nname = \"supine\"\nduration = \"2 ms\"\n";
   std::ofstream(dir / "fields.toml") << eyeProtocol(
@@ -272,14 +268,12 @@ TEST_CASE("outputs.fields: only the named fields are written, unknown names are 
         std::string::npos);
   CHECK(bad.output.find("did you mean 'pressure'") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "b"));
-  fs::remove_all(dir);
 }
 
 TEST_CASE("SIGTERM: checkpoint, readable frames, exit 143, resume equals the continuous run",
           "[unit][run][signal][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_sigterm_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_sigterm_test");
+  const std::filesystem::path& dir = scratch.path();
   // 60 ms simulated, ~700 steps (~5 s): long enough to be interrupted after its first frame.
   std::ofstream(dir / "long.toml") << eyeProtocol(
       "[schedule]\n[[schedule.postures]]\nname = \"supine\"\nduration = \"30 ms\"\n"
@@ -360,7 +354,6 @@ TEST_CASE("SIGTERM: checkpoint, readable frames, exit 143, resume equals the con
   CHECK(a.frames()[last].step == b.frames()[last].step);
   for (const char* field : {sim::field::kPosition, sim::field::kVelocity})
     CHECK(a.readField(last, "fluid", field).reals == b.readField(last, "fluid", field).reals);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("the README's default protocol stays a few-second equilibrium run",

@@ -17,6 +17,7 @@
 #include "protocols/format/protocol_error.h"
 #include "protocols/run/plan_scenario.h"
 #include "protocols/scenario/scenario.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 
 namespace fs = std::filesystem;
@@ -178,9 +179,8 @@ TEST_CASE("heavy oil sinks, the physiological sclera stays rigid", "[unit][scena
 }
 
 TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenario]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_scenario_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_scenario_test");
+  const std::filesystem::path& dir = scratch.path();
   const std::string base =
       "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OS\"\n"
       "[tamponade]\nagent = \"silicone_oil_1000\"\n";
@@ -233,14 +233,12 @@ TEST_CASE("forced effects reach the pipeline, one-fluid scenes", "[unit][scenari
     CHECK_FALSE(one.world->particles.fields.has("colour_gradient"));
     CHECK_FALSE(one.world->particles.fields.has("reference_position"));
   }
-  fs::remove_all(dir);
 }
 
 TEST_CASE("tamponade plan: tiny protocol prints counts, stages, memory and estimates",
           "[unit][scenario][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_plan_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_plan_test");
+  const std::filesystem::path& dir = scratch.path();
   const CommandResult r = runTamponade("plan '" + (kProtocols / "tiny.toml").string() + "'", dir);
   INFO(r.output);
   CHECK(r.exitCode == 0);
@@ -262,14 +260,12 @@ TEST_CASE("tamponade plan: tiny protocol prints counts, stages, memory and estim
   CHECK(r.output.find(std::to_string(s.phases[1].count)) != std::string::npos);
   CHECK(r.output.find(std::to_string(s.world->walls.size())) != std::string::npos);
   CHECK(fs::is_empty(dir));  // plan writes nothing
-  fs::remove_all(dir);
 }
 
 TEST_CASE("tamponade plan: a bad protocol exits 2 with file:line:col and creates nothing",
           "[unit][scenario][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_plan_bad_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_plan_bad_test");
+  const std::filesystem::path& dir = scratch.path();
   std::ofstream(dir / "bad.toml")
       << "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
          "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = 1.5\n"
@@ -283,7 +279,6 @@ TEST_CASE("tamponade plan: a bad protocol exits 2 with file:line:col and creates
   CHECK(r.output.find("nothing was run") != std::string::npos);
   CHECK(!fs::exists(dir / "out"));
   CHECK(runTamponade("plan", dir).exitCode == 2);  // usage
-  fs::remove_all(dir);
 }
 
 TEST_CASE("a spacing coarser than the draft preset is noted as a trial run", "[unit][scenario]") {
@@ -337,9 +332,9 @@ TEST_CASE("a contact angle outside the tested range is noted in plan and report"
   CHECK(high.find("flatter than asked") != std::string::npos);
   CHECK(contactAngleRangeNote(15.0).find("spread less") != std::string::npos);
 
-  const fs::path dir = fs::temp_directory_path() / "tamponade_contact_angle_note_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_contact_angle_note_test");
+
+  const std::filesystem::path& dir = scratch.path();
   const std::string base =
       "format_version = 1\n[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
       "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"80 %\"\n";
@@ -372,5 +367,4 @@ TEST_CASE("a contact angle outside the tested range is noted in plan and report"
   CHECK_FALSE(single.layeredWalls);
   CHECK(wallNoted(single, RetinaWall::kSingleLayer));
   CHECK_FALSE(wallNoted(single, RetinaWall::kLayered));
-  fs::remove_all(dir);
 }

@@ -20,6 +20,7 @@
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/frame_reader.h"
 #include "sim/core/particle_set.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 #include "xml_checker.h"
 
@@ -80,9 +81,8 @@ std::string pressureSolveJson(const std::string& text) {
 
 TEST_CASE("tamponade run: a short protocol writes frames, series and a well-formed report",
           "[unit][scenario][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_run_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_run_test");
+  const std::filesystem::path& dir = scratch.path();
   std::ofstream(dir / "short.toml") << kShortProtocol;
   const CommandResult r = runTamponade("run short.toml --out a --threads 1", dir);
   INFO(r.output);
@@ -155,7 +155,6 @@ TEST_CASE("tamponade run: a short protocol writes frames, series and a well-form
   CHECK(bad.exitCode == 2);
   CHECK(bad.output.find("bad.toml:3:") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "c"));
-  fs::remove_all(dir);
 }
 
 TEST_CASE(
@@ -165,9 +164,8 @@ TEST_CASE(
   // INDSPH keeps state between steps (warm-start pressures, the implicit viscosity's previous
   // solution, the adaptive dt); a checkpoint that missed any of it would change the resumed
   // run's steps and so its last frame. Stopped at step 16 (supine) and 32 (upright).
-  const fs::path dir = fs::temp_directory_path() / "tamponade_run_indsph_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_run_indsph_test");
+  const std::filesystem::path& dir = scratch.path();
   std::ofstream(dir / "ind.toml") << kIndsphProtocol;
   const CommandResult whole = runTamponade("run ind.toml --out a --threads 1", dir);
   INFO(whole.output);
@@ -199,15 +197,13 @@ TEST_CASE(
   fs::remove(dir / "a" / "summary.json");
   REQUIRE(runTamponade("report a", dir).exitCode == 0);
   CHECK(pressureSolveJson(readText(dir / "a" / "summary.json")) == solve);
-  fs::remove_all(dir);
 }
 
 TEST_CASE(
     "tamponade bench accuracy: a table of tolerance against cost and coverage, bad usage exits 2",
     "[unit][scenario][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_bench_accuracy_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_bench_accuracy_test");
+  const std::filesystem::path& dir = scratch.path();
   std::ofstream(dir / "ind.toml") << kIndsphProtocol;
   const CommandResult r =
       runTamponade("bench accuracy ind.toml --tolerances 0.001,0.005 --out acc --threads 1", dir);
@@ -278,5 +274,4 @@ TEST_CASE(
   CHECK(bad.exitCode == 2);
   CHECK(bad.output.find("bad.toml:3:") != std::string::npos);
   CHECK_FALSE(fs::exists(dir / "x"));
-  fs::remove_all(dir);
 }

@@ -30,6 +30,7 @@
 #include "sim/solid/fixed_particles.h"
 #include "sim/world/pipeline.h"
 #include "sim/world/stage_registry.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 
 namespace fs = std::filesystem;
@@ -548,8 +549,8 @@ TEST_CASE("tissue: the walls around the tissues open no wider than the rigid cav
 
 TEST_CASE("tissue: the rule decides in both directions and a protocol can force either",
           "[unit][protocol][tissue]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_tissue_decide";
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_tissue_decide");
+  const std::filesystem::path& dir = scratch.path();
   // 2 MPa in auto: rigid; forced elastic: elastic, marked forced.
   const std::string stiff = paperWith("youngs_modulus = \"10 kPa\"\nmode = \"elastic\"",
                                       "youngs_modulus = \"2 MPa\"\nmode = \"auto\"");
@@ -580,7 +581,6 @@ TEST_CASE("tissue: the rule decides in both directions and a protocol can force 
   // ratio R^2 / (2 t^2) ~ 340 at R ~ 11 mm, t = 0.42 mm
   CHECK(membrane.tissues[0].estimatedDisplacement >
         100.0 * soft10.tissues[0].estimatedDisplacement);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("tissue: the example protocols validate, and plan prints each tissue's choice",
@@ -619,9 +619,8 @@ const PaperRun& paperRun() {
   static const PaperRun run = [] {
     PaperRun r;
     // One folder per process: CTest runs the two cases sharing this run as parallel processes.
-    const fs::path out =
-        fs::temp_directory_path() / ("tamponade_tissue_run_" + std::to_string(::getpid()));
-    fs::remove_all(out);
+    const tamponade_test::ScratchDirectory scratch("tamponade_tissue_run");
+    const fs::path out = scratch / "out";
     fs::create_directories(out);
     // A few steps: two postures of 12 ms (the protocol's INDSPH takes ~1.7 ms steps at d = 1.2 mm),
     // written as a protocol file so that the run records, and `report DIR` re-reads, the
@@ -630,7 +629,7 @@ const PaperRun& paperRun() {
     for (std::size_t at; (at = text.find("duration = \"0.3 s\"")) != std::string::npos;)
       text.replace(at, 18, "duration = \"0.012 s\"");
     text.replace(text.find("frame_interval = \"0.05 s\""), 25, "frame_interval = \"0.005 s\"");
-    const fs::path shortened = out.string() + ".toml";
+    const fs::path shortened = scratch / "out.toml";
     std::ofstream(shortened) << text;
     r.protocol = parseProtocol(shortened.string());
     REQUIRE(r.protocol.schedule.postures.size() == 2);
@@ -646,8 +645,6 @@ const PaperRun& paperRun() {
     r.series = FrameReader(out / "frames.h5").seriesNames();
     rebuildReport(out);  // recomputes coverage and tissue measures from the frames' ids
     r.rebuiltSummaryJson = tamponade_test::readText(out / "summary.json");
-    fs::remove_all(out);
-    fs::remove(shortened);
     return r;
   }();
   return run;
@@ -817,8 +814,8 @@ TEST_CASE(
 
 TEST_CASE("tissue: bad input is reported at its place with exit code 2",
           "[unit][protocol][tissue][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_tissue_bad";
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_tissue_bad");
+  const std::filesystem::path& dir = scratch.path();
   struct Case {
     const char* name;
     std::string text;
@@ -873,7 +870,6 @@ TEST_CASE("tissue: bad input is reported at its place with exit code 2",
   // The library throws ProtocolError for the mesh case (what the CLI turns into exit code 2).
   const std::string meshText = cases.back().text;
   CHECK_THROWS_AS(assembleScenario(parseProtocolText(meshText, dir / "mesh.toml")), ProtocolError);
-  fs::remove_all(dir);
 }
 
 // Elastic tissue, validation 6 (docs/methods/elasticity.md): a stiff (2 MPa, human) sclera around
@@ -896,11 +892,8 @@ TEST_CASE(
   const std::string version = "format_version = 1\n";
   REQUIRE(text.find(version) != std::string::npos);
   text.replace(text.find(version), version.size(), version + "solver = \"indsph\"\n");
-  const fs::path dir =
-      fs::temp_directory_path() / ("tamponade_stiff_" + std::to_string(::getpid()));
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory dir("tamponade_stiff");
   Protocol p = parseProtocolText(text, dir / "stiff.toml");
-  fs::remove_all(dir);
   Scenario s = assembleScenario(p);
   REQUIRE(s.pipelineOptions.solver == "indsph");
   REQUIRE(s.tissues[0].decision.elastic);

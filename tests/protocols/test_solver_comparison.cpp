@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "protocols/bench/solver_comparison.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 
 namespace {
@@ -62,12 +63,10 @@ TEST_CASE("bench solvers: CSV and markdown tables from made-up runs", "[unit][be
         "time_s,step,iterations,cumulative_iterations,interface_gap_d\n0.001,1,5,5,1\n0.002,2,10,"
         "15,1.04\n");
 
-  const auto dir = std::filesystem::temp_directory_path() / "tamponade_bench_tables";
-  std::filesystem::remove_all(dir);
+  const tamponade_test::ScratchDirectory dir("tamponade_bench_tables");
   protocols::writeSolverComparison(runs, dir / "out");
   CHECK(tamponade_test::readText(dir / "out" / "solvers.csv") == csv);
   CHECK(tamponade_test::readText(dir / "out" / "solvers.md") == md);
   CHECK(std::filesystem::exists(dir / "out" / "compression_number_density_1-3.csv"));
   CHECK(std::filesystem::exists(dir / "out" / "iterations_indsph_1-75.csv"));
-  std::filesystem::remove_all(dir);
 }

@@ -12,6 +12,7 @@
 #include "protocols/format/protocol_error.h"
 #include "protocols/sweep/sweep_plan.h"
 #include "protocols/sweep/sweep_range.h"
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 
 using namespace protocols;
@@ -24,10 +25,9 @@ const std::filesystem::path kSource = TAMPONADE_SOURCE_DIR;
 
 // A fresh folder holding `base.toml` (one upright equilibrium posture of the emmetropic eye, 90 %
 // silicone oil) and `sweep.toml` with the given text.
-std::filesystem::path sweepFolder(const std::string& name, const std::string& sweepText) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tamponade_test_sweep_" + name);
-  std::filesystem::remove_all(dir);
-  std::filesystem::create_directories(dir);
+tamponade_test::ScratchDirectory sweepFolder(const std::string& name,
+                                             const std::string& sweepText) {
+  tamponade_test::ScratchDirectory dir("tamponade_test_sweep_" + name);
   std::ofstream(dir / "base.toml")
       << "format_version = 1\ntitle = \"Base\"\n"
          "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "tests/support/scratch_directory.h"
 #include "tests/support/tamponade_command.h"
 
 namespace fs = std::filesystem;
@@ -14,9 +15,8 @@ using tamponade_test::runTamponade;
 
 TEST_CASE("tamponade validate: bad protocol exits 2 with file:line:column",
           "[unit][protocol][cli]") {
-  const fs::path dir = fs::temp_directory_path() / "tamponade_validate_cli_test";
-  fs::remove_all(dir);
-  fs::create_directories(dir);
+  const tamponade_test::ScratchDirectory scratch("tamponade_validate_cli_test");
+  const std::filesystem::path& dir = scratch.path();
   std::ofstream(dir / "bad.toml") << "format_version = 1\n"
                                      "[eye]\n"
                                      "kind = \"emmetropic\"\n"
@@ -38,7 +38,6 @@ TEST_CASE("tamponade validate: bad protocol exits 2 with file:line:column",
   CHECK(r.output.find("1 problem found; nothing was run.") != std::string::npos);
   // Nothing was created: the directory still holds only the protocol.
   CHECK(std::distance(fs::directory_iterator(dir), fs::directory_iterator()) == 1);
-  fs::remove_all(dir);
 }
 
 TEST_CASE("tamponade validate: good protocol exits 0 and prints SI values",

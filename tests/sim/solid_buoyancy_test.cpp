@@ -16,8 +16,7 @@
 #include <cmath>
 #include <map>
 
-#include "scene_fixtures.h"
-#include "solid_fixtures.h"
+#include "floating_block.h"
 
 using namespace sim;
 
@@ -30,41 +29,17 @@ struct Floating {
   bool finite = true;
 };
 
-// Block of `side` x `layers` x `side` cells and specific gravity `ratio` in a tank `width` d
-// wide filled `depth` d deep (layered walls, INDSPH), started at its Archimedes draft; fractions
+// The floating-block scene (layered walls, INDSPH, started at its Archimedes draft); fractions
 // averaged over [duration / 2, duration] sampled every 0.01 s.
-Floating floatBlock(Real ratio, Real d, int width, int depth, int side, int layers, Real duration) {
-  TankSpec spec;
-  spec.innerMax = Vec3(width * d, (depth + layers + 4) * d, width * d);
-  WorldParameters params;
-  params.particleSpacing = d;
-  params.domain = tankDomain(spec, d);
-  params.domain.extend(spec.innerMin - Vec3::Constant(4 * d));
-  World world(params);
-  world.materials.add(testing::water());
-  const int block =
-      world.materials.add(testing::elasticMaterial("block", 1000 * ratio, 1e5, 0.3));  // E [Pa], nu
-  addTankWalls(world, spec, d, 0, WallLayers{});
-  const Real height = layers * d;  // [m]
-  const Vec3 blockMin((width - side) * d / 2, depth * d - ratio * height, (width - side) * d / 2);
-  for (int i = 0; i < width; ++i)
-    for (int j = 0; j < depth; ++j)
-      for (int k = 0; k < width; ++k) {
-        const Vec3 x = d * Vec3(i + 0.5, j + 0.5, k + 0.5);
-        const bool inside = x.x() > blockMin.x() && x.x() < blockMin.x() + side * d &&
-                            x.z() > blockMin.z() && x.z() < blockMin.z() + side * d &&
-                            x.y() > blockMin.y() - 0.25 * d;
-        if (!inside) world.particles.add(x, Vec3::Zero(), 1000 * d * d * d, 0);
-      }
-  testing::addLattice(world, blockMin, Eigen::Vector3i(side, layers, side), d, block);
-  world.initialize();
-  PipelineOptions options;
-  options.solver = "indsph";
-  Pipeline pipeline = assemblePipeline(world, options);
-  pipeline.attach(world);
+Floating floatBlock(const testing::FloatingBlockSpec& spec, Real duration) {
+  const Real d = spec.d;  // [m]
+  testing::FloatingBlock scene = testing::floatingBlock(spec);
+  World& world = *scene.world;
+  Pipeline& pipeline = *scene.pipeline;
+  const int block = scene.block;
 
-  const Real half = 0.5 * side * d;  // [m]
-  const Vec3 start = blockMin + half * Vec3(1, 0, 1);
+  const Real half = scene.halfWidth;  // [m]
+  const Vec3 start = scene.footprintCentre;
   Floating r;
   int samples = 0;
   for (Real t = 0.01; t <= duration + 1e-9; t += 0.01) {
@@ -130,8 +105,12 @@ Floating floatBlock(Real ratio, Real d, int width, int depth, int side, int laye
 // so the claim for s.g. 0.25 is checked by the bench only (docs/methods/elasticity.md).
 TEST_CASE("an elastic block of half the water's density floats half submerged",
           "[validation][elasticity]") {
-  const Real d = 0.01;  // [m]
-  const Floating r = floatBlock(0.5, d, 16, 10, 6, 6, 0.6);
+  testing::FloatingBlockSpec spec;
+  spec.d = 0.01;  // [m]
+  spec.specificGravity = 0.5;
+  spec.tankWidth = 16, spec.waterDepth = 10, spec.blockWidth = 6, spec.blockLayers = 6;  // [d]
+  const Floating r = floatBlock(spec, 0.6);
+  const Real d = spec.d;
   CAPTURE(r.volumeFraction, r.visibleFraction, r.sidewaysDrift / d);
   REQUIRE(r.finite);
   CHECK(r.volumeFraction == Approx(0.5).margin(0.03));

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <map>
 
+#include "floating_block.h"
 #include "scene_fixtures.h"
 #include "sim/effects/viscosity_monaghan2005.h"
 #include "sim/effects/viscosity_weiler2018.h"
@@ -260,30 +261,20 @@ TEST_CASE("a neutrally buoyant elastic block stays put in water", "[stability][e
   // unexplained), so 1 d is that offset with a margin; a wrong momentum exchange (a missing or
   // one-sided pressure term) moves the block by many d in 0.5 s (free fall alone: 1.2 m). Sideways:
   // 0.5 d (the scene is symmetric; what remains is the solver's noise).
-  const Real d = 0.01;  // [m]
-  const Real gap = (kWallGap - 0.5) * d;
-  const int width = 12, depth = 12, side = 4;
-  auto world = emptyTank(Vec3(width * d + 2 * gap, (depth + 4) * d, width * d + 2 * gap), d);
-  world->gravity = Vec3(0, -9.81, 0);
-  const int water = world->materials.add(sim::testing::water());
-  const int block = world->materials.add(elasticMaterial("neutral", 1000, 1e5, 0.3));
-  const int lo = (width - side) / 2, bottom = depth - 4 - side;  // [d] lattice cells
-  for (int i = 0; i < width; ++i)
-    for (int j = 0; j < depth; ++j)
-      for (int k = 0; k < width; ++k) {
-        const bool inBlock = i >= lo && i < lo + side && k >= lo && k < lo + side && j >= bottom &&
-                             j < bottom + side;
-        world->particles.add(Vec3::Constant(gap) + d * Vec3(i + 0.5, j + 0.5, k + 0.5),
-                             Vec3::Zero(), 1000 * d * d * d, inBlock ? block : water);
-      }
-  world->initialize();
-  PipelineOptions options;
-  options.solver = "indsph";
-  Pipeline pipeline = assemblePipeline(*world, options);
-  pipeline.attach(*world);
+  FloatingBlockSpec spec;
+  spec.d = 0.01;  // [m]
+  spec.specificGravity = 1;
+  spec.tankWidth = 12, spec.waterDepth = 12, spec.blockWidth = 4, spec.blockLayers = 4;  // [d]
+  spec.blockBottom = 12 - 4 - 4;  // [d] its top 4 d below the surface
+  spec.layeredWalls = false;
+  FloatingBlock scene = floatingBlock(spec);
+  const Real d = spec.d;
+  World& world = *scene.world;
+  Pipeline& pipeline = *scene.pipeline;
+  const int water = 0, block = scene.block;
   auto relativeHeight = [&] {  // [m] block centre below the mean column top
     std::map<std::pair<int, int>, Real> top;
-    const auto& p = world->particles;
+    const auto& p = world.particles;
     for (std::size_t i = 0; i < p.size(); ++i) {
       if (p.material[i] != water) continue;
       const auto key = std::make_pair(static_cast<int>(std::floor(p.x[i].x() / d)),
@@ -292,20 +283,20 @@ TEST_CASE("a neutrally buoyant elastic block stays put in water", "[stability][e
     }
     Real level = 0;
     for (const auto& [key, y] : top) level += y;
-    return bodyState(*world, block).centre.y() - level / top.size();
+    return bodyState(world, block).centre.y() - level / top.size();
   };
-  const Vec3 centre0 = bodyState(*world, block).centre;
+  const Vec3 centre0 = bodyState(world, block).centre;
   // The reference is taken after 0.1 s: in the first steps the lattice spreads into the 1.2 d gaps
   // left at the walls (kWallGap) and the level drops by ~1.3 d, which is the tank, not buoyancy.
-  while (world->time < 0.1) pipeline.step(*world);
+  while (world.time < 0.1) pipeline.step(world);
   const Real start = relativeHeight();
   Real maxDrift = 0;  // [m]
-  while (world->time < 0.5) {
-    pipeline.step(*world);
-    REQUIRE(allFinite(*world));
+  while (world.time < 0.5) {
+    pipeline.step(world);
+    REQUIRE(allFinite(world));
     maxDrift = std::max(maxDrift, std::abs(relativeHeight() - start));
   }
-  const Vec3 centre = bodyState(*world, block).centre;
+  const Vec3 centre = bodyState(world, block).centre;
   CAPTURE(maxDrift / d, (centre - centre0).transpose() / d);
   CHECK(maxDrift < d);
   CHECK(std::hypot(centre.x() - centre0.x(), centre.z() - centre0.z()) < 0.5 * d);

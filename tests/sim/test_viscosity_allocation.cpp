@@ -43,7 +43,7 @@ TEST_CASE("implicit viscosity allocates nothing after attach()", "[unit][viscosi
 
 // The VSLSPH solver's part of a step (neighbour update with per-particle supports, densities,
 // supports, forces) allocates nothing once the lists have grown to the scene's size. The solver is
-// driven directly: what the pipeline around it does is not the solver's to answer for.
+// driven directly; the whole Pipeline::step around it is test_pipeline_allocation.cpp's.
 TEST_CASE("VSLSPH steps allocate nothing after warm-up", "[unit][solvers]") {
   auto tank = testing::hydrostaticTank(0.03, 0.03, 0.005);
   World& w = *tank.world;

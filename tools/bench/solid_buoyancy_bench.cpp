@@ -26,8 +26,7 @@
 #include <utility>
 #include <vector>
 
-#include "tests/sim/scene_fixtures.h"
-#include "tests/sim/solid_fixtures.h"
+#include "tests/sim/floating_block.h"
 
 using namespace sim;
 
@@ -135,43 +134,19 @@ int main(int argc, char** argv) {
   const bool layered = argc > 6 ? std::string(argv[6]) != "akinci" : true;
   const Real d = 0.005;                  // [m]
   const int depth = 10, blockWidth = 8;  // [d]
-  // Layered walls: the tank's inner faces are the fluid lattice's cell faces (first particle d/2
-  // from a face, as in the bulk). Akinci walls: the lattice starts kWallGap d from the walls.
-  const Real gap = layered ? 0.0 : (testing::kWallGap - 0.5) * d;
-  TankSpec spec;
-  spec.innerMax = Vec3(width * d + 2 * gap, (depth + layers + 4) * d, width * d + 2 * gap);
-  WorldParameters params;
-  params.particleSpacing = d;
-  params.domain = tankDomain(spec, d);
-  params.domain.extend(spec.innerMin - Vec3::Constant(4 * d));
-  World world(params);
-  world.materials.add(testing::water());
-  const int block = world.materials.add(
-      testing::elasticMaterial("block", 1000 * gravityRatio, 1e5, 0.3));  // E [Pa], nu
-  if (layered)
-    addTankWalls(world, spec, d, 0, WallLayers{});
-  else
-    addTankWalls(world, spec, d);
-  // The block starts at its Archimedes draft; the water it displaces is left out.
-  const Real height = layers * d;
-  const Vec3 blockMin(gap + (width - blockWidth) * d / 2, gap + depth * d - gravityRatio * height,
-                      gap + (width - blockWidth) * d / 2);
-  for (int i = 0; i < width; ++i)
-    for (int j = 0; j < depth; ++j)
-      for (int k = 0; k < width; ++k) {
-        const Vec3 x = Vec3::Constant(gap) + d * Vec3(i + 0.5, j + 0.5, k + 0.5);
-        const bool inside = x.x() > blockMin.x() && x.x() < blockMin.x() + blockWidth * d &&
-                            x.z() > blockMin.z() && x.z() < blockMin.z() + blockWidth * d &&
-                            x.y() > blockMin.y() - 0.25 * d;
-        if (!inside) world.particles.add(x, Vec3::Zero(), 1000 * d * d * d, 0);
-      }
-  testing::addLattice(world, blockMin, Eigen::Vector3i(blockWidth, layers, blockWidth), d, block);
-  world.initialize();
-  PipelineOptions options;
-  options.solver = solver;
-  Pipeline pipeline = assemblePipeline(world, options);
-  pipeline.attach(world);
-  const Vec3 centre = blockMin + 0.5 * blockWidth * d * Vec3(1, 0, 1);
+  testing::FloatingBlockSpec spec;
+  spec.d = d;
+  spec.specificGravity = gravityRatio;
+  spec.tankWidth = width, spec.waterDepth = depth;
+  spec.blockWidth = blockWidth, spec.blockLayers = layers;
+  spec.layeredWalls = layered;
+  spec.solver = solver;
+  testing::FloatingBlock scene = testing::floatingBlock(spec);
+  World& world = *scene.world;
+  Pipeline& pipeline = *scene.pipeline;
+  const int block = scene.block;
+  const Real height = layers * d;  // [m]
+  const Vec3 centre = scene.footprintCentre;
   Real sum = 0, sum2 = 0;
   int samples = 0;
   Probe probes;  // sums over the averaging window
