@@ -198,17 +198,6 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
                 [ri2, pR2](Index k) { return std::max(ri2, pR2[k]); }, slot, m);
           }
         }
-      if (kernel) {
-        growTo(buf.gradients, m);
-        growTo(buf.values, m);
-        for (std::size_t a = first; a < m; ++a) {
-          const Vec3 xij = xi - sortedX[slot[a]];
-          const Real r = xij.norm();  // one square root for both
-          buf.gradients[a] = kernel->gradW(xij, r);
-          buf.values[a] = kernel->W(r);
-        }
-      }
-      for (std::size_t a = first; a < m; ++a) slot[a] = sorted[slot[a]];
       out.offsets[i + 1] = static_cast<Index>(m - first);
     }
     buf.count = m;
@@ -216,9 +205,6 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
     // lists that drift from step to step (a fluid settling, a splash) reuse the buffers instead
     // of reallocating at every small growth.
     if (buf.indices.capacity() < m + m / 16 + 1024) buf.indices.reserve(m + m / 2 + 1024);
-    if (kernel && buf.gradients.capacity() < m + m / 16 + 1024)
-      buf.gradients.reserve(m + m / 2 + 1024);
-    if (kernel && buf.values.capacity() < m + m / 16 + 1024) buf.values.reserve(m + m / 2 + 1024);
 #pragma omp barrier
 #pragma omp single
     {
@@ -238,18 +224,26 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
         values.clear();  // no stale kernel values for a list built without a kernel
       }
     }  // implicit barrier
+    // Each thread places its block: the point indices, and the kernel's gradient and value of
+    // each pair computed straight into the final lists (no per-thread copy of them to move).
     Index running = static_cast<Index>(buf.offset);
+    const Index* slots = buf.indices.data();
+    Index* indices = out.indices.data();
     for (std::size_t i = lo; i < hi; ++i) {
+      const Index begin = running;
       running += out.offsets[i + 1];
       out.offsets[i + 1] = running;
-    }
-    std::copy(buf.indices.begin(), buf.indices.begin() + static_cast<std::ptrdiff_t>(m),
-              out.indices.begin() + static_cast<std::ptrdiff_t>(buf.offset));
-    if (kernel) {
-      std::copy(buf.gradients.begin(), buf.gradients.begin() + static_cast<std::ptrdiff_t>(m),
-                grad.begin() + static_cast<std::ptrdiff_t>(buf.offset));
-      std::copy(buf.values.begin(), buf.values.begin() + static_cast<std::ptrdiff_t>(m),
-                values.begin() + static_cast<std::ptrdiff_t>(buf.offset));
+      const Vec3 xi = qx[i];
+      const Index* s = slots + (begin - static_cast<Index>(buf.offset));
+      for (Index a = begin; a < running; ++a, ++s) indices[a] = sorted[*s];
+      if (!kernel) continue;
+      s = slots + (begin - static_cast<Index>(buf.offset));
+      for (Index a = begin; a < running; ++a, ++s) {
+        const Vec3 xij = xi - sortedX[*s];
+        const Real r = xij.norm();  // one square root for both
+        grad[a] = kernel->gradW(xij, r);
+        values[a] = kernel->W(r);
+      }
     }
   }
 }

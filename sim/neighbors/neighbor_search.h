@@ -5,15 +5,17 @@
 // sorts particle indices into cells (serially, so the order is deterministic) together with a copy
 // of their positions in cell order, so that the candidate scan reads the 9 contiguous cell ranges
 // of the 27-cell stencil without an indirection. The compressed-sparse-row lists are built in ONE
-// parallel pass: each thread scans its contiguous block of query points, appends the accepted
-// candidates branch-free to its own reusable buffer and, when a kernel is given, computes the
-// per-pair kernel gradients of the accepted pairs in the same pass; the blocks are then copied
-// into place. The result does not depend on the thread count (each point's neighbours come in
-// stencil order, inside a cell in index order). Static wall particles are binned once. Dynamic
-// particle data are periodically reordered by the Z-order (Morton) index of their cell
+// parallel region: each thread scans its contiguous block of query points and appends the
+// accepted candidates branch-free to its own reusable buffer; once the blocks' offsets are known,
+// each thread writes its block's point indices into place and, when a kernel is given, computes
+// the per-pair kernel gradients and values straight into the final lists (36 of a pair's 40
+// bytes are never copied). The result does not depend on the thread count (each point's neighbours
+// come in stencil order, inside a cell in index order). Static wall particles are binned once.
+// Dynamic particle data are periodically reordered by the Z-order (Morton) index of their cell
 // (zOrder()), which keeps neighbours close in memory. Buffers only grow (per-thread
 // buffers to 1.5x when less than 1/16 headroom is left, lists by 25 %), so a running simulation
-// whose pair count drifts slowly does not allocate. Memory: about 2.5x the lists themselves.
+// whose pair count drifts slowly does not allocate. Memory: the lists plus about 1.5x their
+// indices.
 //
 // Variable support (VSLSPH, sim/fluid/vslsph_li2023.h): the grid is built for the largest support
 // R any particle may take (cells R/2 wide, a 5 x 5 x 5 stencil), and update() may be given
@@ -129,11 +131,9 @@ class NeighborSearch {
 
   // One thread's share of a list being built: accepted neighbours of its block of query points.
   struct ThreadBuffer {
-    std::vector<Index> indices;
-    std::vector<Vec3> gradients;
-    std::vector<Real> values;
-    std::size_t count = 0;   // used entries (the vectors only grow)
-    std::size_t offset = 0;  // where the block starts in the final list
+    std::vector<Index> indices;  // candidate slots in the points' sorted order
+    std::size_t count = 0;       // used entries (the vectors only grow)
+    std::size_t offset = 0;      // where the block starts in the final list
   };
   std::int64_t linear(const Eigen::Vector3i& c) const {
     return c.x() + dims_.x() * (static_cast<std::int64_t>(c.y()) +
