@@ -30,6 +30,21 @@ struct CubicSpline {
     const Real s = 1.0 - q;
     return -l * s * s * invH;
   }
+  // W(r) and dW/dr(r) from one q and one branch, with the same expressions as W and dWdr (the
+  // neighbour search evaluates both for every pair it stores).
+  void evaluate(Real r, Real& w, Real& dwdr) const {
+    const Real q = r * invH;
+    if (q >= 1.0) {
+      w = 0.0, dwdr = 0.0;
+    } else if (q <= 0.5) {
+      w = k * (6.0 * q * q * q - 6.0 * q * q + 1.0);
+      dwdr = l * q * (3.0 * q - 2.0) * invH;
+    } else {
+      const Real s = 1.0 - q;
+      w = k * 2.0 * s * s * s;
+      dwdr = -l * s * s * invH;
+    }
+  }
 
   Real h, invH, k, l;
 };

@@ -41,10 +41,15 @@ class Kernel {
   Vec3 gradW(const Vec3& xij) const { return gradW(xij, xij.norm()); }
   // Same, with r = |xij| already known (the neighbour pass also needs W(r)).
   Vec3 gradW(const Vec3& xij, Real r) const {
-    if (r <= 1e-12 * cubic_.h) return Vec3::Zero();
+    if (r <= gradientCutoff()) return Vec3::Zero();
     const Real d = kind_ == KernelKind::kCubicSpline ? cubic_.dWdr(r) : wendland_.dWdr(r);
     return xij * (d / r);
   }
+  // The two kernels themselves, for loops that hoist the choice of kernel out of the pair loop.
+  const CubicSpline& cubicSpline() const { return cubic_; }
+  const WendlandC2& wendlandC2() const { return wendland_; }
+  // Below this distance gradW is zero (coincident points have no direction).
+  Real gradientCutoff() const { return 1e-12 * cubic_.h; }
 
  private:
   KernelKind kind_;

@@ -28,6 +28,17 @@ struct WendlandC2 {
     const Real s = 1.0 - q;
     return -20.0 * k * q * s * s * s * invH;
   }
+  // W(r) and dW/dr(r) from one q, with the same expressions as W and dWdr.
+  void evaluate(Real r, Real& w, Real& dwdr) const {
+    const Real q = r * invH;
+    if (q >= 1.0) {
+      w = 0.0, dwdr = 0.0;
+      return;
+    }
+    const Real s = 1.0 - q;
+    w = k * s * s * s * s * (1.0 + 4.0 * q);
+    dwdr = -20.0 * k * q * s * s * s * invH;
+  }
 
   Real h, invH, k;
 };

@@ -130,6 +130,21 @@ std::size_t scanRange(Index b, Index e, const Vec3& xi, const Vec3* sortedX, con
   return m;
 }
 
+// Kernel gradient and value of each pair of query point xi with the sorted points in `slot`, one
+// square root and one kernel branch per pair; K is the kernel itself, so the choice of kernel is
+// made once per list, not per pair. Same values as Kernel::gradW and Kernel::W.
+template <class K>
+void pairKernels(const K& k, Real gradientCutoff, const Vec3& xi, const Vec3* sortedX,
+                 const Index* slot, std::size_t count, Vec3* grad, Real* values) {
+  for (std::size_t a = 0; a < count; ++a) {
+    const Vec3 xij = xi - sortedX[slot[a]];
+    const Real r = xij.norm();
+    Real dwdr;
+    k.evaluate(r, values[a], dwdr);
+    grad[a] = r <= gradientCutoff ? Vec3::Zero().eval() : (xij * (dwdr / r)).eval();
+  }
+}
+
 }  // namespace
 
 void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbins,
@@ -238,12 +253,13 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
       for (Index a = begin; a < running; ++a, ++s) indices[a] = sorted[*s];
       if (!kernel) continue;
       s = slots + (begin - static_cast<Index>(buf.offset));
-      for (Index a = begin; a < running; ++a, ++s) {
-        const Vec3 xij = xi - sortedX[*s];
-        const Real r = xij.norm();  // one square root for both
-        grad[a] = kernel->gradW(xij, r);
-        values[a] = kernel->W(r);
-      }
+      const std::size_t count = static_cast<std::size_t>(running - begin);
+      if (kernel->kind() == KernelKind::kCubicSpline)
+        pairKernels(kernel->cubicSpline(), kernel->gradientCutoff(), xi, sortedX, s, count,
+                    grad.data() + begin, values.data() + begin);
+      else
+        pairKernels(kernel->wendlandC2(), kernel->gradientCutoff(), xi, sortedX, s, count,
+                    grad.data() + begin, values.data() + begin);
     }
   }
 }
