@@ -130,6 +130,15 @@ std::size_t scanRange(Index b, Index e, const Vec3& xi, const Vec3* sortedX, con
   return m;
 }
 
+// Distance [m] from coordinate x to the cell interval [lo, lo + size] along one axis (0 inside).
+inline Real gapTo(Real x, Real lo, Real size) { return std::max({lo - x, x - (lo + size), 0.0}); }
+
+// One row of the stencil (fixed y and z cells): the contiguous x-range of cells that can hold a
+// point within the pruning radius, as a range of sorted slots.
+struct StencilRow {
+  Index begin, end;
+};
+
 // Kernel gradient and value of each pair of query point xi with the sorted points in `slot`, one
 // square root and one kernel branch per pair; K is the kernel itself, so the choice of kernel is
 // made once per list, not per pair. Same values as Kernel::gradW and Kernel::W.
@@ -164,6 +173,16 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
   const Index* cellStart = pbins.cellStart.data();
   const Real* pR2 = qR2 != nullptr && !pbins.sortedR2.empty() ? pbins.sortedR2.data() : nullptr;
 
+  const Vec3 origin = domain_.min();
+  const Real cell = 1.0 / invCell_;        // [m]
+  const Real maxR2 = largest_ * largest_;  // [m^2] the largest cut of a variable-support pair
+  // Pruning keeps a cell whose distance is within 1e-9 of the radius: rounding in the cell bounds
+  // must never drop a cell that holds a neighbour.
+  constexpr Real kPruneSlack = 1.0 + 1e-9;
+  constexpr int kMaxReach = 2;  // [cells] the variable-support stencil's half-width
+  constexpr int kMaxRows = (2 * kMaxReach + 1) * (2 * kMaxReach + 1);
+  auto sq = [](Real v) { return v * v; };
+
 #pragma omp parallel
   {
     const std::size_t threads = static_cast<std::size_t>(omp_get_num_threads());
@@ -172,6 +191,7 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
     // A contiguous block of query points per thread (as schedule(static)).
     const std::size_t lo = n * t / threads, hi = n * (t + 1) / threads;
     std::size_t m = 0;
+    StencilRow stencil[kMaxRows];
     for (std::size_t i = lo; i < hi; ++i) {
       const std::int64_t c = qbins.cellOf[i];
       const std::int64_t cz = c / dz, cy = (c % dz) / dy, cx = c % dy;
@@ -181,38 +201,56 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
       const std::int64_t zhi = std::min<std::int64_t>(cz + reach_, dims_.z() - 1);
       const std::int64_t ylo = std::max<std::int64_t>(cy - reach_, 0);
       const std::int64_t yhi = std::min<std::int64_t>(cy + reach_, dims_.y() - 1);
-      // Room for every candidate, so that the scan can store each one and advance only on a hit
-      // (no unpredictable branch per candidate).
-      std::size_t candidates = 0;
-      for (std::int64_t z = zlo; z <= zhi; ++z)
+      // The stencil's rows, each trimmed to the cells that can hold a point within `prune` of
+      // xi (rows and end cells wholly farther away are skipped: every candidate in them would
+      // fail the distance test, so the lists are the same, in the same order). Counted first:
+      // room for every candidate, so that the scan can store each one and advance only on a
+      // hit (no unpredictable branch per candidate).
+      const Vec3 xi = qx[i];
+      const Real prune2 = (qR2 == nullptr ? r2 : pR2 == nullptr ? qR2[i] : maxR2) * kPruneSlack;
+      Real gx2[kMaxReach * 2 + 1], gy2[kMaxReach * 2 + 1];  // [m^2] squared gaps per column
+      for (std::int64_t x = xlo; x <= xhi; ++x)
+        gx2[x - xlo] = sq(gapTo(xi.x(), origin.x() + static_cast<Real>(x) * cell, cell));
+      for (std::int64_t y = ylo; y <= yhi; ++y)
+        gy2[y - ylo] = sq(gapTo(xi.y(), origin.y() + static_cast<Real>(y) * cell, cell));
+      const std::int64_t last = xhi - xlo;
+      std::size_t rows = 0, candidates = 0;
+      for (std::int64_t z = zlo; z <= zhi; ++z) {
+        const Real gz2 = sq(gapTo(xi.z(), origin.z() + static_cast<Real>(z) * cell, cell));
         for (std::int64_t y = ylo; y <= yhi; ++y) {
-          const std::int64_t base = z * dz + y * dy;
-          candidates += cellStart[base + xhi + 1] - cellStart[base + xlo];
+          const Real left = prune2 - gy2[y - ylo] - gz2;  // [m^2] room left along x
+          if (left < 0.0) continue;
+          std::int64_t a = 0, b = last;
+          while (a < b && gx2[a] > left) ++a;
+          while (b > a && gx2[b] > left) --b;
+          const std::int64_t base = z * dz + y * dy + xlo;
+          const StencilRow row{cellStart[base + a], cellStart[base + b + 1]};
+          if (row.end == row.begin) continue;
+          stencil[rows++] = row;
+          candidates += row.end - row.begin;
         }
+      }
       growTo(buf.indices, m + candidates);
       Index* slot = buf.indices.data();
-      const Vec3 xi = qx[i];
       const Index self = skipSelf ? static_cast<Index>(i) : ~Index{0};
       const std::size_t first = m;
-      // Stencil order: z, then y, then the three x-adjacent cells, one contiguous range.
-      for (std::int64_t z = zlo; z <= zhi; ++z)
-        for (std::int64_t y = ylo; y <= yhi; ++y) {
-          const std::int64_t base = z * dz + y * dy;
-          const Index b = cellStart[base + xlo], e = cellStart[base + xhi + 1];
-          if (qR2 == nullptr) {  // fixed support
-            m = scanRange(
-                b, e, xi, sortedX, sorted, self, [r2](Index) { return r2; }, slot, m);
-          } else if (pR2 == nullptr) {  // variable support against walls (support h <= h_i)
-            const Real ri2 = qR2[i];
-            m = scanRange(
-                b, e, xi, sortedX, sorted, self, [ri2](Index) { return ri2; }, slot, m);
-          } else {  // variable support, dynamic pairs: max(h_i, h_j)
-            const Real ri2 = qR2[i];
-            m = scanRange(
-                b, e, xi, sortedX, sorted, self,
-                [ri2, pR2](Index k) { return std::max(ri2, pR2[k]); }, slot, m);
-          }
+      // Stencil order: z, then y, then the x-adjacent cells, one contiguous range.
+      for (std::size_t q = 0; q < rows; ++q) {
+        const Index b = stencil[q].begin, e = stencil[q].end;
+        if (qR2 == nullptr) {  // fixed support
+          m = scanRange(
+              b, e, xi, sortedX, sorted, self, [r2](Index) { return r2; }, slot, m);
+        } else if (pR2 == nullptr) {  // variable support against walls (support h <= h_i)
+          const Real ri2 = qR2[i];
+          m = scanRange(
+              b, e, xi, sortedX, sorted, self, [ri2](Index) { return ri2; }, slot, m);
+        } else {  // variable support, dynamic pairs: max(h_i, h_j)
+          const Real ri2 = qR2[i];
+          m = scanRange(
+              b, e, xi, sortedX, sorted, self,
+              [ri2, pR2](Index k) { return std::max(ri2, pR2[k]); }, slot, m);
         }
+      }
       out.offsets[i + 1] = static_cast<Index>(m - first);
     }
     buf.count = m;
