@@ -75,9 +75,11 @@ void NeighborSearch::bin(const std::vector<Vec3>& x, CellBins& bins, bool dynami
   bins.sorted.resize(n);
   counts_.assign(bins.cellStart.begin(), bins.cellStart.end() - 1);
   bins.sortedX.resize(n);
+  bins.slotOf.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Index k = counts_[static_cast<std::size_t>(bins.cellOf[i])]++;
     bins.sorted[k] = static_cast<Index>(i);
+    bins.slotOf[i] = k;
     bins.sortedX[k] = x[i];
   }
   bins.sortedR2.clear();  // refilled by binRadii for a variable-support update
@@ -116,16 +118,16 @@ void growTo(std::vector<T>& v, std::size_t n) {
   v.resize(n);
 }
 
-// Stores every slot k of [b, e) at slot[m] and advances m when |xi - x_k|^2 < cut(k) and k's
-// point is not `self`: no unpredictable branch per candidate. `cut` inlines to a constant on the
-// fixed-h path.
+// Stores every slot k of [b, e) at slot[m] and advances m when |xi - x_k|^2 < cut(k) and k is
+// not `selfSlot` (the query point's own slot, compared without loading its index): no
+// unpredictable branch per candidate. `cut` inlines to a constant on the fixed-h path.
 template <class Cut>
-std::size_t scanRange(Index b, Index e, const Vec3& xi, const Vec3* sortedX, const Index* sorted,
-                      Index self, Cut cut, Index* slot, std::size_t m) {
+std::size_t scanRange(Index b, Index e, const Vec3& xi, const Vec3* sortedX, Index selfSlot,
+                      Cut cut, Index* slot, std::size_t m) {
   for (Index k = b; k < e; ++k) {
     slot[m] = k;  // sorted slot for now; replaced by the point index by the caller
     m += static_cast<std::size_t>((xi - sortedX[k]).squaredNorm() < cut(k)) &
-         static_cast<std::size_t>(sorted[k] != self);
+         static_cast<std::size_t>(k != selfSlot);
   }
   return m;
 }
@@ -232,23 +234,23 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
       }
       growTo(buf.indices, m + candidates);
       Index* slot = buf.indices.data();
-      const Index self = skipSelf ? static_cast<Index>(i) : ~Index{0};
+      const Index self = skipSelf ? pbins.slotOf[i] : ~Index{0};
       const std::size_t first = m;
       // Stencil order: z, then y, then the x-adjacent cells, one contiguous range.
       for (std::size_t q = 0; q < rows; ++q) {
         const Index b = stencil[q].begin, e = stencil[q].end;
         if (qR2 == nullptr) {  // fixed support
           m = scanRange(
-              b, e, xi, sortedX, sorted, self, [r2](Index) { return r2; }, slot, m);
+              b, e, xi, sortedX, self, [r2](Index) { return r2; }, slot, m);
         } else if (pR2 == nullptr) {  // variable support against walls (support h <= h_i)
           const Real ri2 = qR2[i];
           m = scanRange(
-              b, e, xi, sortedX, sorted, self, [ri2](Index) { return ri2; }, slot, m);
+              b, e, xi, sortedX, self, [ri2](Index) { return ri2; }, slot, m);
         } else {  // variable support, dynamic pairs: max(h_i, h_j)
           const Real ri2 = qR2[i];
           m = scanRange(
-              b, e, xi, sortedX, sorted, self,
-              [ri2, pR2](Index k) { return std::max(ri2, pR2[k]); }, slot, m);
+              b, e, xi, sortedX, self, [ri2, pR2](Index k) { return std::max(ri2, pR2[k]); }, slot,
+              m);
         }
       }
       out.offsets[i + 1] = static_cast<Index>(m - first);

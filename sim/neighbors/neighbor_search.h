@@ -59,6 +59,7 @@ struct CellBins {
   std::vector<Index>
       cellStart;  // size cellCount+1; points of cell c: sorted[cellStart[c]..cellStart[c+1])
   std::vector<Index> sorted;         // point indices grouped by cell
+  std::vector<Index> slotOf;         // per point: its place in `sorted`
   std::vector<std::int64_t> cellOf;  // per point
   std::vector<Vec3> sortedX;         // [m] positions in `sorted` order (contiguous candidate scan)
   // [m^2] squared search radii max(h, h_i)^2 in `sorted` order; filled only for dynamic points
