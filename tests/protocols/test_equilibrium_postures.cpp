@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "eye_protocol.h"
 #include "protocols/assembly/assemble_scenario.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/format/protocol_error.h"
@@ -20,16 +21,15 @@ using namespace protocols;
 namespace {
 
 std::string eyeProtocol(const std::string& postures, const std::string& tamponadeExtra = "") {
-  return "format_version = 1\n"
-         "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
-         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"90 %\"\n" +
-         tamponadeExtra + "[schedule]\n" + postures +
-         "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.2 mm\"\n"
-         "[outputs]\nfolder = \"runs/eq\"\n";
+  tamponade_test::EyeProtocolOptions eye;
+  eye.tamponadeKeys = tamponadeExtra;
+  eye.schedule = "[schedule]\n" + postures;
+  eye.outputs = "[outputs]\nfolder = \"runs/eq\"\n";
+  return tamponade_test::eyeProtocolText(eye);
 }
 
 std::string posture(const std::string& name, const std::string& duration = "equilibrium") {
-  return "[[schedule.postures]]\nname = \"" + name + "\"\nduration = \"" + duration + "\"\n";
+  return tamponade_test::posture(name, duration);
 }
 
 // The coverage of each posture's equilibrium: the first frame of each posture.

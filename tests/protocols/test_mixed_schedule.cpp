@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "eye_protocol.h"
 #include "protocols/coverage/frame_coverage.h"
 #include "protocols/equilibrium/start_from_equilibrium.h"
 #include "protocols/format/parse_protocol.h"
@@ -30,30 +31,15 @@ using namespace protocols;
 namespace {
 
 std::string eyeProtocol(const std::string& schedule) {
-  return "format_version = 1\n"
-         "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
-         "[[eye.breaks]]\nname = \"superior tear\"\nclock_hour = 12\n"
-         "posterior_to_limbus = \"14 mm\"\ndiameter = \"2 mm\"\n"
-         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"90 %\"\n"
-         "[schedule]\n" +
-         schedule +
-         "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.2 mm\"\n"
-         "[outputs]\nframe_interval = \"10 ms\"\n";
+  tamponade_test::EyeProtocolOptions eye;
+  eye.superiorBreak = true;
+  eye.schedule = "[schedule]\n" + schedule;
+  eye.outputs = "[outputs]\nframe_interval = \"10 ms\"\n";
+  return tamponade_test::eyeProtocolText(eye);
 }
 
-std::string posture(const std::string& name, const std::string& duration) {
-  return "[[schedule.postures]]\nname = \"" + name + "\"\nduration = \"" + duration + "\"\n";
-}
-
-// Every reported region's oil-covered share as the particles of `s` read it now.
-std::vector<double> particleReading(const Scenario& s) {
-  const auto& particles = s.world->particles;
-  const WallOilFractions f = measureWallFractions(s, particles.x, particles.material, particles.id);
-  const FrameCoverage c = measureFrameCoverage(s.retina, f, 0.0);
-  std::vector<double> out;
-  for (const auto& r : c.regions) out.push_back(r.fraction);
-  return out;
-}
+using tamponade_test::particleReading;
+using tamponade_test::posture;
 
 // The particles placed at the first posture's equilibrium by schedule.start = "equilibrium", an
 // all-simulated schedule: the reading a mixed schedule's simulation must start from.

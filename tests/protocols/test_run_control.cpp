@@ -16,6 +16,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "eye_protocol.h"
 #include "protocols/format/parse_protocol.h"
 #include "protocols/io/frame_reader.h"
 #include "protocols/report/report_format.h"
@@ -38,14 +39,14 @@ namespace {
 // A coarse eye (d = 1.5 mm, ~1000 fluid particles; one step ~8 ms on this machine, 1 thread).
 std::string eyeProtocol(const std::string& schedule, const std::string& outputs = "",
                         const std::string& fill = "90 %") {
-  return "format_version = 1\ntitle = \"Run control\"\n"
-         "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
-         "[[eye.breaks]]\nname = \"superior tear\"\nclock_hour = 12\nposterior_to_limbus = \"14 "
-         "mm\"\n"
-         "diameter = \"2 mm\"\n"
-         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"" +
-         fill + "\"\n" + schedule +
-         "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.5 mm\"\n" + outputs;
+  tamponade_test::EyeProtocolOptions eye;
+  eye.title = "Run control";
+  eye.superiorBreak = true;
+  eye.fill = fill;
+  eye.schedule = schedule;
+  eye.spacing = "1.5 mm";
+  eye.outputs = outputs;
+  return tamponade_test::eyeProtocolText(eye);
 }
 
 protocols::RunProgress progressAt(double time, double endTime) {

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "eye_protocol.h"
 #include "protocols/assembly/assemble_scenario.h"
 #include "protocols/coverage/frame_coverage.h"
 #include "protocols/equilibrium/posture_equilibrium.h"
@@ -23,21 +24,13 @@ namespace {
 
 // 90 % silicone oil in the emmetropic eye, supine then upright, simulated, at 1.2 mm.
 std::string protocolText(const std::string& start) {
-  return "format_version = 1\n"
-         "[eye]\nkind = \"emmetropic\"\nside = \"OD\"\n"
-         "[tamponade]\nagent = \"silicone_oil_1000\"\nfill = \"90 %\"\n"
-         "[schedule]\n" +
-         start +
-         "[[schedule.postures]]\nname = \"supine\"\nduration = \"0.1 s\"\n"
-         "[[schedule.postures]]\nname = \"upright\"\nduration = \"0.1 s\"\n"
-         "[accuracy]\npreset = \"draft\"\nparticle_spacing = \"1.2 mm\"\n";
+  tamponade_test::EyeProtocolOptions eye;
+  eye.schedule = "[schedule]\n" + start + tamponade_test::posture("supine", "0.1 s") +
+                 tamponade_test::posture("upright", "0.1 s");
+  return tamponade_test::eyeProtocolText(eye);
 }
 
-double retinaCoverage(const Scenario& s) {
-  const auto& particles = s.world->particles;
-  const WallOilFractions f = measureWallFractions(s, particles.x, particles.material, particles.id);
-  return measureFrameCoverage(s.retina, f, 0.0).retina().fraction;
-}
+double retinaCoverage(const Scenario& s) { return tamponade_test::particleReading(s)[0]; }
 
 // Centre of the oil particles (all of one volume, rho d^3 / rho) [m].
 sim::Vec3 oilCentre(const Scenario& s) {
