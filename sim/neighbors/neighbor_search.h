@@ -4,18 +4,19 @@
 // neighbour of a particle lies in its own or one of the 26 adjacent cells. Each update counting-
 // sorts particle indices into cells (serially, so the order is deterministic) together with a copy
 // of their positions in cell order, so that the candidate scan reads the 9 contiguous cell ranges
-// of the 27-cell stencil without an indirection. The compressed-sparse-row lists are built in ONE
-// parallel region: each thread scans its contiguous block of query points and appends the
-// accepted candidates branch-free to its own reusable buffer; once the blocks' offsets are known,
-// each thread writes its block's point indices into place and, when a kernel is given, computes
-// the per-pair kernel gradients and values straight into the final lists (36 of a pair's 40
-// bytes are never copied). The result does not depend on the thread count (each point's neighbours
-// come in stencil order, inside a cell in index order). Static wall particles are binned once.
-// Dynamic particle data are periodically reordered by the Z-order (Morton) index of their cell
-// (zOrder()), which keeps neighbours close in memory. Buffers only grow (per-thread
-// buffers to 1.5x when less than 1/16 headroom is left, lists by 25 %), so a running simulation
-// whose pair count drifts slowly does not allocate. Memory: the lists plus about 1.5x their
-// indices.
+// of the 27-cell stencil without an indirection; a range is trimmed to the cells that can hold a
+// point within the search radius (a row or end cell wholly farther away is skipped, which changes
+// no list). The compressed-sparse-row lists are built in ONE parallel region: each thread scans its
+// contiguous block of query points and appends the accepted candidates branch-free to its own
+// reusable buffer; once the blocks' offsets are known, each thread writes its block's point indices
+// into place and, when a kernel is given, computes the per-pair kernel gradients and values
+// straight into the final lists (36 of a pair's 40 bytes are never copied). The result does not
+// depend on the thread count (each point's neighbours come in stencil order, inside a cell in index
+// order). Static wall particles are binned once. Dynamic particle data are periodically reordered
+// by the Z-order (Morton) index of their cell (zOrder()), which keeps neighbours close in memory.
+// Buffers only grow (per-thread buffers to 1.5x when less than 1/16 headroom is left, lists by a
+// quarter), so a running simulation whose pair count drifts slowly does not allocate. Memory: the
+// lists plus about 1.5x their indices.
 //
 // Variable support (VSLSPH, sim/fluid/vslsph_li2023.h): the grid is built for the largest support
 // R any particle may take (cells R/2 wide, a 5 x 5 x 5 stencil), and update() may be given
