@@ -6,8 +6,8 @@
 #include <numeric>
 
 #include "meshing/mesh_error.h"
+#include "meshing/point_index.h"
 #include "meshing/random_stream.h"
-#include "meshing/spatial_hash.h"
 
 namespace meshing {
 
@@ -83,34 +83,29 @@ SurfaceSamples sampleSurface(const TriangleMesh& mesh, const SurfaceSamplingOpti
   std::sort(sequence.begin(), sequence.end(),
             [&](size_t i, size_t j) { return order[i] != order[j] ? order[i] < order[j] : i < j; });
   SurfaceSamples out;
-  Vec3 lo = Vec3::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (const Vec3& c : candidate) {
-    lo = lo.cwiseMin(c);
-    hi = hi.cwiseMax(c);
-  }
-  detail::SpatialHash grid(lo, hi, radius);
+  PointIndex grid(radius);
   const double r2 = radius * radius;
   for (size_t c : sequence) {
     bool free = true;
-    grid.forEachNear(candidate[c], [&](int s) {
-      if (free && (out.points[static_cast<size_t>(s)] - candidate[c]).squaredNorm() < r2)
-        free = false;
+    grid.forEachNear(candidate[c], radius, [&](size_t s) {
+      if (free && (out.points[s] - candidate[c]).squaredNorm() < r2) free = false;
     });
     if (!free) continue;
-    grid.insert(static_cast<int>(out.points.size()), candidate[c]);
+    grid.insert(candidate[c]);
     out.points.push_back(candidate[c]);
     out.faceIndex.push_back(candidateFace[c]);
   }
 
   // Phase 3: each candidate's area goes to its nearest sample (every rejected candidate has one
-  // within r, so the 27-cell search always finds it).
+  // within r, so the search around it always finds it; ties go to the lower sample index).
   std::vector<int> owner(nc, -1);
 #pragma omp parallel for schedule(static)
   for (long long cl = 0; cl < static_cast<long long>(nc); ++cl) {
     const size_t c = static_cast<size_t>(cl);
     double best = std::numeric_limits<double>::infinity();
-    grid.forEachNear(candidate[c], [&](int s) {
-      const double q = (out.points[static_cast<size_t>(s)] - candidate[c]).squaredNorm();
+    grid.forEachNear(candidate[c], radius, [&](size_t sample) {
+      const int s = static_cast<int>(sample);
+      const double q = (out.points[sample] - candidate[c]).squaredNorm();
       if (q < best || (q == best && s < owner[c])) {
         best = q;
         owner[c] = s;
