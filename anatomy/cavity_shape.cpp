@@ -43,10 +43,17 @@ CavityShape::CavityShape(const CavityGeometry& g) : geometry_(g) {
               ") and a quarter of "
               "its axial length behind the centre; move the lens/IOL plane");
   rimTheta_ = std::acos(-rimZ_ / c);
-  const double rimA = a * std::sin(rimTheta_), rimB = b * std::sin(rimTheta_);
   require(g.capSag < 0.5 * (rimZ_ + c),
           "cavity: cap sag " + mmText(g.capSag) + " reaches too far toward the posterior pole");
 
+  setStaphyloma();
+  computeVolumeAndCentroid();
+}
+
+// Sets the staphyloma's radius and checks it stays on the posterior wall and does not fold.
+void CavityShape::setStaphyloma() {
+  const CavityGeometry& g = geometry_;
+  const double a = g.semiAxisHorizontal, b = g.semiAxisVertical;
   require(g.staphylomaDepth >= 0.0 && g.staphylomaWidth >= 0.0,
           "cavity: staphyloma depth and width must be >= 0");
   if (g.staphylomaDepth > 0.0) {
@@ -68,7 +75,12 @@ CavityShape::CavityShape(const CavityGeometry& g) : geometry_(g) {
                 mmText(2.0 * bumpRadius_ * bumpRadius_ / (kPi * kPi * kMinimumConcaveRadius)) +
                 " or a wider staphyloma");
   }
+}
 
+void CavityShape::computeVolumeAndCentroid() {
+  const CavityGeometry& g = geometry_;
+  const double a = g.semiAxisHorizontal, b = g.semiAxisVertical, c = g.semiAxisAxial;
+  const double rimA = a * std::sin(rimTheta_), rimB = b * std::sin(rimTheta_);
   // Volume and centroid (local z) from the closed forms in the header; the staphyloma's moment
   // has no closed form and is integrated numerically (midpoint rule, smooth integrand).
   const double h = rimZ_;

@@ -99,6 +99,10 @@ class CavityShape {
   meshing::TriangleMesh triangulate(int segments) const;
 
  private:
+  // Constructor steps, after the rim: the staphyloma's radius and checks, then volume_ and
+  // centroidZ_.
+  void setStaphyloma();
+  void computeVolumeAndCentroid();
   Vec3 localWall(double theta, double meridian) const;
   double bump(double rho) const;                              // depth * g(rho) [m]
   double bumpSlopeOverRho(double rho) const;                  // depth * g'(rho) / rho [1/m]

@@ -51,93 +51,77 @@ double MaterialRecord::kinematicViscosity() const {
   return dynamicViscosity->value / density->value;
 }
 
-MaterialLibrary MaterialLibrary::parseCsv(std::string_view text, const std::string& origin) {
-  MaterialLibrary library;
-  size_t lineNumber = 0;
-  while (!text.empty()) {
-    const size_t end = text.find('\n');
-    const std::string_view line = trim(text.substr(0, end));
-    text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
-    ++lineNumber;
-    if (line.empty() || line.front() == '#') continue;
-    const std::string where = origin + ":" + std::to_string(lineNumber) + ": ";
+namespace {
 
-    // Six separators; the source is the rest of the line and may contain commas.
-    std::array<std::string_view, 7> column;
-    std::string_view rest = line;
-    for (size_t k = 0; k < 6; ++k) {
-      const size_t comma = rest.find(',');
-      require(comma != std::string_view::npos,
-              where +
-                  "expected 7 columns (material,kind,property,value,unit,flag,source), "
-                  "found " +
-                  std::to_string(k + 1));
-      column[k] = trim(rest.substr(0, comma));
-      rest = rest.substr(comma + 1);
-    }
-    column[6] = trim(rest);
-    const std::string name(column[0]);
-    require(isValidName(name),
-            where + "material name '" + name + "' must be lower_snake_case (a-z, 0-9, _)");
-    MaterialKind kind;
-    if (column[1] == "fluid")
-      kind = MaterialKind::kFluid;
-    else if (column[1] == "tissue")
-      kind = MaterialKind::kTissue;
-    else
-      throw AnatomyError(where + "kind '" + std::string(column[1]) + "' must be fluid or tissue");
+using Columns = std::array<std::string_view, 7>;
 
-    const PropertySpec* spec = nullptr;
-    for (const auto& p : kProperties)
-      if (p.name == column[2]) spec = &p;
-    if (spec == nullptr)
-      throw AnatomyError(where + "unknown property '" + std::string(column[2]) +
-                         "' (density, dynamic_viscosity, interfacial_tension, contact_angle, "
-                         "youngs_modulus, poisson_ratio)");
-    require(column[4] == spec->unit, where + std::string(spec->name) + " must be given in " +
-                                         std::string(spec->unit) + ", not '" +
-                                         std::string(column[4]) + "'");
-    const std::string valueText(column[3]);
-    char* parsedEnd = nullptr;
-    const double value = std::strtod(valueText.c_str(), &parsedEnd);
-    require(!valueText.empty() && parsedEnd == valueText.c_str() + valueText.size() &&
-                std::isfinite(value),
-            where + "value '" + valueText + "' is not a number");
-    require(value >= spec->min && value <= spec->max,
-            where + std::string(spec->name) + " " + valueText + " " + std::string(spec->unit) +
-                " is out of the physical range");
-    SourcedValue sourced;
-    sourced.value = value;
-    if (column[5] == "S")
-      sourced.flag = Provenance::kSourced;
-    else if (column[5] == "D")
-      sourced.flag = Provenance::kDerived;
-    else if (column[5] == "U")
-      sourced.flag = Provenance::kUnsourced;
-    else
-      throw AnatomyError(where + "flag '" + std::string(column[5]) + "' must be S, D or U");
-    require(!column[6].empty(), where + "every value needs a source (or a reason it has none)");
-    sourced.source = std::string(column[6]);
-
-    MaterialRecord* record = nullptr;
-    for (auto& m : library.materials_)
-      if (m.name == name) record = &m;
-    if (record == nullptr) {
-      library.materials_.push_back(MaterialRecord{});
-      record = &library.materials_.back();
-      record->name = name;
-      record->kind = kind;
-    }
-    require(record->kind == kind, where + "material '" + name + "' was declared " +
-                                      (record->kind == MaterialKind::kFluid ? "fluid" : "tissue") +
-                                      " earlier");
-    auto& slot = (*record).*(spec->field);
-    require(!slot.has_value(),
-            where + "material '" + name + "' gives " + std::string(spec->name) + " twice");
-    slot = std::move(sourced);
+// Six separators; the source is the rest of the line and may contain commas.
+Columns splitColumns(std::string_view line, const std::string& where) {
+  Columns column;
+  std::string_view rest = line;
+  for (size_t k = 0; k < 6; ++k) {
+    const size_t comma = rest.find(',');
+    require(comma != std::string_view::npos,
+            where +
+                "expected 7 columns (material,kind,property,value,unit,flag,source), "
+                "found " +
+                std::to_string(k + 1));
+    column[k] = trim(rest.substr(0, comma));
+    rest = rest.substr(comma + 1);
   }
+  column[6] = trim(rest);
+  return column;
+}
 
-  for (const auto& m : library.materials_) {
+MaterialKind parseKind(std::string_view text, const std::string& where) {
+  if (text == "fluid") return MaterialKind::kFluid;
+  if (text == "tissue") return MaterialKind::kTissue;
+  throw AnatomyError(where + "kind '" + std::string(text) + "' must be fluid or tissue");
+}
+
+const PropertySpec& parseProperty(std::string_view text, const std::string& where) {
+  const PropertySpec* spec = nullptr;
+  for (const auto& p : kProperties)
+    if (p.name == text) spec = &p;
+  if (spec == nullptr)
+    throw AnatomyError(where + "unknown property '" + std::string(text) +
+                       "' (density, dynamic_viscosity, interfacial_tension, contact_angle, "
+                       "youngs_modulus, poisson_ratio)");
+  return *spec;
+}
+
+// The value, unit, flag and source columns of one line.
+SourcedValue parseValue(const Columns& column, const PropertySpec& spec, const std::string& where) {
+  require(column[4] == spec.unit, where + std::string(spec.name) + " must be given in " +
+                                      std::string(spec.unit) + ", not '" + std::string(column[4]) +
+                                      "'");
+  const std::string valueText(column[3]);
+  char* parsedEnd = nullptr;
+  const double value = std::strtod(valueText.c_str(), &parsedEnd);
+  require(!valueText.empty() && parsedEnd == valueText.c_str() + valueText.size() &&
+              std::isfinite(value),
+          where + "value '" + valueText + "' is not a number");
+  require(value >= spec.min && value <= spec.max, where + std::string(spec.name) + " " + valueText +
+                                                      " " + std::string(spec.unit) +
+                                                      " is out of the physical range");
+  SourcedValue sourced;
+  sourced.value = value;
+  if (column[5] == "S")
+    sourced.flag = Provenance::kSourced;
+  else if (column[5] == "D")
+    sourced.flag = Provenance::kDerived;
+  else if (column[5] == "U")
+    sourced.flag = Provenance::kUnsourced;
+  else
+    throw AnatomyError(where + "flag '" + std::string(column[5]) + "' must be S, D or U");
+  require(!column[6].empty(), where + "every value needs a source (or a reason it has none)");
+  sourced.source = std::string(column[6]);
+  return sourced;
+}
+
+// Every material has the properties its kind needs, and a fluid no elastic constants.
+void requireComplete(const std::vector<MaterialRecord>& materials, const std::string& origin) {
+  for (const auto& m : materials) {
     const auto missing = [&](const char* what) {
       return origin + ": material '" + m.name + "' has no " + what;
     };
@@ -151,7 +135,48 @@ MaterialLibrary MaterialLibrary::parseCsv(std::string_view text, const std::stri
       require(m.poissonRatio.has_value(), missing("poisson_ratio"));
     }
   }
-  require(!library.materials_.empty(), origin + ": no materials");
+  require(!materials.empty(), origin + ": no materials");
+}
+
+}  // namespace
+
+MaterialLibrary MaterialLibrary::parseCsv(std::string_view text, const std::string& origin) {
+  MaterialLibrary library;
+  size_t lineNumber = 0;
+  while (!text.empty()) {
+    const size_t end = text.find('\n');
+    const std::string_view line = trim(text.substr(0, end));
+    text = end == std::string_view::npos ? std::string_view() : text.substr(end + 1);
+    ++lineNumber;
+    if (line.empty() || line.front() == '#') continue;
+    const std::string where = origin + ":" + std::to_string(lineNumber) + ": ";
+
+    const Columns column = splitColumns(line, where);
+    const std::string name(column[0]);
+    require(isValidName(name),
+            where + "material name '" + name + "' must be lower_snake_case (a-z, 0-9, _)");
+    const MaterialKind kind = parseKind(column[1], where);
+    const PropertySpec& spec = parseProperty(column[2], where);
+    SourcedValue sourced = parseValue(column, spec, where);
+
+    MaterialRecord* record = nullptr;
+    for (auto& m : library.materials_)
+      if (m.name == name) record = &m;
+    if (record == nullptr) {
+      library.materials_.push_back(MaterialRecord{});
+      record = &library.materials_.back();
+      record->name = name;
+      record->kind = kind;
+    }
+    require(record->kind == kind, where + "material '" + name + "' was declared " +
+                                      (record->kind == MaterialKind::kFluid ? "fluid" : "tissue") +
+                                      " earlier");
+    auto& slot = (*record).*(spec.field);
+    require(!slot.has_value(),
+            where + "material '" + name + "' gives " + std::string(spec.name) + " twice");
+    slot = std::move(sourced);
+  }
+  requireComplete(library.materials_, origin);
   return library;
 }
 

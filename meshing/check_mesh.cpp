@@ -351,12 +351,8 @@ void dropUnusedVertices(TriangleMesh& m) {
   m.vertices = std::move(kept);
 }
 
-}  // namespace
-
-MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options) {
-  MeshReport report;
-  report.inputVertices = static_cast<int>(input.vertices.size());
-  report.inputFaces = static_cast<int>(input.faces.size());
+// Throws for a mesh without faces, with a face index out of range or a non-finite vertex.
+void requireValidInput(const TriangleMesh& input) {
   if (input.faces.empty())
     throw MeshError("mesh", "has no faces", "give a closed triangle surface");
   for (size_t f = 0; f < input.faces.size(); ++f)
@@ -370,6 +366,80 @@ MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options)
     if (!input.vertices[v].allFinite())
       throw MeshError("mesh", "vertex " + std::to_string(v) + " has a NaN or infinite coordinate",
                       "repair or re-export the mesh");
+}
+
+// Removes degenerate (zero-area) faces; false (with a refusal) when that fails.
+bool repairDegenerateFaces(TriangleMesh& m, std::vector<int>& origin, MeshReport& report) {
+  if (const auto degenerate = detail::findDegenerateFaces(m); !degenerate.empty()) {
+    std::vector<int> inputFaces;
+    for (int f : degenerate) inputFaces.push_back(origin[static_cast<size_t>(f)]);
+    const Vec3 where = centroid(m, static_cast<size_t>(degenerate.front()));
+    if (!detail::removeDegenerateFaces(m, origin)) {
+      report.refusals.push_back("could not remove " + std::to_string(degenerate.size()) +
+                                " degenerate (zero-area) faces (faces " + faceList(inputFaces) +
+                                ") near " + point(where) + "; remesh the surface");
+      return false;
+    }
+    report.repairs.push_back("removed " + std::to_string(degenerate.size()) +
+                             " degenerate (zero-area) faces by edge collapses (faces " +
+                             faceList(inputFaces) + ") near " + point(where));
+  }
+  return true;
+}
+
+// False (with a refusal) when faces cross.
+bool refuseSelfIntersections(const TriangleMesh& m, const std::vector<int>& origin,
+                             MeshReport& report) {
+  if (const auto pairs = detail::findSelfIntersections(m, 64); !pairs.empty()) {
+    std::vector<int> faces;
+    for (const auto& [f, g] : pairs) {
+      faces.push_back(origin[static_cast<size_t>(f)]);
+      faces.push_back(origin[static_cast<size_t>(g)]);
+    }
+    const Vec3 where = 0.5 * (centroid(m, static_cast<size_t>(pairs[0].first)) +
+                              centroid(m, static_cast<size_t>(pairs[0].second)));
+    report.refusals.push_back(
+        "self-intersecting surface: " + std::string(pairs.size() >= 64 ? "at least " : "") +
+        std::to_string(pairs.size()) + " pairs of faces cross, e.g. " + faceName(faces[0]) +
+        " and " + faceName(faces[1]) + " near " + point(where) + " (faces " + faceList(faces) +
+        "); fix the surface in the modelling tool");
+    return false;
+  }
+  return true;
+}
+
+// Reverses all faces if the enclosed volume is negative; false (with a refusal) when the surface
+// encloses no volume.
+bool orientOutward(TriangleMesh& m, MeshMeasures& measures, MeshReport& report) {
+  // A closed surface of collapsed (flat or zero-area) faces encloses nothing: a sphere has
+  // |V| / A^1.5 = 0.094, so 1e-6 only catches surfaces that are flat to rounding.
+  constexpr double kFlatRatio = 1e-6;  // [1]
+  if (!(std::abs(measures.signedVolume) > kFlatRatio * std::pow(measures.area, 1.5))) {
+    std::ostringstream sizes;
+    sizes.precision(3);
+    sizes << "area " << measures.area << ", volume " << measures.signedVolume;
+    report.refusals.push_back("the surface encloses no volume (" + sizes.str() +
+                              ": its faces are flat or collapsed); export the cavity as a closed "
+                              "surface around its volume");
+    return false;
+  }
+  if (measures.signedVolume < 0) {
+    for (Triangle& t : m.faces) std::swap(t[1], t[2]);
+    measures.signedVolume = -measures.signedVolume;
+    report.repairs.push_back(
+        "reversed all " + std::to_string(m.faces.size()) +
+        " faces so that normals point outward (the enclosed volume was negative)");
+  }
+  return true;
+}
+
+}  // namespace
+
+MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options) {
+  MeshReport report;
+  report.inputVertices = static_cast<int>(input.vertices.size());
+  report.inputFaces = static_cast<int>(input.faces.size());
+  requireValidInput(input);
   report.measures = measureMesh(input);
 
   TriangleMesh m = input;
@@ -400,58 +470,13 @@ MeshReport checkMesh(const TriangleMesh& input, const MeshCheckOptions& options)
 
   // Phase 3 (CGAL): degenerate faces, then self-intersections (degenerate faces would be
   // reported as self-intersecting).
-  if (const auto degenerate = detail::findDegenerateFaces(m); !degenerate.empty()) {
-    std::vector<int> inputFaces;
-    for (int f : degenerate) inputFaces.push_back(origin[static_cast<size_t>(f)]);
-    const Vec3 where = centroid(m, static_cast<size_t>(degenerate.front()));
-    if (!detail::removeDegenerateFaces(m, origin)) {
-      report.refusals.push_back("could not remove " + std::to_string(degenerate.size()) +
-                                " degenerate (zero-area) faces (faces " + faceList(inputFaces) +
-                                ") near " + point(where) + "; remesh the surface");
-      return report;
-    }
-    report.repairs.push_back("removed " + std::to_string(degenerate.size()) +
-                             " degenerate (zero-area) faces by edge collapses (faces " +
-                             faceList(inputFaces) + ") near " + point(where));
-  }
-  if (const auto pairs = detail::findSelfIntersections(m, 64); !pairs.empty()) {
-    std::vector<int> faces;
-    for (const auto& [f, g] : pairs) {
-      faces.push_back(origin[static_cast<size_t>(f)]);
-      faces.push_back(origin[static_cast<size_t>(g)]);
-    }
-    const Vec3 where = 0.5 * (centroid(m, static_cast<size_t>(pairs[0].first)) +
-                              centroid(m, static_cast<size_t>(pairs[0].second)));
-    report.refusals.push_back(
-        "self-intersecting surface: " + std::string(pairs.size() >= 64 ? "at least " : "") +
-        std::to_string(pairs.size()) + " pairs of faces cross, e.g. " + faceName(faces[0]) +
-        " and " + faceName(faces[1]) + " near " + point(where) + " (faces " + faceList(faces) +
-        "); fix the surface in the modelling tool");
-    return report;
-  }
+  if (!repairDegenerateFaces(m, origin, report)) return report;
+  if (!refuseSelfIntersections(m, origin, report)) return report;
 
   // Phase 4: outward orientation. Closed, consistent, not self-intersecting: the sign of the
   // enclosed volume says whether the normals point out.
   MeshMeasures measures = measureMesh(m);
-  // A closed surface of collapsed (flat or zero-area) faces encloses nothing: a sphere has
-  // |V| / A^1.5 = 0.094, so 1e-6 only catches surfaces that are flat to rounding.
-  constexpr double kFlatRatio = 1e-6;  // [1]
-  if (!(std::abs(measures.signedVolume) > kFlatRatio * std::pow(measures.area, 1.5))) {
-    std::ostringstream sizes;
-    sizes.precision(3);
-    sizes << "area " << measures.area << ", volume " << measures.signedVolume;
-    report.refusals.push_back("the surface encloses no volume (" + sizes.str() +
-                              ": its faces are flat or collapsed); export the cavity as a closed "
-                              "surface around its volume");
-    return report;
-  }
-  if (measures.signedVolume < 0) {
-    for (Triangle& t : m.faces) std::swap(t[1], t[2]);
-    measures.signedVolume = -measures.signedVolume;
-    report.repairs.push_back(
-        "reversed all " + std::to_string(m.faces.size()) +
-        " faces so that normals point outward (the enclosed volume was negative)");
-  }
+  if (!orientOutward(m, measures, report)) return report;
   report.measures = measures;
   report.mesh = std::move(m);
   return report;

@@ -207,7 +207,10 @@ int joinIdenticalVertices(TriangleMesh& mesh) {
   return removed;
 }
 
-ImportResult importMesh(const std::string& path, LengthUnit unit) {
+namespace {
+
+// The file's triangles in file units, every vertex finite (throws a MeshError otherwise).
+TriangleMesh readTriangles(const std::string& path) {
   checkMeshFile(path);
   checkFormatHeader(path);
 
@@ -233,59 +236,59 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
                     "check that it is a valid " + ext.substr(1) +
                         " file (not truncated, not another format renamed)");
 
-  ImportResult result;
-  collectNode(path, *scene, *scene->mRootNode, aiMatrix4x4(), result.mesh);
-  if (result.mesh.faces.empty())
+  TriangleMesh mesh;
+  collectNode(path, *scene, *scene->mRootNode, aiMatrix4x4(), mesh);
+  if (mesh.faces.empty())
     throw MeshError(path, "contains no triangles (only points, lines or nothing)",
                     "export the cavity as a closed triangle surface");
-  for (size_t v = 0; v < result.mesh.vertices.size(); ++v) {
-    if (!result.mesh.vertices[v].allFinite()) {
+  for (size_t v = 0; v < mesh.vertices.size(); ++v) {
+    if (!mesh.vertices[v].allFinite()) {
       std::ostringstream s;
-      s << "vertex " << v << " has a NaN or infinite coordinate ("
-        << result.mesh.vertices[v].transpose() << ")";
+      s << "vertex " << v << " has a NaN or infinite coordinate (" << mesh.vertices[v].transpose()
+        << ")";
       throw MeshError(path, s.str(), "repair or re-export the mesh in the modelling tool");
     }
   }
-  result.joinedVertices = joinIdenticalVertices(result.mesh);
+  return mesh;
+}
 
-  // Units: declared, or guessed from the bounding-box diagonal.
-  const MeshMeasures raw = measureMesh(result.mesh);
+// The unit guessed from the bounding-box diagonal `raw` (file units), with its warning.
+LengthUnit guessUnit(const std::string& path, const MeshMeasures& raw,
+                     std::vector<std::string>& warnings) {
   const double diagonal = raw.diagonal();  // [file units]
   std::ostringstream diag;
   diag.precision(4);
   diag << diagonal;
-  if (unit == LengthUnit::unknown) {
-    result.unitGuessed = true;
-    const auto plausible = [&](LengthUnit u) {
-      const double s = raw.size() * metresPer(u);
-      return s >= kMinEyeSize && s <= kMaxEyeSize;
-    };
-    if (diagonal >= 10 && diagonal <= 60)
-      unit = LengthUnit::millimetre;
-    else if (diagonal >= 0.01 && diagonal <= 0.06)
-      unit = LengthUnit::metre;
-    else if (plausible(LengthUnit::millimetre))
-      unit = LengthUnit::millimetre;
-    else if (plausible(LengthUnit::metre))
-      unit = LengthUnit::metre;
-    else
-      throw MeshError(path,
-                      "size " + diag.str() +
-                          " (bounding-box diagonal, file units) is implausible for "
-                          "an eye in mm (" +
-                          formatLength(raw.size() * 1e-3) + " across) and in m (" +
-                          formatLength(raw.size()) + " across)",
-                      "an eye cavity is 20-30 mm across; rescale the mesh to mm or m");
-    result.warnings.push_back(std::string("no units declared: assumed ") + toString(unit) +
-                              " because the bounding-box diagonal is " + diag.str() +
-                              " file units (an eye is 20-30 mm across); declare the units "
-                              "(--units mm|m, or units in the protocol) to silence this");
-  }
-  result.unit = unit;
-  const double scale = metresPer(unit);  // [m per file unit]
-  for (Vec3& p : result.mesh.vertices) p *= scale;
+  const auto plausible = [&](LengthUnit u) {
+    const double s = raw.size() * metresPer(u);
+    return s >= kMinEyeSize && s <= kMaxEyeSize;
+  };
+  LengthUnit unit;
+  if (diagonal >= 10 && diagonal <= 60)
+    unit = LengthUnit::millimetre;
+  else if (diagonal >= 0.01 && diagonal <= 0.06)
+    unit = LengthUnit::metre;
+  else if (plausible(LengthUnit::millimetre))
+    unit = LengthUnit::millimetre;
+  else if (plausible(LengthUnit::metre))
+    unit = LengthUnit::metre;
+  else
+    throw MeshError(path,
+                    "size " + diag.str() +
+                        " (bounding-box diagonal, file units) is implausible for "
+                        "an eye in mm (" +
+                        formatLength(raw.size() * 1e-3) + " across) and in m (" +
+                        formatLength(raw.size()) + " across)",
+                    "an eye cavity is 20-30 mm across; rescale the mesh to mm or m");
+  warnings.push_back(std::string("no units declared: assumed ") + toString(unit) +
+                     " because the bounding-box diagonal is " + diag.str() +
+                     " file units (an eye is 20-30 mm across); declare the units "
+                     "(--units mm|m, or units in the protocol) to silence this");
+  return unit;
+}
 
-  const double size = raw.size() * scale;  // [m]
+// Throws when `size` [m] across is no eye cavity, naming the likely unit mistake.
+void requireEyeSize(const std::string& path, double size, LengthUnit unit) {
   if (size > kMaxEyeSize || size < kMinEyeSize) {
     const bool big = size > kMaxEyeSize;
     std::string fix;
@@ -302,6 +305,25 @@ ImportResult importMesh(const std::string& path, LengthUnit unit) {
             formatLength(big ? kMaxEyeSize : kMinEyeSize) + ")",
         fix);
   }
+}
+
+}  // namespace
+
+ImportResult importMesh(const std::string& path, LengthUnit unit) {
+  ImportResult result;
+  result.mesh = readTriangles(path);
+  result.joinedVertices = joinIdenticalVertices(result.mesh);
+
+  // Units: declared, or guessed from the bounding-box diagonal.
+  const MeshMeasures raw = measureMesh(result.mesh);
+  if (unit == LengthUnit::unknown) {
+    result.unitGuessed = true;
+    unit = guessUnit(path, raw, result.warnings);
+  }
+  result.unit = unit;
+  const double scale = metresPer(unit);  // [m per file unit]
+  for (Vec3& p : result.mesh.vertices) p *= scale;
+  requireEyeSize(path, raw.size() * scale, unit);  // [m]
   return result;
 }
 

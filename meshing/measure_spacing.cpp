@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "meshing/mesh_error.h"
-#include "meshing/spatial_hash.h"
+#include "meshing/point_index.h"
 
 namespace meshing {
 
@@ -13,21 +13,14 @@ SpacingStatistics measureSpacing(const std::vector<Vec3>& points, double searchR
     throw MeshError("spacing statistics", "search radius must be positive", "");
   SpacingStatistics s;
   if (points.empty()) return s;
-  Vec3 lo = points.front(), hi = points.front();
-  for (const Vec3& p : points) {
-    lo = lo.cwiseMin(p);
-    hi = hi.cwiseMax(p);
-  }
-  detail::SpatialHash grid(lo, hi, searchRadius);
-  for (size_t i = 0; i < points.size(); ++i) grid.insert(static_cast<int>(i), points[i]);
+  const PointIndex index(points, searchRadius);
   std::vector<double> nearest(points.size(), std::numeric_limits<double>::infinity());
 #pragma omp parallel for schedule(static)
   for (long long il = 0; il < static_cast<long long>(points.size()); ++il) {
     const size_t i = static_cast<size_t>(il);
     double best = std::numeric_limits<double>::infinity();
-    grid.forEachNear(points[i], [&](int j) {
-      if (static_cast<size_t>(j) != i)
-        best = std::min(best, (points[static_cast<size_t>(j)] - points[i]).squaredNorm());
+    index.forEachNear(points[i], searchRadius, [&](size_t j) {
+      if (j != i) best = std::min(best, (points[j] - points[i]).squaredNorm());
     });
     if (best <= searchRadius * searchRadius) nearest[i] = std::sqrt(best);
   }

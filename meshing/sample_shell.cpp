@@ -18,15 +18,11 @@ ShellSamples sampleShell(const TriangleMesh& mesh, double thickness, double spac
   return sampleShell(mesh, o);
 }
 
-ShellSamples sampleShell(const TriangleMesh& mesh, const ShellSamplingOptions& options) {
-  const double d = options.spacing;  // [unit]
-  if (!(d > 0) || !std::isfinite(d))
-    throw MeshError("shell sampling", "spacing must be positive and finite", "give e.g. 0.4 mm");
-  if (!options.thickness)
-    throw MeshError("shell sampling", "no thickness given",
-                    "give a constant or a thickness function");
-  const double gap = options.innerGap < 0 ? 0.5 * d : options.innerGap;  // [unit]
-  // Largest thickness, for the lattice box.
+namespace {
+
+// Largest thickness over the vertices and face centroids, for the lattice box; throws for a
+// negative or non-finite one.
+double largestThickness(const TriangleMesh& mesh, const ShellSamplingOptions& options) {
   double tMax = 0;  // [unit]
   auto probe = [&](const Vec3& q) {
     const double t = options.thickness(q);
@@ -41,6 +37,20 @@ ShellSamples sampleShell(const TriangleMesh& mesh, const ShellSamplingOptions& o
     probe((mesh.vertices[static_cast<size_t>(f[0])] + mesh.vertices[static_cast<size_t>(f[1])] +
            mesh.vertices[static_cast<size_t>(f[2])]) /
           3.0);
+  return tMax;
+}
+
+}  // namespace
+
+ShellSamples sampleShell(const TriangleMesh& mesh, const ShellSamplingOptions& options) {
+  const double d = options.spacing;  // [unit]
+  if (!(d > 0) || !std::isfinite(d))
+    throw MeshError("shell sampling", "spacing must be positive and finite", "give e.g. 0.4 mm");
+  if (!options.thickness)
+    throw MeshError("shell sampling", "no thickness given",
+                    "give a constant or a thickness function");
+  const double gap = options.innerGap < 0 ? 0.5 * d : options.innerGap;  // [unit]
+  const double tMax = largestThickness(mesh, options);                   // [unit]
 
   const MeshQuery query(mesh);
   const MeshMeasures m = measureMesh(mesh);

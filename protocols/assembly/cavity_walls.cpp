@@ -4,8 +4,8 @@
 
 #include "anatomy/anatomy_error.h"
 #include "anatomy/retinal_regions.h"
+#include "meshing/point_index.h"
 #include "protocols/assembly/layered_cavity_walls.h"
-#include "protocols/scenario/point_grid.h"
 #include "protocols/scenario/scenario_error.h"
 #include "sim/boundary/wall_layers.h"
 
@@ -102,7 +102,7 @@ void replaceWithLayeredWalls(Scenario& s, double d) {
   const LayeredCavityWalls lw = sampleLayeredCavityWalls(s.cavity, d, kCavityWallLayers);
   sim::WallParticles& walls = s.world->walls;
   walls.fields.resize(0);
-  const PointGrid samples(s.retinaSamples.restPositions, d);
+  const meshing::PointIndex samples(s.retinaSamples.restPositions, d);
   for (std::size_t b = 0; b < lw.positions.size(); ++b) {
     const long owner = samples.nearest(lw.positions[b], (kCavityWallLayers + 2) * d);
     const int tag =

@@ -3,59 +3,32 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <unordered_map>
+
+#include "meshing/point_index.h"
 
 namespace protocols {
 namespace {
-
-// Points binned in cubic cells of the kernel support radius h: the neighbours of x are in the
-// 27 cells around cell(x).
-class CellGrid {
- public:
-  CellGrid(const std::vector<sim::Vec3>& points, double cellSize) : points_(points), h_(cellSize) {
-    for (std::size_t i = 0; i < points.size(); ++i) cells_[key(cellOf(points[i]))].push_back(i);
-  }
-  template <class F>
-  void forEachNear(const sim::Vec3& x, F&& f) const {
-    const Eigen::Array3i c = cellOf(x);
-    for (int dx = -1; dx <= 1; ++dx)
-      for (int dy = -1; dy <= 1; ++dy)
-        for (int dz = -1; dz <= 1; ++dz) {
-          const auto it = cells_.find(key(c + Eigen::Array3i(dx, dy, dz)));
-          if (it == cells_.end()) continue;
-          for (const std::size_t j : it->second) f(j, points_[j]);
-        }
-  }
-
- private:
-  Eigen::Array3i cellOf(const sim::Vec3& x) const { return (x / h_).array().floor().cast<int>(); }
-  static std::int64_t key(const Eigen::Array3i& c) {
-    const auto u = [](int v) { return static_cast<std::int64_t>(v + (1 << 20)) & ((1 << 21) - 1); };
-    return (u(c[0]) << 42) | (u(c[1]) << 21) | u(c[2]);
-  }
-  const std::vector<sim::Vec3>& points_;
-  double h_;
-  std::unordered_map<std::int64_t, std::vector<std::size_t>> cells_;
-};
 
 struct Sums {
   double fraction = 0.0;                   // [1] C_i
   sim::Vec3 gradient = sim::Vec3::Zero();  // [1/m] grad C_i
 };
 
-Sums sumsAt(const sim::World& world, std::size_t i, const CellGrid& dynamic, const CellGrid& walls,
-            const std::vector<double>& restVolumes) {
+// Both indices have cells of the kernel support radius h, so the neighbours of x are in the 27
+// cells around x's cell, visited in a fixed order: the sums do not depend on the thread count.
+Sums sumsAt(const sim::World& world, std::size_t i, const meshing::PointIndex& dynamic,
+            const meshing::PointIndex& walls, const std::vector<double>& restVolumes) {
   const sim::Vec3& xi = world.particles.x[i];
   const double h = world.supportRadius();
   Sums s;
-  dynamic.forEachNear(xi, [&](std::size_t j, const sim::Vec3& xj) {
-    const sim::Vec3 xij = xi - xj;
+  dynamic.forEachNear(xi, h, [&](std::size_t j) {
+    const sim::Vec3 xij = xi - dynamic.point(j);
     if (xij.squaredNorm() >= h * h) return;
     s.fraction += restVolumes[j] * world.kernel.W(xij);
     if (j != i) s.gradient += restVolumes[j] * world.kernel.gradW(xij);
   });
-  walls.forEachNear(xi, [&](std::size_t b, const sim::Vec3& xb) {
-    const sim::Vec3 xib = xi - xb;
+  walls.forEachNear(xi, h, [&](std::size_t b) {
+    const sim::Vec3 xib = xi - walls.point(b);
     if (xib.squaredNorm() >= h * h) return;
     s.fraction += world.walls.volume[b] * world.kernel.W(xib);
     s.gradient += world.walls.volume[b] * world.kernel.gradW(xib);
@@ -73,8 +46,8 @@ std::vector<double> restVolumesOf(const sim::World& world) {
 
 std::vector<double> volumeFractions(const sim::World& world) {
   const std::vector<double> restVolumes = restVolumesOf(world);
-  const CellGrid dynamic(world.particles.x, world.supportRadius());
-  const CellGrid walls(world.walls.x, world.supportRadius());
+  const meshing::PointIndex dynamic(world.particles.x, world.supportRadius());
+  const meshing::PointIndex walls(world.walls.x, world.supportRadius());
   std::vector<double> c(world.particles.size());
   const auto n = static_cast<std::int64_t>(c.size());
 #pragma omp parallel for schedule(static)
@@ -91,7 +64,7 @@ FillRelaxationResult relaxFill(sim::World& world, const FillRelaxation& options)
     moves[i] = std::find(options.movable.begin(), options.movable.end(),
                          world.particles.material[i]) != options.movable.end();
   const std::vector<double> restVolumes = restVolumesOf(world);
-  const CellGrid walls(world.walls.x, world.supportRadius());
+  const meshing::PointIndex walls(world.walls.x, world.supportRadius());
   const double d = world.particleSpacing();             // [m]
   const double limit = options.maxShift * d;            // [m]
   const double totalLimit = options.maxTotalShift * d;  // [m]
@@ -109,7 +82,7 @@ FillRelaxationResult relaxFill(sim::World& world, const FillRelaxation& options)
   std::vector<sim::Vec3> shift(n, sim::Vec3::Zero());
   const auto count = static_cast<std::int64_t>(n);
   for (int pass = 0; pass < options.passes; ++pass) {
-    const CellGrid dynamic(world.particles.x, world.supportRadius());
+    const meshing::PointIndex dynamic(world.particles.x, world.supportRadius());
 #pragma omp parallel for schedule(static)
     for (std::int64_t k = 0; k < count; ++k) {
       const auto i = static_cast<std::size_t>(k);

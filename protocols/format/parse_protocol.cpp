@@ -75,6 +75,10 @@ class ProtocolParser {
   }
 
   void readEye(const Table& root, Protocol& p);
+  void checkEyeKind(const Table& eye, const std::optional<Located<std::string>>& meshPath,
+                    const std::optional<Located<std::size_t>>& meshUnits, EyeSpec& e);
+  MeshSource readMeshSource(const Located<std::string>& meshPath,
+                            const Located<std::size_t>& meshUnits);
   RetinalBreak readBreak(const Table& t);
   void checkMeshEye(const EyeSpec& e);
   std::optional<TissueSpec> readTissue(const Table& eye, std::string_view key, bool isSclera);
@@ -148,53 +152,7 @@ void ProtocolParser::readEye(const Table& root, Protocol& p) {
   e.staphylomaWidth = reader_.quantity(*eye, "staphyloma_width");
   const auto meshPath = reader_.string(*eye, "mesh");
   const auto meshUnits = reader_.choice(*eye, "mesh_units");
-
-  if (kind) {
-    const EyeKind k = e.kind.value;
-    const std::string kindText = "kind = \"" + std::string(toString(k)) + "\"";
-    if (k == EyeKind::kMyopic || k == EyeKind::kStaphyloma)
-      requireConditional(*eye, "axial_length", e.axialLength.has_value(),
-                         "an eye of " + kindText + " needs its axial length");
-    if (k == EyeKind::kStaphyloma) {
-      requireConditional(*eye, "staphyloma_depth", e.staphylomaDepth.has_value(),
-                         "a staphyloma needs its depth");
-      requireConditional(*eye, "staphyloma_width", e.staphylomaWidth.has_value(),
-                         "a staphyloma needs its width");
-    } else {
-      for (std::string_view key : {"staphyloma_depth", "staphyloma_width"})
-        forbid(*eye, key, "applies only to kind = \"staphyloma\", not " + kindText,
-               "remove it, or set kind = \"staphyloma\"");
-    }
-    if (k == EyeKind::kMesh) {
-      forbid(*eye, "axial_length", "does not apply to an imported mesh (its size is the mesh's)",
-             "remove it, or scale the mesh with mesh_units");
-      requireConditional(*eye, "mesh", meshPath.has_value(), "kind = \"mesh\" needs the mesh file");
-      requireConditional(*eye, "mesh_units", meshUnits.has_value(),
-                         "mesh files carry no units, so the protocol must say them");
-      if (meshPath && meshUnits) {
-        MeshSource m;
-        m.pathAsWritten = meshPath->value;
-        const std::filesystem::path written(meshPath->value);
-        const std::filesystem::path resolved =
-            written.is_absolute() ? written : file_.parent_path() / written;
-        m.path = {resolved.lexically_normal(), meshPath->where};
-        const std::string_view unit = parameterSpec("eye.mesh_units").choices[meshUnits->value];
-        m.units = {std::string(unit), meshUnits->where};
-        m.metresPerUnit = findUnit(unit)->toSi;
-        if (const std::string problem = meshPathProblem(m.path.value); !problem.empty())
-          reader_.error(
-              meshPath->where, "eye.mesh " + problem + ": " + m.path.value.string(),
-              "the path is relative to the protocol file's folder (" +
-                  (file_.parent_path().empty() ? std::string(".") : file_.parent_path().string()) +
-                  ")");
-        e.mesh = std::move(m);
-      }
-    } else {
-      for (std::string_view key : {"mesh", "mesh_units"})
-        forbid(*eye, key, "applies only to kind = \"mesh\", not " + kindText,
-               "remove it, or set kind = \"mesh\"");
-    }
-  }
+  if (kind) checkEyeKind(*eye, meshPath, meshUnits, e);
 
   for (const Table& t : reader_.tableArray(*eye, "breaks")) e.breaks.push_back(readBreak(t));
   for (std::size_t i = 0; i < e.breaks.size(); ++i)
@@ -207,6 +165,60 @@ void ProtocolParser::readEye(const Table& root, Protocol& p) {
   e.sclera = readTissue(*eye, "sclera", true);
   e.orbitalFat = readTissue(*eye, "orbital_fat", false);
   if (kind && e.kind.value == EyeKind::kMesh) checkMeshEye(e);
+}
+
+// The keys each kind of eye needs and those it must not have; the mesh source of a mesh eye.
+void ProtocolParser::checkEyeKind(const Table& eye,
+                                  const std::optional<Located<std::string>>& meshPath,
+                                  const std::optional<Located<std::size_t>>& meshUnits,
+                                  EyeSpec& e) {
+  const EyeKind k = e.kind.value;
+  const std::string kindText = "kind = \"" + std::string(toString(k)) + "\"";
+  if (k == EyeKind::kMyopic || k == EyeKind::kStaphyloma)
+    requireConditional(eye, "axial_length", e.axialLength.has_value(),
+                       "an eye of " + kindText + " needs its axial length");
+  if (k == EyeKind::kStaphyloma) {
+    requireConditional(eye, "staphyloma_depth", e.staphylomaDepth.has_value(),
+                       "a staphyloma needs its depth");
+    requireConditional(eye, "staphyloma_width", e.staphylomaWidth.has_value(),
+                       "a staphyloma needs its width");
+  } else {
+    for (std::string_view key : {"staphyloma_depth", "staphyloma_width"})
+      forbid(eye, key, "applies only to kind = \"staphyloma\", not " + kindText,
+             "remove it, or set kind = \"staphyloma\"");
+  }
+  if (k == EyeKind::kMesh) {
+    forbid(eye, "axial_length", "does not apply to an imported mesh (its size is the mesh's)",
+           "remove it, or scale the mesh with mesh_units");
+    requireConditional(eye, "mesh", meshPath.has_value(), "kind = \"mesh\" needs the mesh file");
+    requireConditional(eye, "mesh_units", meshUnits.has_value(),
+                       "mesh files carry no units, so the protocol must say them");
+    if (meshPath && meshUnits) e.mesh = readMeshSource(*meshPath, *meshUnits);
+  } else {
+    for (std::string_view key : {"mesh", "mesh_units"})
+      forbid(eye, key, "applies only to kind = \"mesh\", not " + kindText,
+             "remove it, or set kind = \"mesh\"");
+  }
+}
+
+// The mesh file (relative to the protocol file's folder) and its units.
+MeshSource ProtocolParser::readMeshSource(const Located<std::string>& meshPath,
+                                          const Located<std::size_t>& meshUnits) {
+  MeshSource m;
+  m.pathAsWritten = meshPath.value;
+  const std::filesystem::path written(meshPath.value);
+  const std::filesystem::path resolved =
+      written.is_absolute() ? written : file_.parent_path() / written;
+  m.path = {resolved.lexically_normal(), meshPath.where};
+  const std::string_view unit = parameterSpec("eye.mesh_units").choices[meshUnits.value];
+  m.units = {std::string(unit), meshUnits.where};
+  m.metresPerUnit = findUnit(unit)->toSi;
+  if (const std::string problem = meshPathProblem(m.path.value); !problem.empty())
+    reader_.error(
+        meshPath.where, "eye.mesh " + problem + ": " + m.path.value.string(),
+        "the path is relative to the protocol file's folder (" +
+            (file_.parent_path().empty() ? std::string(".") : file_.parent_path().string()) + ")");
+  return m;
 }
 
 // What an imported mesh cannot carry, found by validate rather than at assembly: breaks are

@@ -46,6 +46,35 @@ struct FrameReader::Impl {
     return buffer;
   }
 
+  // The complete frames, by index; the names of those that cannot be read go to `unreadable`.
+  void listFrames() {
+    Handle all = hdf5::openGroup(file.get(), "frames", root);
+    for (const std::string& name : hdf5::linkNames(all.get(), root.at("frames"))) {
+      const Place place = root.at("frames/" + name);
+      try {
+        char* end = nullptr;
+        const unsigned long long index = std::strtoull(name.c_str(), &end, 10);
+        if (name.empty() || *end != '\0')
+          throw IoError(place.file, place.object, "not a frame number", "");
+        Handle frame =
+            checked(H5Gopen2(all.get(), name.c_str(), H5P_DEFAULT), place, "cannot open frame");
+        if (!hdf5::hasAttribute(frame.get(), "complete", place))
+          throw IoError(place.file, place.object, "frame is incomplete", "");
+        FrameInfo info;
+        info.index = static_cast<std::size_t>(index);
+        info.time = hdf5::readDoubleAttribute(frame.get(), "time", place);
+        info.step = hdf5::readInt64Attribute(frame.get(), "step", place);
+        info.groups = hdf5::linkNames(frame.get(), place);
+        frames.push_back(std::move(info));
+      } catch (const IoError&) {
+        H5Eclear2(H5E_DEFAULT);
+        unreadable.push_back(name);
+      }
+    }
+    std::sort(frames.begin(), frames.end(),
+              [](const FrameInfo& a, const FrameInfo& b) { return a.index < b.index; });
+  }
+
   Handle openFrameGroup(std::size_t index, const std::string& group, Place& place) const {
     frame(index);
     const std::string name = frameName(index);
@@ -58,18 +87,16 @@ struct FrameReader::Impl {
   }
 };
 
-FrameReader::FrameReader(const std::filesystem::path& h5Path) : impl_(std::make_unique<Impl>()) {
-  hdf5::silenceErrorPrinting();
-  Impl& s = *impl_;
-  s.root = Place{h5Path.string(), "/"};
-  if (!std::filesystem::exists(h5Path))
-    throw IoError(s.root.file, "", "no such file", "give the frames.h5 of a run folder");
-  Handle access = checked(H5Pcreate(H5P_FILE_ACCESS), s.root, "cannot create file properties");
+namespace {
+
+// The file opened read-only without waiting for a writer's lock.
+Handle openReadOnly(const std::filesystem::path& h5Path, const Place& root) {
+  Handle access = checked(H5Pcreate(H5P_FILE_ACCESS), root, "cannot create file properties");
   // Without the lock, a run still writing (it holds an exclusive lock) can be read; the reader
   // then sees the file as of the writer's last flush (see frame_writer.h).
-  check(H5Pset_file_locking(access.get(), false, true), s.root, "cannot disable file locking");
+  check(H5Pset_file_locking(access.get(), false, true), root, "cannot disable file locking");
   // The writer's close degree: HDF5 requires it to match when the file is open in-process.
-  check(H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG), s.root,
+  check(H5Pset_fclose_degree(access.get(), H5F_CLOSE_STRONG), root,
         "cannot set the file close mode");
   hid_t id = H5Fopen(h5Path.c_str(), H5F_ACC_RDONLY, access.get());
   if (id < 0) {
@@ -77,49 +104,39 @@ FrameReader::FrameReader(const std::filesystem::path& h5Path) : impl_(std::make_
     // insists on the writer's locking setting: retry with the default one, and if that fails
     // too, report the first reason.
     const std::string firstReason = hdf5::takeErrorStack();
-    check(H5Pset_file_locking(access.get(), true, true), s.root, "cannot set file locking");
+    check(H5Pset_file_locking(access.get(), true, true), root, "cannot set file locking");
     id = H5Fopen(h5Path.c_str(), H5F_ACC_RDONLY, access.get());
     H5Eclear2(H5E_DEFAULT);
     if (id < 0)
-      throw IoError(s.root.file, "", "cannot open as HDF5 [" + firstReason + "]",
+      throw IoError(root.file, "", "cannot open as HDF5 [" + firstReason + "]",
                     "give the frames.h5 of a run folder");
   }
-  s.file = Handle(id);
-  if (!hdf5::hasAttribute(s.file.get(), "format", s.root) ||
-      hdf5::readStringAttribute(s.file.get(), "format", s.root) != layout::kFramesFormat)
-    throw IoError(s.root.file, "", "not a frames file of this toolkit (no format attribute)",
+  return Handle(id);
+}
+
+void requireFramesFormat(const Handle& file, const Place& root) {
+  if (!hdf5::hasAttribute(file.get(), "format", root) ||
+      hdf5::readStringAttribute(file.get(), "format", root) != layout::kFramesFormat)
+    throw IoError(root.file, "", "not a frames file of this toolkit (no format attribute)",
                   "give the frames.h5 of a run folder");
-  const std::int64_t version = hdf5::readInt64Attribute(s.file.get(), "format_version", s.root);
+  const std::int64_t version = hdf5::readInt64Attribute(file.get(), "format_version", root);
   if (version > layout::kFramesFormatVersion)
-    throw IoError(s.root.file, "",
+    throw IoError(root.file, "",
                   "format version " + std::to_string(version) + " is newer than this toolkit's",
                   "read it with a newer tamponade");
+}
 
-  Handle frames = hdf5::openGroup(s.file.get(), "frames", s.root);
-  for (const std::string& name : hdf5::linkNames(frames.get(), s.root.at("frames"))) {
-    const Place place = s.root.at("frames/" + name);
-    try {
-      char* end = nullptr;
-      const unsigned long long index = std::strtoull(name.c_str(), &end, 10);
-      if (name.empty() || *end != '\0')
-        throw IoError(place.file, place.object, "not a frame number", "");
-      Handle frame =
-          checked(H5Gopen2(frames.get(), name.c_str(), H5P_DEFAULT), place, "cannot open frame");
-      if (!hdf5::hasAttribute(frame.get(), "complete", place))
-        throw IoError(place.file, place.object, "frame is incomplete", "");
-      FrameInfo info;
-      info.index = static_cast<std::size_t>(index);
-      info.time = hdf5::readDoubleAttribute(frame.get(), "time", place);
-      info.step = hdf5::readInt64Attribute(frame.get(), "step", place);
-      info.groups = hdf5::linkNames(frame.get(), place);
-      s.frames.push_back(std::move(info));
-    } catch (const IoError&) {
-      H5Eclear2(H5E_DEFAULT);
-      s.unreadable.push_back(name);
-    }
-  }
-  std::sort(s.frames.begin(), s.frames.end(),
-            [](const FrameInfo& a, const FrameInfo& b) { return a.index < b.index; });
+}  // namespace
+
+FrameReader::FrameReader(const std::filesystem::path& h5Path) : impl_(std::make_unique<Impl>()) {
+  hdf5::silenceErrorPrinting();
+  Impl& s = *impl_;
+  s.root = Place{h5Path.string(), "/"};
+  if (!std::filesystem::exists(h5Path))
+    throw IoError(s.root.file, "", "no such file", "give the frames.h5 of a run folder");
+  s.file = openReadOnly(h5Path, s.root);
+  requireFramesFormat(s.file, s.root);
+  s.listFrames();
 }
 
 FrameReader::~FrameReader() = default;

@@ -2,8 +2,8 @@
 
 #include <cmath>
 
+#include "meshing/point_index.h"
 #include "protocols/report/report_format.h"
-#include "protocols/scenario/point_grid.h"
 #include "protocols/tissue/shell_gaps.h"
 #include "sim/solid/fixed_particles.h"
 
@@ -56,7 +56,7 @@ void splitWalls(const Scenario& s, const TissueContext& c, WallRebuild& wr) {
   for (const TissueBody& t : s.tissues)
     if (t.name == "orbital fat" && t.decision.elastic)
       wr.fat.insert(wr.fat.end(), t.restPositions.begin(), t.restPositions.end());
-  const PointGrid fatGrid(wr.fat, 2.0 * d);
+  const meshing::PointIndex fatGrid(wr.fat, 2.0 * d);
   for (std::size_t w = 0; w < walls.size(); ++w) {
     const double layer = c.layerAt(walls.x[w]);  // [m]
     if (layer <= 0.0) {
@@ -86,8 +86,8 @@ std::vector<sim::Vec3> addLimbusCollar(const Scenario& s, const TissueContext& c
                                        const TissueBody& sclera, WallRebuild& wr) {
   const double d = c.d;
   const sim::WallParticles& walls = s.world->walls;
-  const PointGrid scleraGrid(sclera.restPositions, 1.5 * d);
-  const PointGrid coveredGrid(wr.covered, d);
+  const meshing::PointIndex scleraGrid(sclera.restPositions, 1.5 * d);
+  const meshing::PointIndex coveredGrid(wr.covered, d);
   std::vector<sim::Vec3> clamp;  // cap and collar walls
   for (const sim::Index w : wr.keep) {
     const sim::Vec3& x = walls.x[w];
@@ -127,7 +127,7 @@ std::vector<sim::Vec3> addLimbusCollar(const Scenario& s, const TissueContext& c
 void clampAtLimbus(Scenario& s, const TissueContext& c, TissueBody& sclera,
                    const std::vector<sim::Vec3>& clamp) {
   const double d = c.d;
-  const PointGrid clampGrid(clamp, kLimbusClampSpacings * d);
+  const meshing::PointIndex clampGrid(clamp, kLimbusClampSpacings * d);
   sim::DynamicParticles& particles = s.world->particles;
   for (std::size_t k = 0; k < sclera.count; ++k) {
     const std::size_t i = static_cast<std::size_t>(sclera.firstId) + k;  // not yet re-sorted
@@ -166,9 +166,9 @@ void addBonyOrbit(const TissueContext& c, const TissueBody& sclera, WallRebuild&
   for (const sim::Vec3& f : wr.fat) box.extend(f);
   const double reach = (kOrbitGapSpacings + 1.0) * d;  // [m]
   const double h = 0.5 * d;
-  const PointGrid scleraGrid(sclera.restPositions, 2.0 * d);
-  const PointGrid fatReach(wr.fat, reach);
-  const PointGrid coveredGrid(wr.covered, 4.0 * d);
+  const meshing::PointIndex scleraGrid(sclera.restPositions, 2.0 * d);
+  const meshing::PointIndex fatReach(wr.fat, reach);
+  const meshing::PointIndex coveredGrid(wr.covered, 4.0 * d);
   const sim::Vec3 lo = box.min() - sim::Vec3::Constant(reach),
                   hi = box.max() + sim::Vec3::Constant(reach);
   for (double x = lo.x(); x <= hi.x(); x += h)

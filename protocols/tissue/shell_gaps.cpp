@@ -23,8 +23,8 @@ constexpr double kShellFillSpacings = 0.4;
 // particle, or within kCapRimSpacings d of a wall sample over the sclera (the cap's edge on the
 // cavity surface). The first alone followed the sclera lattice's staircase and left stretches of
 // the rim 1.7 d long without a collar (a hole 2.5 d wide at the anterior-inferior limbus).
-bool onCapRim(const sim::Vec3& x, const PointGrid& scleraGrid, const PointGrid& coveredGrid,
-              double d) {
+bool onCapRim(const sim::Vec3& x, const meshing::PointIndex& scleraGrid,
+              const meshing::PointIndex& coveredGrid, double d) {
   return scleraGrid.anyWithin(x, 1.5 * d) || coveredGrid.anyWithin(x, kCapRimSpacings * d);
 }
 
@@ -49,10 +49,10 @@ std::size_t fillShellGaps(const meshing::TriangleMesh& cavityMesh, const ShellGa
                           std::vector<int>& addedTag) {
   const double d = in.d, h = 0.5 * d;
   const meshing::MeshQuery cavity(cavityMesh);
-  const PointGrid coveredGrid(in.covered, 4.0 * d);
-  const PointGrid shellGrid(added, d);
-  const PointGrid freeGrid(in.freeSclera, 2.0 * d);
-  const PointGrid fatGrid(in.fat, 2.0 * d);
+  const meshing::PointIndex coveredGrid(in.covered, 4.0 * d);
+  const meshing::PointIndex shellGrid(added, d);
+  const meshing::PointIndex freeGrid(in.freeSclera, 2.0 * d);
+  const meshing::PointIndex fatGrid(in.fat, 2.0 * d);
   double deepest = 0.0;  // [m]
   Eigen::AlignedBox3d box;
   for (std::size_t k = 0; k < in.covered.size(); ++k) {
@@ -99,7 +99,7 @@ std::vector<char> clampBandInterior(const TissueBody& sclera,
                                     const sim::DynamicParticles& particles,
                                     const std::vector<sim::Vec3>& freeSclera, double d) {
   const double support = sim::ElasticityParameters{}.supportRadiusFactor * d;  // [m]
-  const PointGrid freeGrid(freeSclera, support);
+  const meshing::PointIndex freeGrid(freeSclera, support);
   std::vector<char> interior(sclera.count, 0);
   for (std::size_t k = 0; k < sclera.count; ++k)
     interior[k] = sim::isFixed(particles, static_cast<std::size_t>(sclera.firstId) + k) &&
@@ -130,14 +130,14 @@ std::size_t wallClampBand(const meshing::TriangleMesh& cavityMesh, const ShellGa
     if (interior[k]) box.extend(scleraRest[k]);
   if (box.isEmpty()) return 0;
   const meshing::MeshQuery cavity(cavityMesh);
-  const PointGrid scleraGrid(scleraRest, d);
-  const PointGrid freeGrid(in.freeSclera, 2.0 * d);
-  const PointGrid coveredGrid(in.covered, 4.0 * d);
+  const meshing::PointIndex scleraGrid(scleraRest, d);
+  const meshing::PointIndex freeGrid(in.freeSclera, 2.0 * d);
+  const meshing::PointIndex coveredGrid(in.covered, 4.0 * d);
   std::vector<sim::Vec3> touching;  // kept sclera particles with a free one within 2 d
   for (std::size_t k = 0; k < scleraRest.size(); ++k)
     if (!interior[k] && freeGrid.anyWithin(scleraRest[k], 2.0 * d))
       touching.push_back(scleraRest[k]);
-  const PointGrid touchingGrid(touching, 2.0 * d);
+  const meshing::PointIndex touchingGrid(touching, 2.0 * d);
   const sim::Vec3 lo = box.min() - sim::Vec3::Constant(d), hi = box.max() + sim::Vec3::Constant(d);
   std::size_t count = 0;
   for (double x = lo.x(); x <= hi.x(); x += h)

@@ -5,8 +5,8 @@
 
 #include <vector>
 
+#include "meshing/point_index.h"
 #include "meshing/triangle_mesh.h"
-#include "protocols/scenario/point_grid.h"
 #include "protocols/scenario/tissue_body.h"
 #include "sim/core/particle_set.h"
 
@@ -14,8 +14,8 @@ namespace protocols {
 
 // A cap wall particle on the rim: within 1.5 d of a sclera particle or kCapRimSpacings d of a wall
 // sample over the sclera.
-bool onCapRim(const sim::Vec3& x, const PointGrid& scleraGrid, const PointGrid& coveredGrid,
-              double d);
+bool onCapRim(const sim::Vec3& x, const meshing::PointIndex& scleraGrid,
+              const meshing::PointIndex& coveredGrid, double d);
 
 // Wall particles in the fan from the collar's end to the backstop point (at most d/2 apart).
 int fanPieces(const sim::Vec3& collarEnd, const sim::Vec3& backstopPoint, double angle,

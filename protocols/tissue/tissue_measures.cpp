@@ -5,9 +5,9 @@
 #include <limits>
 
 #include "meshing/mesh_query.h"
+#include "meshing/point_index.h"
 #include "protocols/coverage/frame_coverage.h"
 #include "protocols/report/report_format.h"
-#include "protocols/scenario/point_grid.h"
 #include "protocols/tissue/tissue_sampling.h"
 
 namespace protocols {
@@ -35,8 +35,8 @@ void countFluidInTissue(const Scenario& s, const std::vector<sim::Vec3>& x,
         if (&t == sclera) scleraNow.push_back(x[i]);
       }
   const meshing::MeshQuery cavity(s.cavity);
-  const PointGrid scleraGrid(scleraNow, 1.5 * d);
-  const PointGrid samples(r.restPositions, d);
+  const meshing::PointIndex scleraGrid(scleraNow, 1.5 * d);
+  const meshing::PointIndex samples(r.restPositions, d);
   std::vector<double> depth(scleraNow.size(), std::numeric_limits<double>::quiet_NaN());
   const auto depthOf = [&](std::size_t j) {  // [m] signed: > 0 outside the rest cavity surface
     if (std::isnan(depth[j])) {

@@ -4,8 +4,8 @@
 #include <numbers>
 
 #include "anatomy/material_library.h"
+#include "meshing/point_index.h"
 #include "protocols/report/report_format.h"
-#include "protocols/scenario/point_grid.h"
 #include "protocols/tissue/tissue_measures.h"
 #include "sim/boundary/wetted_surface.h"
 #include "sim/solid/elasticity_peer2018.h"
@@ -91,7 +91,8 @@ std::size_t tagWettedRetina(Scenario& s, const TissueBody& t, const meshing::She
                             double d) {
   std::size_t tagged = 0;
   const sim::WallParticles& walls = s.world->walls;
-  const PointGrid wallGrid(std::vector<sim::Vec3>(walls.x.begin(), walls.x.end()), 2.0 * d);
+  const meshing::PointIndex wallGrid(std::vector<sim::Vec3>(walls.x.begin(), walls.x.end()),
+                                     2.0 * d);
   for (std::size_t k = 0; k < samples.points.size(); ++k) {
     if (samples.depth[k] >= 1.5 * d) continue;
     const long w = wallGrid.nearest(samples.points[k], 2.0 * d);

@@ -89,6 +89,15 @@ class InterfacialTensionHuAdams2006 final : public Effect {
   SurfaceStressForm form() const { return form_; }
 
  private:
+  // apply() per pair of materials, in two passes over the particles (neither allocates).
+  void surfaceStress(const World& world, const InterfacialTension& pair);
+  void stressDivergence(World& world, const InterfacialTension& pair);
+  // Per particle i of stressDivergence(): its pair sums and the walls' mirrored stress.
+  bool addCorrectedPairForce(const World& world, Index i, Real vi, Mat3& correction, Vec3& f) const;
+  void addSymmetricPairForce(const World& world, Index i, Real vi, Vec3& f) const;
+  void addMirroredStressForce(const World& world, Index i, Real vi, const Mat3& correction,
+                              bool elastic, Vec3& f) const;
+
   SurfaceStressForm form_;
   std::vector<Vec3>* colourGradient_ = nullptr;  // [1/m] output field of the first pair
   std::vector<Mat3> stress_;                     // [Pa] scratch: Pi of each particle

@@ -30,6 +30,26 @@ void ViscosityMonaghan2005::apply(World& world, const StepContext& context) {
     applyImpl<false>(world, context);
 }
 
+// Elastic particle i: the reaction of its fluid neighbours' moving-wall drag (applyImpl), the
+// same pair term with the fluid's viscosity and the opposite sign, so momentum goes from fluid to
+// solid, none is lost. Nothing between elastic pairs. Without the factor 2(d+2).
+Vec3 ViscosityMonaghan2005::elasticReaction(const World& world, Index i, Real h2) const {
+  const auto& p = world.particles;
+  const NeighborList& nf = world.fluidNeighbors();
+  const auto& gradF = world.fluidGradients();
+  Vec3 a = Vec3::Zero();
+  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
+    const Index j = nf.indices[k];
+    const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
+    if (muj <= 0) continue;
+    const Vec3 xij = p.x[i] - p.x[j];
+    const Real vx = (p.v[i] - p.v[j]).dot(xij);
+    a += (p.mass[j] * muj / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
+         gradF[k];
+  }
+  return a;
+}
+
 template <bool kSmoothing>
 void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) {
   auto& p = world.particles;
@@ -50,20 +70,7 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
   for (Index i = 0; i < n; ++i) {
     const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
     if (mui < 0) {
-      // Elastic particle: the reaction of its fluid neighbours'
-      // moving-wall drag (below), the same pair term with the fluid's viscosity and the opposite
-      // sign, so momentum goes from fluid to solid, none is lost. Nothing between elastic pairs.
-      Vec3 a = Vec3::Zero();
-      for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-        const Index j = nf.indices[k];
-        const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
-        if (muj <= 0) continue;
-        const Vec3 xij = p.x[i] - p.x[j];
-        const Real vx = (p.v[i] - p.v[j]).dot(xij);
-        a += (p.mass[j] * muj / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
-             gradF[k];
-      }
-      p.a[i] += kFactor * a;
+      p.a[i] += kFactor * elasticReaction(world, i, h2);
       continue;
     }
     Vec3 a = Vec3::Zero();

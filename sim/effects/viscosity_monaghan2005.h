@@ -40,6 +40,7 @@ class ViscosityMonaghan2005 final : public Effect {
  private:
   template <bool kSmoothing>
   void applyImpl(World& world, const StepContext& context);
+  Vec3 elasticReaction(const World& world, Index i, Real h2) const;  // per particle, no allocation
 
   bool wallFriction_;
   Real smoothing_ = 0;                     // [1] XSPH eps computed here (0: none)

@@ -172,7 +172,25 @@ void ViscosityWeiler2018::apply(World& world, const StepContext& context) {
 #pragma omp parallel for schedule(static)
   for (std::size_t i = 0; i < n; ++i) velocityStar_[i] = p.v[i] - dt * p.a[i];
   assemble(world, dt);
+  solve(world, dt);
   const auto& mass = p.mass;
+
+  // Momentum-exact update: the pair forces of the CG solution, applied to v* (header comment).
+  computeForces(world, solution_, product_);
+  auto& warmOut = *warmStart_;
+#pragma omp parallel for schedule(static)
+  for (std::size_t i = 0; i < n; ++i) {
+    const Vec3 a = product_[i] / mass[i];
+    p.v[i] += dt * a;  // v* + dt M^-1 f(u)
+    warmOut[i] = a;
+  }
+}
+
+// Preconditioned CG for the velocities of the step (into solution_), from the warm start.
+// Allocates nothing.
+void ViscosityWeiler2018::solve(const World& world, Real dt) {
+  const std::size_t n = world.particles.size();
+  const auto& mass = world.particles.mass;
   const auto& warm = *warmStart_;
 
   // Initial guess: v* plus last step's viscous velocity change at this step's length.
@@ -214,16 +232,6 @@ void ViscosityWeiler2018::apply(World& world, const StepContext& context) {
   lastResidual_ = start.z() > 0 ? std::sqrt(rr / start.z()) : 0.0;
   totalIterations_ += iterations;
   ++solves_;
-
-  // Momentum-exact update: the pair forces of the CG solution, applied to v* (header comment).
-  computeForces(world, solution_, product_);
-  auto& warmOut = *warmStart_;
-#pragma omp parallel for schedule(static)
-  for (std::size_t i = 0; i < n; ++i) {
-    const Vec3 a = product_[i] / mass[i];
-    p.v[i] += dt * a;  // v* + dt M^-1 f(u)
-    warmOut[i] = a;
-  }
 }
 
 Real advectionTimeStep(const World& world, Real solverLimit) {

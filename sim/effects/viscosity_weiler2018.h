@@ -78,6 +78,8 @@ class ViscosityWeiler2018 final : public Effect {
   Real multiply(const World& world, Real dt, const std::vector<Vec3>& in, std::vector<Vec3>& out);
   // m_i a_i (the viscous force [N]) of the velocity field `v` including walls at their velocity.
   void computeForces(const World& world, const std::vector<Vec3>& v, std::vector<Vec3>& out) const;
+  // The CG solve of apply() (allocates nothing).
+  void solve(const World& world, Real dt);
 
   ImplicitViscosityParameters params_;
   std::vector<Real> viscosityOfMaterial_;   // [Pa s]

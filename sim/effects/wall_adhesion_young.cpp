@@ -56,8 +56,16 @@ void WallAdhesionYoung::attach(World& world) {
   // the layers behind it would triple the area density and see no fluid of their own.
   surface_.resize(nWalls);
   for (std::size_t b = 0; b < nWalls; ++b) surface_[b] = isSurfaceWall(world.walls, b) ? 1 : 0;
+  assignContactAngles(world);
+  measureWallAreas(world);
+}
+
+// cos(theta_A) per surface wall particle and per wetted-tissue tag, from the contact angles.
+void WallAdhesionYoung::assignContactAngles(const World& world) {
+  const auto& materials = world.materials;
+  const std::size_t nWalls = world.walls.size();
   const std::vector<std::int32_t>* wetted = findWettedSurfaceField(world.particles);  // tag + 1
-  for (const auto& angle : angles) {
+  for (const auto& angle : materials.contactAngles()) {
     const std::string& fluid = materials[angle.fluidMaterial].name;
     require(angle.fluidMaterial == materialA_ || angle.fluidMaterial == materialB_,
             "contact angle given through '" + fluid +
@@ -85,7 +93,11 @@ void WallAdhesionYoung::attach(World& world) {
     require((*wetted)[i] == 0 || !materials.isFluid(world.particles.material[i]),
             "a fluid particle of '" + materials[world.particles.material[i]].name +
                 "' is marked as a wetted surface: only elastic tissue can be one");
-  // Area per wall particle from the surface number density of the wall sample.
+}
+
+// Area per wall particle from the surface number density of the wall sample.
+void WallAdhesionYoung::measureWallAreas(const World& world) {
+  const std::size_t nWalls = world.walls.size();
   const NeighborList& ss = world.search().staticStatic();
   const Real h = world.supportRadius();
   wallArea_.resize(nWalls);
@@ -148,17 +160,20 @@ void WallAdhesionYoung::updateWettedTissue(World& world) {
 }
 
 void WallAdhesionYoung::apply(World& world, const StepContext&) {
-  auto& p = world.particles;
+  if (wettedTissue_) updateWettedTissue(world);
+  sumWallFluid(world);
+  if (!wallStress(world)) return;
+  applyStressForces(world);
+}
+
+// S_b: serial scatter over the wall lists (deterministic order; O(particles near walls)).
+// Allocates nothing after the first step.
+void WallAdhesionYoung::sumWallFluid(const World& world) {
+  const auto& p = world.particles;
   const auto& walls = world.walls;
   const Index n = static_cast<Index>(p.size());
-  const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
   const Kernel& kernel = world.kernel;
-  auto inPair = [&](Index i) { return p.material[i] == materialA_ || p.material[i] == materialB_; };
-
-  if (wettedTissue_) updateWettedTissue(world);
-  // S_b: serial scatter over the wall lists (deterministic order; O(particles near walls)).
   wallFluidSum_.assign(walls.size(), 0.0);
   for (Index i = 0; i < n; ++i) {
     if (nw.count(i) == 0) continue;
@@ -166,13 +181,23 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
     for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
       if (surface_[*b]) wallFluidSum_[*b] += vi * kernel.W(p.x[i] - walls.x[*b]);
   }
-  // Wall delta function, wall normal and wall-interface stress per particle.
+}
+
+// Wall delta function, wall normal and wall-interface stress per particle; false when no
+// particle is stressed. Allocates nothing after the first step.
+bool WallAdhesionYoung::wallStress(const World& world) {
+  const auto& p = world.particles;
+  const auto& walls = world.walls;
+  const Index n = static_cast<Index>(p.size());
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
   stress_.resize(n);
   stressed_.assign(n, 0);
   bool any = false;
 #pragma omp parallel for schedule(static) reduction(|| : any)
   for (Index i = 0; i < n; ++i) {
-    if (!inPair(i) || (nw.count(i) == 0 && !wettedTissue_)) continue;
+    if (!inPair(p.material[i]) || (nw.count(i) == 0 && !wettedTissue_)) continue;
     Real delta = 0, cosWeighted = 0, weight = 0;  // [1/m], [1], [1/m^3]
     Vec3 m = Vec3::Zero();
     // Wetted tissue particles enter as wall particles do, with this step's area and normal.
@@ -213,10 +238,18 @@ void WallAdhesionYoung::apply(World& world, const StepContext&) {
     stressed_[i] = 1;
     any = true;
   }
-  if (!any) return;
+  return any;
+}
+
+// Divergence of the stress over the fluid neighbours. Allocates nothing.
+void WallAdhesionYoung::applyStressForces(World& world) {
+  auto& p = world.particles;
+  const Index n = static_cast<Index>(p.size());
+  const NeighborList& nf = world.fluidNeighbors();
+  const auto& gradF = world.fluidGradients();
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    if (!inPair(i)) continue;
+    if (!inPair(p.material[i])) continue;
     const Real vi = p.mass[i] / p.density[i];
     Vec3 f = Vec3::Zero();  // [N]
     for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {

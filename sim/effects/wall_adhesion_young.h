@@ -109,6 +109,15 @@ class WallAdhesionYoung final : public Effect {
   std::vector<Real> tissueArea_;      // [m^2]
   std::vector<Real> tissueFluidSum_;  // [1] S_k
   void updateWettedTissue(World& world);
+  // attach() and apply() in steps (the steps of apply() allocate nothing after the first step).
+  void assignContactAngles(const World& world);
+  void measureWallAreas(const World& world);
+  bool inPair(std::int32_t material) const {
+    return material == materialA_ || material == materialB_;
+  }
+  void sumWallFluid(const World& world);
+  bool wallStress(const World& world);
+  void applyStressForces(World& world);
 };
 
 }  // namespace sim

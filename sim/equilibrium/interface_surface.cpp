@@ -4,7 +4,12 @@
 
 namespace sim::equilibrium {
 
-InterfaceSurface interfaceSurface(const EquilibriumSolution& s) {
+namespace {
+
+// One vertex per dual cell the interface u = 1/2 crosses (all eight voxels fluid), at the mean of
+// the crossings on its edges; returns the vertex index of each such cell.
+std::unordered_map<std::size_t, int> placeVertices(const EquilibriumSolution& s,
+                                                   InterfaceSurface& out) {
   const VoxelGrid& g = s.grid;
   const std::vector<double>& u = s.oil;
   const std::vector<double>& f = s.fluidFraction;
@@ -12,7 +17,6 @@ InterfaceSurface interfaceSurface(const EquilibriumSolution& s) {
   auto value = [&](int i, int j, int k) { return u[g.index(i, j, k)] - 0.5; };
   // Dual cell (i, j, k) spans voxel centres i..i+1, j..j+1, k..k+1.
   std::unordered_map<std::size_t, int> vertexOf;
-  InterfaceSurface out;
   for (int k = 0; k + 1 < g.nz; ++k)
     for (int j = 0; j + 1 < g.ny; ++j)
       for (int i = 0; i + 1 < g.nx; ++i) {
@@ -39,7 +43,15 @@ InterfaceSurface interfaceSurface(const EquilibriumSolution& s) {
         vertexOf[g.index(i, j, k)] = static_cast<int>(out.vertices.size());
         out.vertices.push_back(sum / count);
       }
-  // One quad per crossed edge between voxel centres, from the four dual cells around it.
+  return vertexOf;
+}
+
+// One quad per crossed edge between voxel centres, from the four dual cells around it.
+void connectQuads(const EquilibriumSolution& s,
+                  const std::unordered_map<std::size_t, int>& vertexOf, InterfaceSurface& out) {
+  const VoxelGrid& g = s.grid;
+  const std::vector<double>& u = s.oil;
+  auto value = [&](int i, int j, int k) { return u[g.index(i, j, k)] - 0.5; };
   for (int k = 1; k + 1 < g.nz; ++k)
     for (int j = 1; j + 1 < g.ny; ++j)
       for (int i = 1; i + 1 < g.nx; ++i)
@@ -70,6 +82,14 @@ InterfaceSurface interfaceSurface(const EquilibriumSolution& s) {
             out.triangles.push_back({cell[0], cell[3], cell[2]});
           }
         }
+}
+
+}  // namespace
+
+InterfaceSurface interfaceSurface(const EquilibriumSolution& s) {
+  InterfaceSurface out;
+  const std::unordered_map<std::size_t, int> vertexOf = placeVertices(s, out);
+  connectQuads(s, vertexOf, out);
   return out;
 }
 

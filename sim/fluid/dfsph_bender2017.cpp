@@ -92,12 +92,6 @@ Real DfsphBender2017::computeDensityRate(World& world) {
 
 void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   auto& p = world.particles;
-  const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
   const Index n = static_cast<Index>(p.size());
   computeDensities(world, p.density);
   // The pipeline may redo correctVelocities with a shorter dt (step rejection); every attempt must
@@ -111,13 +105,27 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
   stats_.divergenceIterations = 0;
   const Real dt = context.dt;
   const bool divergence = params_.divergenceSolve && dt > 0;
+  stiffnessFactors(world, divergence);
+  if (!divergence) return;
+  solveDivergence(world, dt);
+}
+
+// Stiffness factor alpha_i (derivation in docs/methods/solvers.md). The same pass also computes
+// the divergence solve's first density rate and warm start (below), which only need this
+// particle's own values: one sweep over the pairs instead of two (bit-identical).
+// Allocates nothing.
+void DfsphBender2017::stiffnessFactors(const World& world, bool divergence) {
+  const auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const auto& gradF = world.fluidGradients();
+  const auto& gradB = world.wallGradients();
+  const Index n = static_cast<Index>(p.size());
   // kappaDivergence_ holds last step's accumulated stiffness (a pressure per density, m^2/s^2),
   // not stiffness * dt: the pressure is what persists from step to step when dt changes.
   auto& warm = *kappaDivergence_;
-
-  // Stiffness factor alpha_i (derivation in docs/methods/solvers.md). The same pass also computes
-  // the divergence solve's first density rate and warm start (below), which only need this
-  // particle's own values: one sweep over the pairs instead of two (bit-identical).
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Vec3 g = Vec3::Zero();
@@ -149,9 +157,13 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
     kappa_[i] = predicted_[i] > 0 ? params_.warmStartFactor * warm[i] : 0.0;
     warm[i] = kappa_[i];
   }
-  if (!divergence) return;
+}
 
-  // Divergence-free solve (Bender 2017, Algorithm 2): makes Drho/Dt = 0 for the current velocities.
+// Divergence-free solve (Bender 2017, Algorithm 2): makes Drho/Dt = 0 for the current velocities.
+// Allocates nothing.
+void DfsphBender2017::solveDivergence(World& world, Real dt) {
+  const Index n = static_cast<Index>(world.particles.size());
+  auto& warm = *kappaDivergence_;
   if (params_.warmStartFactor > 0) applyPressureVelocity(world, kappa_, dt);
   Real error = computeDensityRate(world) * dt;
   int iteration = 0;

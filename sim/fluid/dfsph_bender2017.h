@@ -52,6 +52,9 @@ class DfsphBender2017 final : public PressureSolver {
   // Drho_i/Dt = sum_j m_j (v_i - v_j).gradW_ij + v_i.wallGradient_i (cached gradients).
   Real densityRate(const World& world, Index i) const;
   Real maxCompression(const World& world) const;  // of the current prediction
+  // beginStep() in steps (neither allocates).
+  void stiffnessFactors(const World& world, bool divergence);
+  void solveDivergence(World& world, Real dt);
 
   DfsphParameters params_;
   std::vector<Real>* factor_ = nullptr;        // alpha_i [kg s^2... see header] (not checkpointed)

@@ -47,12 +47,7 @@ void IisphIhmsen2013::pressureAcceleration(const World& world) {
 
 void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context) {
   auto& p = world.particles;
-  const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
   const Real dt = context.dt, dt2 = dt * dt;
-  const Real wallFactor = params_.mirrorWallPressure ? 2.0 : 1.0;
   const Index n = static_cast<Index>(p.size());
   auto& pressure = *pressure_;
   advected_.resize(n);
@@ -60,32 +55,7 @@ void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context
   product_.resize(n);
   acceleration_.resize(n);
 
-  // rho_adv from v* and the diagonal a_ii = d(A p)_i / d p_i (docs/methods/solvers.md).
-#pragma omp parallel for schedule(static)
-  for (Index i = 0; i < n; ++i) {
-    const Real rho0 = world.restDensityOf(i);
-    Real rate = 0, sumSq = 0;
-    Vec3 gFluid = Vec3::Zero(), gWall = Vec3::Zero();
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
-      const Vec3 gradW = kernel.gradW(p.x[i] - p.x[*j]);
-      rate += p.mass[*j] * (p.v[i] - p.v[*j]).dot(gradW);
-      gFluid += p.mass[*j] * gradW;
-      sumSq += p.mass[*j] * gradW.squaredNorm();
-    }
-    Real wallRate = 0;
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b) {
-      const Vec3 gradW = kernel.gradW(p.x[i] - walls.x[*b]);
-      wallRate += walls.volume[*b] * p.v[i].dot(gradW);
-      gWall += walls.volume[*b] * gradW;
-    }
-    advected_[i] = p.density[i] + dt * (rate + rho0 * wallRate);
-    const Real invRho2 = 1.0 / (p.density[i] * p.density[i]);
-    // a_i depends on p_i through -p_i/rho_i^2 (gFluid + wallFactor rho0 gWall); a_j through
-    // +m_i p_i/rho_i^2 gradW_ij. Both enter (A p)_i as in the PPE above.
-    const Vec3 own = gFluid + wallFactor * rho0 * gWall;
-    diagonal_[i] = -dt2 * invRho2 * (own.dot(gFluid + rho0 * gWall) + p.mass[i] * sumSq);
-    pressure[i] = params_.warmStartFactor * previous_[i];
-  }
+  advectedDensityAndDiagonal(world, dt);
   // A full neighbourhood has |a_ii| ~ dt^2 / d^2; below 1e-6 of that the particle is isolated.
   const Real guard = 1e-6 * dt2 / (world.particleSpacing() * world.particleSpacing());
 
@@ -93,17 +63,7 @@ void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context
   int iteration = 0;
   for (;; ++iteration) {
     pressureAcceleration(world);
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-      Real value = 0;
-      for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-        value +=
-            p.mass[*j] * (acceleration_[i] - acceleration_[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
-      Real wall = 0;
-      for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-        wall += walls.volume[*b] * acceleration_[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
-      product_[i] = dt2 * (value + world.restDensityOf(i) * wall);
-    }
+    pressureProduct(world, dt2);
     // Mean compression of the predicted density rho_adv + A p (only compression counts).
     error = reducer_.sum(n, [&](std::size_t i) {
       const Index k = static_cast<Index>(i);
@@ -134,6 +94,66 @@ void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context
         const Index k = static_cast<Index>(i);
         return (advected_[k] + product_[k]) / world.restDensityOf(k) - 1.0;
       });
+}
+
+// rho_adv from v* and the diagonal a_ii = d(A p)_i / d p_i (docs/methods/solvers.md); also the
+// warm-started pressures. Allocates nothing.
+void IisphIhmsen2013::advectedDensityAndDiagonal(const World& world, Real dt) {
+  const auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const Real dt2 = dt * dt;
+  const Real wallFactor = params_.mirrorWallPressure ? 2.0 : 1.0;
+  const Index n = static_cast<Index>(p.size());
+  auto& pressure = *pressure_;
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    const Real rho0 = world.restDensityOf(i);
+    Real rate = 0, sumSq = 0;
+    Vec3 gFluid = Vec3::Zero(), gWall = Vec3::Zero();
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
+      const Vec3 gradW = kernel.gradW(p.x[i] - p.x[*j]);
+      rate += p.mass[*j] * (p.v[i] - p.v[*j]).dot(gradW);
+      gFluid += p.mass[*j] * gradW;
+      sumSq += p.mass[*j] * gradW.squaredNorm();
+    }
+    Real wallRate = 0;
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b) {
+      const Vec3 gradW = kernel.gradW(p.x[i] - walls.x[*b]);
+      wallRate += walls.volume[*b] * p.v[i].dot(gradW);
+      gWall += walls.volume[*b] * gradW;
+    }
+    advected_[i] = p.density[i] + dt * (rate + rho0 * wallRate);
+    const Real invRho2 = 1.0 / (p.density[i] * p.density[i]);
+    // a_i depends on p_i through -p_i/rho_i^2 (gFluid + wallFactor rho0 gWall); a_j through
+    // +m_i p_i/rho_i^2 gradW_ij. Both enter (A p)_i as in the PPE above.
+    const Vec3 own = gFluid + wallFactor * rho0 * gWall;
+    diagonal_[i] = -dt2 * invRho2 * (own.dot(gFluid + rho0 * gWall) + p.mass[i] * sumSq);
+    pressure[i] = params_.warmStartFactor * previous_[i];
+  }
+}
+
+// product_ = (A p) from the current acceleration_. Allocates nothing.
+void IisphIhmsen2013::pressureProduct(const World& world, Real dt2) {
+  const auto& p = world.particles;
+  const auto& walls = world.walls;
+  const NeighborList& nf = world.fluidNeighbors();
+  const NeighborList& nw = world.wallNeighbors();
+  const Kernel& kernel = world.kernel;
+  const Index n = static_cast<Index>(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i) {
+    Real value = 0;
+    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
+      value +=
+          p.mass[*j] * (acceleration_[i] - acceleration_[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
+    Real wall = 0;
+    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
+      wall += walls.volume[*b] * acceleration_[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
+    product_[i] = dt2 * (value + world.restDensityOf(i) * wall);
+  }
 }
 
 }  // namespace sim

@@ -38,6 +38,9 @@ class IisphIhmsen2013 final : public PressureSolver {
 
  private:
   void pressureAcceleration(const World& world);  // a_p from *pressure_ into acceleration_
+  // correctVelocities() in steps (neither allocates).
+  void advectedDensityAndDiagonal(const World& world, Real dt);
+  void pressureProduct(const World& world, Real dt2);
   IisphParameters params_;
   std::vector<Real>* pressure_ = nullptr;  // [Pa] (checkpointed: warm start)
   std::vector<Real> previous_;             // [Pa] last accepted step's pressure (scratch)

@@ -276,9 +276,6 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
   zeroFixedVelocities(world.particles);
   const Index n = static_cast<Index>(world.particles.size());
   const Real dt = context.dt;
-  auto& kappa = *kappa_;
-  const auto& delta = *numberDensity_;
-  const auto& walls = world.walls;
   const Index active = staticWalls_ ? static_cast<Index>(wallPairs_.walls.size()) : 0;
   std::vector<Real>* wallStep = staticWalls_ ? &wallIncrement_ : nullptr;
   // Mean compression over every unknown: fluid particles and active static wall particles.
@@ -288,6 +285,33 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
     return (fluid * n + predictWallNumberDensity(world, dt)) / (n + active);
   };
 
+  warmStartStiffness(world, dt);
+  Real error = predictAll();
+  int iteration = 0;
+  while ((iteration < params_.minIterations || error > params_.tolerance) &&
+         iteration < params_.maxIterations) {
+    relaxStiffness(world, dt);
+    applyPressureVelocity(world, increment_, dt, wallStep);
+    error = predictAll();
+    ++iteration;
+  }
+  stats_.densityIterations = iteration;
+  stats_.densityIterationLimit = params_.maxIterations;
+  stats_.averageCompression = error;
+  stats_.maxCompression = DeterministicReducer::max(predicted_.size(), [&](std::size_t i) {
+    return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
+  });
+  storePressure(world);
+}
+
+// The first increments: the warm start where a particle is compressed (or corrected both ways),
+// applied to the velocities. Allocates nothing.
+void IndsphWang2023::warmStartStiffness(World& world, Real dt) {
+  const Index n = static_cast<Index>(world.particles.size());
+  auto& kappa = *kappa_;
+  const auto& walls = world.walls;
+  const Index active = staticWalls_ ? static_cast<Index>(wallPairs_.walls.size()) : 0;
+  std::vector<Real>* wallStep = staticWalls_ ? &wallIncrement_ : nullptr;
   predictNumberDensity(world, dt);
   if (staticWalls_) predictWallNumberDensity(world, dt);
 #pragma omp parallel for schedule(static)
@@ -310,50 +334,50 @@ void IndsphWang2023::correctVelocities(World& world, const StepContext& context)
     }
   }
   if (params_.warmStartFactor > 0) applyPressureVelocity(world, increment_, dt, wallStep);
+}
 
-  Real error = predictAll();
-  int iteration = 0;
+// One relaxed Jacobi step of the stiffnesses (fluid, then active static walls). Allocates nothing.
+void IndsphWang2023::relaxStiffness(const World& world, Real dt) {
+  const Index n = static_cast<Index>(world.particles.size());
+  auto& kappa = *kappa_;
+  const auto& delta = *numberDensity_;
+  const auto& walls = world.walls;
+  const Index active = staticWalls_ ? static_cast<Index>(wallPairs_.walls.size()) : 0;
   const Real invDt2 = 1.0 / (dt * dt);
-  while ((iteration < params_.minIterations || error > params_.tolerance) &&
-         iteration < params_.maxIterations) {
 #pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) {
-      const Real delta0 = 1.0 / world.restVolumeOf(i);
-      // Eq. 18 with dt^2 (the paper's dt is a typesetting slip: the pressure acts for dt on a
-      // velocity that acts for dt on the number density, eq. 17).
-      increment_[i] = diagonal_[i] > 0 ? params_.relaxation * delta[i] * (predicted_[i] - delta0) *
-                                             invDt2 / diagonal_[i]
-                                       : 0.0;
-      kappa[i] += increment_[i];
-    }
-    if (staticWalls_) {
-#pragma omp parallel for schedule(static)
-      for (Index a = 0; a < active; ++a) {
-        const Index b = wallPairs_.walls[a];
-        // Eq. 21: only the dynamic neighbours move, so the diagonal is d_j^{p_b} alone.
-        wallIncrement_[b] = wallDiagonal_[b] > 0 ? params_.relaxation * wallDensity_[b] *
-                                                       (wallPredicted_[b] - 1.0 / walls.volume[b]) *
-                                                       invDt2 / wallDiagonal_[b]
-                                                 : 0.0;
-        (*wallKappa_)[b] += wallIncrement_[b];
-      }
-    }
-    applyPressureVelocity(world, increment_, dt, wallStep);
-    error = predictAll();
-    ++iteration;
+  for (Index i = 0; i < n; ++i) {
+    const Real delta0 = 1.0 / world.restVolumeOf(i);
+    // Eq. 18 with dt^2 (the paper's dt is a typesetting slip: the pressure acts for dt on a
+    // velocity that acts for dt on the number density, eq. 17).
+    increment_[i] = diagonal_[i] > 0 ? params_.relaxation * delta[i] * (predicted_[i] - delta0) *
+                                           invDt2 / diagonal_[i]
+                                     : 0.0;
+    kappa[i] += increment_[i];
   }
-  stats_.densityIterations = iteration;
-  stats_.densityIterationLimit = params_.maxIterations;
-  stats_.averageCompression = error;
-  stats_.maxCompression = DeterministicReducer::max(predicted_.size(), [&](std::size_t i) {
-    return predicted_[i] * world.restVolumeOf(static_cast<Index>(i)) - 1.0;
-  });
-  // p_i = kappa_i delta_i: eq. 19 is the symmetric SPH pressure force -sum (p_i/delta_i^2 +
-  // p_j/delta_j^2) gradW_ij written with kappa = p/delta.
+  if (staticWalls_) {
+#pragma omp parallel for schedule(static)
+    for (Index a = 0; a < active; ++a) {
+      const Index b = wallPairs_.walls[a];
+      // Eq. 21: only the dynamic neighbours move, so the diagonal is d_j^{p_b} alone.
+      wallIncrement_[b] = wallDiagonal_[b] > 0 ? params_.relaxation * wallDensity_[b] *
+                                                     (wallPredicted_[b] - 1.0 / walls.volume[b]) *
+                                                     invDt2 / wallDiagonal_[b]
+                                               : 0.0;
+      (*wallKappa_)[b] += wallIncrement_[b];
+    }
+  }
+}
+
+// p_i = kappa_i delta_i: eq. 19 is the symmetric SPH pressure force -sum (p_i/delta_i^2 +
+// p_j/delta_j^2) gradW_ij written with kappa = p/delta. Allocates nothing.
+void IndsphWang2023::storePressure(const World& world) {
+  const Index n = static_cast<Index>(world.particles.size());
+  const auto& kappa = *kappa_;
+  const auto& delta = *numberDensity_;
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) (*pressure_)[i] = kappa[i] * delta[i];
   if (staticWalls_) {
-    const Index nb = static_cast<Index>(walls.size());
+    const Index nb = static_cast<Index>(world.walls.size());
 #pragma omp parallel for schedule(static)
     for (Index b = 0; b < nb; ++b) (*wallPressure_)[b] = (*wallKappa_)[b] * wallDensity_[b];
   }

@@ -105,6 +105,10 @@ class IndsphWang2023 final : public PressureSolver {
                              const std::vector<Real>* wallKappa = nullptr);
   void prepareStaticWalls(const World& world);  // eq. 21 set-up: pairs, delta_b, diagonal
   Real predictWallNumberDensity(const World& world, Real dt);  // returns summed compression
+  // correctVelocities() in steps (none allocates).
+  void warmStartStiffness(World& world, Real dt);
+  void relaxStiffness(const World& world, Real dt);
+  void storePressure(const World& world);
 
   IndsphParameters params_;
   std::vector<Real>* numberDensity_ = nullptr;  // [1/m^3] delta_i (output)

@@ -175,12 +175,71 @@ void ElasticityPeer2018::computeBodyThickness(Real spacing, const std::vector<Re
   }
 }
 
+namespace {
+
+// Particle index of each id; ids must be creation indices 0..n-1.
+std::vector<Index> indicesById(const World& world) {
+  const auto& p = world.particles;
+  const std::size_t n = p.size();
+  std::vector<Index> idToIndex(n);
+  for (Index i = 0; i < n; ++i) {
+    require(p.id[i] >= 0 && static_cast<std::size_t>(p.id[i]) < n,
+            "elasticity: particle ids must be creation indices 0..n-1");
+    idToIndex[static_cast<std::size_t>(p.id[i])] = i;
+  }
+  return idToIndex;
+}
+
+// Reference neighbours: same material (one body per material) within the support radius, found
+// by binning the reference positions (the world's lists hold current, possibly moved positions).
+// Each list is sorted by slot.
+std::vector<std::vector<std::int32_t>> referenceNeighbours(
+    const std::vector<Vec3>& X, const std::vector<std::int32_t>& materialOf, Real h) {
+  const std::size_t slots = X.size();
+  std::vector<std::vector<std::int32_t>> neighbours(slots);
+  Vec3 lo = Vec3::Constant(1e300);
+  for (const Vec3& x : X) lo = lo.cwiseMin(x);
+  auto cellOf = [&](const Vec3& x) {
+    return Eigen::Vector3i(static_cast<int>(std::floor((x.x() - lo.x()) / h)),
+                           static_cast<int>(std::floor((x.y() - lo.y()) / h)),
+                           static_cast<int>(std::floor((x.z() - lo.z()) / h)));
+  };
+  std::vector<std::pair<std::int64_t, std::int32_t>> keyed(slots);
+  auto key = [](const Eigen::Vector3i& c) {
+    return (static_cast<std::int64_t>(c.x()) << 42) | (static_cast<std::int64_t>(c.y()) << 21) |
+           static_cast<std::int64_t>(c.z());
+  };
+  for (std::size_t s = 0; s < slots; ++s)
+    keyed[s] = {key(cellOf(X[s])), static_cast<std::int32_t>(s)};
+  std::sort(keyed.begin(), keyed.end());
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < slots; ++s) {
+    const Eigen::Vector3i c = cellOf(X[s]);
+    for (int dx = -1; dx <= 1; ++dx)
+      for (int dy = -1; dy <= 1; ++dy)
+        for (int dz = -1; dz <= 1; ++dz) {
+          const Eigen::Vector3i cc = c + Eigen::Vector3i(dx, dy, dz);
+          if (cc.minCoeff() < 0) continue;
+          const std::int64_t k = key(cc);
+          auto it =
+              std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(k, std::int32_t(-1)));
+          for (; it != keyed.end() && it->first == k; ++it) {
+            const auto j = static_cast<std::size_t>(it->second);
+            if (j == s || materialOf[j] != materialOf[s]) continue;
+            if ((X[j] - X[s]).squaredNorm() < h * h)
+              neighbours[s].push_back(static_cast<std::int32_t>(j));
+          }
+        }
+    std::sort(neighbours[s].begin(), neighbours[s].end());
+  }
+  return neighbours;
+}
+
+}  // namespace
+
 void ElasticityPeer2018::attach(World& world) {
   auto& p = world.particles;
   const std::size_t n = p.size();
-  auto isElastic = [&](Index i) {
-    return world.materials[p.material[i]].kind == MaterialKind::kElastic;
-  };
 
   // Reference positions: the registry field if a restart already holds one, else the current x.
   const bool restart = p.fields.has(field::kReferencePosition);
@@ -193,13 +252,43 @@ void ElasticityPeer2018::attach(World& world) {
       rotation[i].setIdentity();
     }
 
+  const std::vector<Index> idToIndex = indicesById(world);
+  const std::vector<Real> youngs = assignSlots(world, idToIndex);
+  const std::size_t slots = slotId_.size();
+
+  const Kernel kernel =
+      parameters_.supportRadiusFactor > 0
+          ? Kernel(world.kernel.kind(), parameters_.supportRadiusFactor * world.particleSpacing())
+          : world.kernel;
+  std::vector<Vec3> X(slots);
+  for (std::size_t s = 0; s < slots; ++s)
+    X[s] = reference[idToIndex[static_cast<std::size_t>(slotId_[s])]];
+  std::vector<std::int32_t> materialOf(slots);
+  for (std::size_t s = 0; s < slots; ++s)
+    materialOf[s] = p.material[idToIndex[static_cast<std::size_t>(slotId_[s])]];
+  const std::vector<std::vector<std::int32_t>> neighbours =
+      referenceNeighbours(X, materialOf, kernel.supportRadius());
+
+  countPairs(neighbours, X, kernel.supportRadius());
+  buildPairs(neighbours, X, kernel, youngs);
+  buildBodies(world, materialOf);
+
+  slotIndex_.resize(slots);
+  fixed_.resize(slots);
+  mass_.resize(slots);
+  energy_.resize(slots);
+  for (auto* v : {&x_, &v_, &rhs_, &r_, &z_, &p_, &ap_, &grad_}) v->resize(slots);
+  for (auto* m : {&rotation_, &defGrad_, &stress_, &precond_}) m->resize(slots);
+}
+
+std::vector<Real> ElasticityPeer2018::assignSlots(const World& world,
+                                                  const std::vector<Index>& idToIndex) {
+  const auto& p = world.particles;
+  const std::size_t n = p.size();
+  auto isElastic = [&](Index i) {
+    return world.materials[p.material[i]].kind == MaterialKind::kElastic;
+  };
   // Slots in id order, so the pair data do not depend on the current sort order.
-  std::vector<Index> idToIndex(n);
-  for (Index i = 0; i < n; ++i) {
-    require(p.id[i] >= 0 && static_cast<std::size_t>(p.id[i]) < n,
-            "elasticity: particle ids must be creation indices 0..n-1");
-    idToIndex[static_cast<std::size_t>(p.id[i])] = i;
-  }
   idToSlot_.assign(n, -1);
   slotId_.clear();
   for (std::size_t id = 0; id < n; ++id)
@@ -221,59 +310,12 @@ void ElasticityPeer2018::attach(World& world) {
     lambda_[s] = l.lambda;
     youngs[s] = m.youngsModulus;
   }
+  return youngs;
+}
 
-  // Reference neighbours: same material (one body per material) within the support radius, found
-  // by binning the reference positions (the world's lists hold current, possibly moved positions).
-  const Kernel kernel =
-      parameters_.supportRadiusFactor > 0
-          ? Kernel(world.kernel.kind(), parameters_.supportRadiusFactor * world.particleSpacing())
-          : world.kernel;
-  const Real h = kernel.supportRadius();
-  std::vector<Vec3> X(slots);
-  for (std::size_t s = 0; s < slots; ++s)
-    X[s] = reference[idToIndex[static_cast<std::size_t>(slotId_[s])]];
-  std::vector<std::int32_t> materialOf(slots);
-  for (std::size_t s = 0; s < slots; ++s)
-    materialOf[s] = p.material[idToIndex[static_cast<std::size_t>(slotId_[s])]];
-  std::vector<std::vector<std::int32_t>> neighbours(slots);
-  {
-    Vec3 lo = Vec3::Constant(1e300);
-    for (const Vec3& x : X) lo = lo.cwiseMin(x);
-    auto cellOf = [&](const Vec3& x) {
-      return Eigen::Vector3i(static_cast<int>(std::floor((x.x() - lo.x()) / h)),
-                             static_cast<int>(std::floor((x.y() - lo.y()) / h)),
-                             static_cast<int>(std::floor((x.z() - lo.z()) / h)));
-    };
-    std::vector<std::pair<std::int64_t, std::int32_t>> keyed(slots);
-    auto key = [](const Eigen::Vector3i& c) {
-      return (static_cast<std::int64_t>(c.x()) << 42) | (static_cast<std::int64_t>(c.y()) << 21) |
-             static_cast<std::int64_t>(c.z());
-    };
-    for (std::size_t s = 0; s < slots; ++s)
-      keyed[s] = {key(cellOf(X[s])), static_cast<std::int32_t>(s)};
-    std::sort(keyed.begin(), keyed.end());
-#pragma omp parallel for schedule(static)
-    for (std::size_t s = 0; s < slots; ++s) {
-      const Eigen::Vector3i c = cellOf(X[s]);
-      for (int dx = -1; dx <= 1; ++dx)
-        for (int dy = -1; dy <= 1; ++dy)
-          for (int dz = -1; dz <= 1; ++dz) {
-            const Eigen::Vector3i cc = c + Eigen::Vector3i(dx, dy, dz);
-            if (cc.minCoeff() < 0) continue;
-            const std::int64_t k = key(cc);
-            auto it =
-                std::lower_bound(keyed.begin(), keyed.end(), std::make_pair(k, std::int32_t(-1)));
-            for (; it != keyed.end() && it->first == k; ++it) {
-              const auto j = static_cast<std::size_t>(it->second);
-              if (j == s || materialOf[j] != materialOf[s]) continue;
-              if ((X[j] - X[s]).squaredNorm() < h * h)
-                neighbours[s].push_back(static_cast<std::int32_t>(j));
-            }
-          }
-      std::sort(neighbours[s].begin(), neighbours[s].end());
-    }
-  }
-
+void ElasticityPeer2018::countPairs(const std::vector<std::vector<std::int32_t>>& neighbours,
+                                    const std::vector<Vec3>& X, Real h) {
+  const std::size_t slots = neighbours.size();
   pairBegin_.assign(slots + 1, 0);
   for (std::size_t s = 0; s < slots; ++s) {
     if (neighbours[s].empty()) {
@@ -292,6 +334,13 @@ void ElasticityPeer2018::attach(World& world) {
   pairX_.resize(pairs);
   pairHourglass_.resize(pairs);
   gradSum_.resize(slots);
+}
+
+void ElasticityPeer2018::buildPairs(const std::vector<std::vector<std::int32_t>>& neighbours,
+                                    const std::vector<Vec3>& X, const Kernel& kernel,
+                                    const std::vector<Real>& youngs) {
+  const std::size_t slots = neighbours.size();
+  const Real h = kernel.supportRadius();
   const Real alpha = parameters_.hourglassStiffness;
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < slots; ++s) {
@@ -343,8 +392,12 @@ void ElasticityPeer2018::attach(World& world) {
     }
     gradSum_[s] = b;
   }
+}
 
-  // Bodies (one per elastic material), for the momentum correction in apply().
+// Bodies (one per elastic material), for the momentum correction in apply().
+void ElasticityPeer2018::buildBodies(const World& world,
+                                     const std::vector<std::int32_t>& materialOf) {
+  const std::size_t slots = materialOf.size();
   std::vector<std::int32_t> materials(materialOf);
   std::sort(materials.begin(), materials.end());
   materials.erase(std::unique(materials.begin(), materials.end()), materials.end());
@@ -370,13 +423,6 @@ void ElasticityPeer2018::attach(World& world) {
       speeds[b] = waveSpeed(world.materials[materials[b]]);
     computeBodyThickness(world.particleSpacing(), speeds);
   }
-
-  slotIndex_.resize(slots);
-  fixed_.resize(slots);
-  mass_.resize(slots);
-  energy_.resize(slots);
-  for (auto* v : {&x_, &v_, &rhs_, &r_, &z_, &p_, &ap_, &grad_}) v->resize(slots);
-  for (auto* m : {&rotation_, &defGrad_, &stress_, &precond_}) m->resize(slots);
 }
 
 void ElasticityPeer2018::mapSlots(const World& world) {
@@ -496,6 +542,28 @@ void ElasticityPeer2018::apply(World& world, const StepContext& context) {
   auto& p = world.particles;
   mapSlots(world);
   auto& rotation = p.fields.get<Mat3>(field::kElasticRotation);
+  gatherSlots(world, rotation);
+
+  // Elastic forces at the start-of-step positions; also updates the rotations.
+  energyGradient(x_, true, grad_);
+  stats_.elasticEnergy = reducer_.sum(slots, [&](std::size_t s) { return energy_[s]; });
+
+  solveVelocities(dt);
+  conserveBodyMomentum(world);
+
+#pragma omp parallel for schedule(static)
+  for (std::size_t s = 0; s < slots; ++s) {
+    const Index i = slotIndex_[s];
+    p.v[i] = fixed_[s] ? Vec3::Zero() : v_[s];
+    rotation[i] = rotation_[s];
+  }
+}
+
+// Copies the particles' state into slot order and marks the bodies holding a fixed particle.
+// Allocates nothing (the slot arrays are sized in attach()).
+void ElasticityPeer2018::gatherSlots(const World& world, const std::vector<Mat3>& rotation) {
+  const std::size_t slots = slotId_.size();
+  const auto& p = world.particles;
   const auto& fixed = p.fields.get<std::int32_t>(field::kFixed);
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < slots; ++s) {
@@ -510,11 +578,11 @@ void ElasticityPeer2018::apply(World& world, const StepContext& context) {
   std::fill(bodyFixed_.begin(), bodyFixed_.end(), 0);
   for (std::size_t s = 0; s < slots; ++s)
     if (fixed_[s]) bodyFixed_[static_cast<std::size_t>(bodyOf_[s])] = 1;
+}
 
-  // Elastic forces at the start-of-step positions; also updates the rotations.
-  energyGradient(x_, true, grad_);
-  stats_.elasticEnergy = reducer_.sum(slots, [&](std::size_t s) { return energy_[s]; });
-
+// Solves for v_ and fills the solver statistics. Allocates nothing.
+void ElasticityPeer2018::solveVelocities(Real dt) {
+  const std::size_t slots = slotId_.size();
   // Backward Euler of the linearised system: (M + dt^2 H) v = M v* - dt grad E.
 #pragma omp parallel for schedule(static)
   for (std::size_t s = 0; s < slots; ++s)
@@ -555,10 +623,14 @@ void ElasticityPeer2018::apply(World& world, const StepContext& context) {
   stats_.iterations = iteration;
   stats_.relativeResidual = bNorm > 0 ? std::sqrt(std::max(rz, 0.0)) / bNorm : 0.0;
   stats_.converged = std::sqrt(std::max(rz, 0.0)) <= target;
+}
 
-  // The exact solution conserves each free body's momentum (the energy is translation invariant,
-  // so sum_s grad_s = 0 and H has the translations in its null space); the CG residual does not.
-  // Remove its momentum part with a uniform velocity shift per body without fixed particles.
+// The exact solution conserves each free body's momentum (the energy is translation invariant,
+// so sum_s grad_s = 0 and H has the translations in its null space); the CG residual does not.
+// Remove its momentum part with a uniform velocity shift per body without fixed particles.
+// Allocates nothing.
+void ElasticityPeer2018::conserveBodyMomentum(const World& world) {
+  const auto& p = world.particles;
   for (std::size_t b = 0; b < bodyCount_; ++b) {
     if (bodyFixed_[b]) continue;
     Vec3 wanted = Vec3::Zero(), actual = Vec3::Zero();
@@ -571,13 +643,6 @@ void ElasticityPeer2018::apply(World& world, const StepContext& context) {
     }
     const Vec3 shift = (wanted - actual) / mass;
     for (std::size_t s = bodyBegin_[b]; s < bodyBegin_[b + 1]; ++s) v_[bodySlots_[s]] += shift;
-  }
-
-#pragma omp parallel for schedule(static)
-  for (std::size_t s = 0; s < slots; ++s) {
-    const Index i = slotIndex_[s];
-    p.v[i] = fixed_[s] ? Vec3::Zero() : v_[s];
-    rotation[i] = rotation_[s];
   }
 }
 

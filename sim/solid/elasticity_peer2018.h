@@ -120,7 +120,22 @@ class ElasticityPeer2018 final : public Effect {
   // applied to u (velocities, subtractIdentity = false); writes out[s] for every slot.
   void energyGradient(const std::vector<Vec3>& u, bool subtractIdentity, std::vector<Vec3>& out);
   void applySystem(const std::vector<Vec3>& v, Real dt, std::vector<Vec3>& out);
+  // attach() in steps: slots and their material constants (returns Young's modulus per slot),
+  // the CSR offsets of the reference pairs (throws for a slot without neighbours), the pairs'
+  // corrected gradients, and the bodies.
+  std::vector<Real> assignSlots(const World& world, const std::vector<Index>& idToIndex);
+  void countPairs(const std::vector<std::vector<std::int32_t>>& neighbours,
+                  const std::vector<Vec3>& X, Real h);
+  void buildPairs(const std::vector<std::vector<std::int32_t>>& neighbours,
+                  const std::vector<Vec3>& X, const Kernel& kernel,
+                  const std::vector<Real>& youngs);
+  void buildBodies(const World& world, const std::vector<std::int32_t>& materialOf);
   void mapSlots(const World& world);
+  // apply() in steps (none allocates): gather the slots' state, solve for the velocities,
+  // restore each free body's momentum.
+  void gatherSlots(const World& world, const std::vector<Mat3>& rotation);
+  void solveVelocities(Real dt);
+  void conserveBodyMomentum(const World& world);
   void computeRotations();
   void buildPreconditioner(Real dt);
 

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "meshing/mesh_query.h"
+#include "meshing/point_index.h"
 #include "protocols/assembly/assemble_scenario.h"
 #include "protocols/assembly/wall_wetting_notes.h"
 #include "protocols/format/parse_protocol.h"
@@ -21,7 +22,6 @@
 #include "protocols/io/frame_reader.h"
 #include "protocols/run/rebuild_report.h"
 #include "protocols/run/run_scenario.h"
-#include "protocols/scenario/point_grid.h"
 #include "protocols/scenario/scenario.h"
 #include "protocols/tissue/enclosure.h"
 #include "protocols/tissue/tissue_measures.h"
@@ -177,7 +177,7 @@ TEST_CASE("tissue: the paper's 10 kPa sclera and 1 kPa fat become anchored elast
       if (s.world->particles.material[i] == sclera.materialIndex &&
           sim::isFixed(s.world->particles, i))
         anchoredSclera.push_back(s.world->particles.x[i]);
-    const PointGrid anchoredGrid(anchoredSclera, d);
+    const meshing::PointIndex anchoredGrid(anchoredSclera, d);
     std::size_t behind = 0, collar = 0, band = 0;
     for (const sim::Vec3& x : s.world->walls.x) {
       const double r = std::sqrt(cavity.squaredDistance(x));
@@ -324,7 +324,7 @@ TEST_CASE("tissue: the retina over the elastic sclera carries the wall's contact
   // adding 2 d / R ~ 20 % of area (R ~ 11 mm, d = 1.2 mm): measured N d^2 / A = 1.24 (1153
   // particles over 2871 retina samples). 15 %: a second layer tagged would double it, a
   // missing half of the layer halve it.
-  const PointGrid grid(wetted, 2.0 * d);
+  const meshing::PointIndex grid(wetted, 2.0 * d);
   const RetinaSamples& r = s.retinaSamples;
   REQUIRE(r.scleraLayer.size() == r.restPositions.size());
   std::size_t covered = 0, bare = 0;
@@ -376,8 +376,8 @@ TEST_CASE(
     scleraPoints.push_back(particles.x[i]);
     if (!sim::isFixed(particles, i)) freePoints.push_back(particles.x[i]);
   }
-  const PointGrid fatGrid(fatPoints, h);
-  const PointGrid wallGrid(world.walls.x, h);
+  const meshing::PointIndex fatGrid(fatPoints, h);
+  const meshing::PointIndex wallGrid(world.walls.x, h);
   const meshing::MeshQuery cavity(s.cavity);
   // The outer layer spans depths (t_layer - d, t_layer] and the backstop stands at t_layer + g d
   // (g = kBackstopGapSpacings), so along the normal the wall is g d to (1 + g) d away; sampled at
@@ -417,11 +417,11 @@ TEST_CASE(
              << " with a wall or fat particle behind them within 2 d; kernel sum mean "
              << kernelSum / static_cast<double>(outer));
   CHECK(unbacked == 0);
-  const PointGrid scleraGrid(scleraPoints, d);
+  const meshing::PointIndex scleraGrid(scleraPoints, d);
   std::size_t tooClose = 0;
   for (const sim::Vec3& f : fatPoints) tooClose += scleraGrid.anyWithin(f, 0.99 * d) ? 1 : 0;
   CHECK(tooClose == 0);
-  const PointGrid freeGrid(freePoints, h);
+  const meshing::PointIndex freeGrid(freePoints, h);
   std::size_t wallNearFree = 0;
   for (const sim::Vec3& w : world.walls.x) wallNearFree += freeGrid.anyWithin(w, h) ? 1 : 0;
   CHECK(wallNearFree == 0);
@@ -532,7 +532,7 @@ TEST_CASE("tissue: the walls around the tissues open no wider than the rigid cav
                                              << " d: " << (path.escapes() ? "open" : "closed"));
   if (path.escapes()) {
     // Where it leads (mm, and the nearest wall particle in d): the narrowest point is the hole.
-    const PointGrid wallGrid(world.walls.x, d);
+    const meshing::PointIndex wallGrid(world.walls.x, d);
     for (std::size_t k = 0; k < path.points.size();
          k += std::max<std::size_t>(1, path.points.size() / 40)) {
       const long w = wallGrid.nearest(path.points[k], 8.0 * d);
