@@ -4,6 +4,7 @@
 
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/fluid/indsph_wang2023.h"
+#include "sim/world/pair_loop.h"
 
 namespace sim {
 
@@ -27,10 +28,8 @@ void BackgroundPressure::apply(World& world, const StepContext& context) {
   auto& shift = *shift_;
   const Real dt = context.dt;
   const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Index n = static_cast<Index>(p.size());
   // The first tension pair's colour gradient, this step's (interfacial_tension runs before).
   const std::vector<Vec3>* colour =
@@ -42,15 +41,13 @@ void BackgroundPressure::apply(World& world, const StepContext& context) {
     const Real vi = p.mass[i] / p.density[i];
     const Real vi2 = vi * vi;
     Vec3 bracket = Vec3::Zero();
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
+    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
       const Real vj = p.mass[j] / p.density[j];
-      bracket += (vi2 + vj * vj) * gradF[k];
-    }
-    Vec3 wall = Vec3::Zero();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
-      wall += walls.volume[nw.indices[k]] * gradB[k];
-    bracket += (2.0 * vi2 / world.restVolumeOf(i)) * wall;
+      bracket += (vi2 + vj * vj) * gradW;
+    });
+    Vec3 wallSum = Vec3::Zero();
+    wall.forEach(i, [&](Index b, const Vec3& gradW) { wallSum += walls.volume[b] * gradW; });
+    bracket += (2.0 * vi2 / world.restVolumeOf(i)) * wallSum;
     // rho_ref V_i instead of m_i: the shift is a displacement that depends only on the particle
     // arrangement, the same in every phase (see the header: with m_i a heavy droplet was shifted
     // less than the liquid around it and settled at another contact angle).

@@ -8,7 +8,7 @@
 
 #include <cmath>
 
-#include "sim/world/world.h"
+#include "sim/world/pair_loop.h"
 
 namespace sim {
 
@@ -28,25 +28,19 @@ inline constexpr Real kMinFluidCorrectionDeterminant = 0.05;  // fluid only (gra
 // `liquidsOnly`: only the neighbours of fluid materials (elastic ones left out, as walls are).
 inline Mat3 fluidGradientMoment(const World& world, Index i, bool liquidsOnly = false) {
   const auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
-  const auto& gradF = world.fluidGradients();
   Mat3 b = Mat3::Zero();
-  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-    const Index j = nf.indices[k];
-    if (liquidsOnly && !world.materials.isFluid(p.material[j])) continue;
-    b += (p.mass[j] / p.density[j]) * gradF[k] * (p.x[j] - p.x[i]).transpose();
-  }
+  fluidPairs(world).forEach(i, [&](Index j, const Vec3& gradW) {
+    if (liquidsOnly && !world.materials.isFluid(p.material[j])) return;
+    b += (p.mass[j] / p.density[j]) * gradW * (p.x[j] - p.x[i]).transpose();
+  });
   return b;
 }
 
 inline Mat3 wallGradientMoment(const World& world, Index i) {
-  const NeighborList& nw = world.wallNeighbors();
-  const auto& gradB = world.wallGradients();
   Mat3 b = Mat3::Zero();
-  for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-    const Index w = nw.indices[k];
-    b += world.walls.volume[w] * gradB[k] * (world.walls.x[w] - world.particles.x[i]).transpose();
-  }
+  wallPairs(world).forEach(i, [&](Index w, const Vec3& gradW) {
+    b += world.walls.volume[w] * gradW * (world.walls.x[w] - world.particles.x[i]).transpose();
+  });
   return b;
 }
 

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "sim/effects/gradient_correction.h"
+#include "sim/world/pair_loop.h"
 
 namespace sim {
 namespace {
@@ -81,8 +82,7 @@ void InterfacialTensionHuAdams2006::surfaceStress(const World& world,
                                                   const InterfacialTension& pair) {
   const auto& p = world.particles;
   const Index n = static_cast<Index>(p.size());
-  const NeighborList& nf = world.fluidNeighbors();
-  const auto& gradF = world.fluidGradients();
+  const PairLoop fluid = fluidPairs(world);
   const bool corrected = form_ == SurfaceStressForm::kCorrected;
   const Real dimension = 3.0;
   const bool elastic = world.materials.countOfKind(MaterialKind::kElastic) > 0;
@@ -96,12 +96,11 @@ void InterfacialTensionHuAdams2006::surfaceStress(const World& world,
       continue;
     }
     Vec3 g = Vec3::Zero();
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
+    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
       const int cj = colourOf(p.material[j], pair);
-      if (cj < 0 || cj == ci) continue;  // (C_j - C_i) = 0 within a phase
-      g += (p.mass[j] / p.density[j]) * Real(cj - ci) * gradF[k];
-    }
+      if (cj < 0 || cj == ci) return;  // (C_j - C_i) = 0 within a phase
+      g += (p.mass[j] / p.density[j]) * Real(cj - ci) * gradW;
+    });
     // L_i only where gradC is not 0, i.e. on the interface: the bulk costs no extra pass.
     if (corrected && g.squaredNorm() > 0)
       // The colour lives on the fluids; elastic neighbours are a wall to them (phase 2), and
@@ -147,7 +146,6 @@ bool InterfacialTensionHuAdams2006::addCorrectedPairForce(const World& world, In
   const auto& p = world.particles;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
   // Difference form sum_j V_j (Pi_j - Pi_i) L_i gradW_ij: zero for a uniform stress on any
   // particle order (the symmetric sum is not: 2 Pi_i sum_j V_j gradW_ij remains).
   // The correction acts on the kernel gradient (the derivative's index), not on the result.
@@ -162,12 +160,11 @@ bool InterfacialTensionHuAdams2006::addCorrectedPairForce(const World& world, In
                          kMinCorrectionDeterminant);
   const Mat3 zero = Mat3::Zero();
   const Mat3& own = stressed_[i] ? stress_[i] : zero;
-  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-    const Index j = nf.indices[k];
-    if (!stressed_[i] && !stressed_[j]) continue;
+  fluidPairs(world).forEach(i, [&](Index j, const Vec3& gradW) {
+    if (!stressed_[i] && !stressed_[j]) return;
     const Mat3 difference = (stressed_[j] ? stress_[j] : zero) - own;
-    f += vi * (p.mass[j] / p.density[j]) * (difference * (correction * gradF[k]));
-  }
+    f += vi * (p.mass[j] / p.density[j]) * (difference * (correction * gradW));
+  });
   return true;
 }
 
@@ -175,15 +172,12 @@ bool InterfacialTensionHuAdams2006::addCorrectedPairForce(const World& world, In
 void InterfacialTensionHuAdams2006::addSymmetricPairForce(const World& world, Index i, Real vi,
                                                           Vec3& f) const {
   const auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
-  const auto& gradF = world.fluidGradients();
-  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-    const Index j = nf.indices[k];
-    if (!stressed_[i] && !stressed_[j]) continue;  // both zero (includes non-members)
+  fluidPairs(world).forEach(i, [&](Index j, const Vec3& gradW) {
+    if (!stressed_[i] && !stressed_[j]) return;  // both zero (includes non-members)
     const Mat3 sum =
         stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i]) : stress_[j];
-    f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
-  }
+    f += vi * (p.mass[j] / p.density[j]) * (sum * gradW);
+  });
 }
 
 // Mirror image of the stress across the wall: Pi_b = R Pi_i R with the reflection
@@ -201,25 +195,20 @@ void InterfacialTensionHuAdams2006::addMirroredStressForce(const World& world, I
                                                            const Mat3& correction, bool elastic,
                                                            Vec3& f) const {
   const auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
   const auto& wallVolume = world.walls.volume;
   const auto& wallNormal = world.walls.normal;
   const bool corrected = form_ == SurfaceStressForm::kCorrected;
   Vec3 wallSum = Vec3::Zero(), m = Vec3::Zero();
-  for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-    wallSum += wallVolume[nw.indices[k]] * gradB[k];
-    m += wallNormal[nw.indices[k]] * wallVolume[nw.indices[k]];
-  }
+  wallPairs(world).forEach(i, [&](Index b, const Vec3& gradW) {
+    wallSum += wallVolume[b] * gradW;
+    m += wallNormal[b] * wallVolume[b];
+  });
   Vec3 solidSum = Vec3::Zero();  // sum V_j gradW_ij over elastic j: points into the tissue
   if (elastic)
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
-      if (!world.materials.isFluid(p.material[j]))
-        solidSum += (p.mass[j] / p.density[j]) * gradF[k];
-    }
+    fluidPairs(world).forEach(i, [&](Index j, const Vec3& gradW) {
+      if (!world.materials.isFluid(p.material[j])) solidSum += (p.mass[j] / p.density[j]) * gradW;
+    });
   if (solidSum.squaredNorm() > 0)
     m = m.squaredNorm() > 0 ? Vec3(m.normalized() + solidSum.normalized()) : solidSum;
   if (!(nw.count(i) > 0 || solidSum.squaredNorm() > 0)) return;

@@ -1,4 +1,5 @@
 #include "sim/effects/viscosity_monaghan2005.h"
+#include "sim/world/pair_loop.h"
 
 #include <limits>
 
@@ -35,18 +36,14 @@ void ViscosityMonaghan2005::apply(World& world, const StepContext& context) {
 // solid, none is lost. Nothing between elastic pairs. Without the factor 2(d+2).
 Vec3 ViscosityMonaghan2005::elasticReaction(const World& world, Index i, Real h2) const {
   const auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
-  const auto& gradF = world.fluidGradients();
   Vec3 a = Vec3::Zero();
-  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-    const Index j = nf.indices[k];
+  fluidPairs(world).forEach(i, [&](Index j, const Vec3& gradW) {
     const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
-    if (muj <= 0) continue;
+    if (muj <= 0) return;
     const Vec3 xij = p.x[i] - p.x[j];
     const Real vx = (p.v[i] - p.v[j]).dot(xij);
-    a += (p.mass[j] * muj / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
-         gradF[k];
-  }
+    a += (p.mass[j] * muj / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) * gradW;
+  });
   return a;
 }
 
@@ -55,9 +52,7 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
   auto& p = world.particles;
   const auto& walls = world.walls;
   const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Kernel& kernel = world.kernel;
   const Real h2 = 0.01 * world.supportRadius() * world.supportRadius();
   constexpr Real kFactor = 2.0 * (3 + 2);                                  // 2(d+2), d = 3
@@ -75,8 +70,7 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
     }
     Vec3 a = Vec3::Zero();
     Vec3 smooth = Vec3::Zero();
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
+    fluid.forEach(i, [&](Index j, const Vec3& gradW, Index k) {
       const Vec3 xij = p.x[i] - p.x[j];
       // XSPH's rule (xsph_monaghan1989.h): same material only, which also leaves out solids.
       if constexpr (kSmoothing)
@@ -85,19 +79,16 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
       const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
       // An elastic neighbour is a wall moving with the solid's velocity: the fluid's viscosity.
       const Real mu = muj < 0 ? mui : 0.5 * (mui + muj);
-      if (mu == 0) continue;
+      if (mu == 0) return;
       const Real vx = (p.v[i] - p.v[j]).dot(xij);
-      a += (p.mass[j] * mu / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) *
-           gradF[k];
-    }
-    if (wallFriction_ && mui > 0) {
-      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-        const Index b = nw.indices[k];
+      a += (p.mass[j] * mu / (p.density[i] * p.density[j]) * vx / (xij.squaredNorm() + h2)) * gradW;
+    });
+    if (wallFriction_ && mui > 0)
+      wall.forEach(i, [&](Index b, const Vec3& gradW) {
         const Vec3 xib = p.x[i] - walls.x[b];
         const Real vx = p.v[i].dot(xib);
-        a += (walls.volume[b] * mui / p.density[i] * vx / (xib.squaredNorm() + h2)) * gradB[k];
-      }
-    }
+        a += (walls.volume[b] * mui / p.density[i] * vx / (xib.squaredNorm() + h2)) * gradW;
+      });
     p.a[i] += kFactor * a;
     if constexpr (kSmoothing) p.a[i] += smoothingScale * smooth;
   }

@@ -1,6 +1,7 @@
 #include "sim/effects/viscosity_weiler2018.h"
 
 #include "sim/effects/viscosity_monaghan2005.h"
+#include "sim/world/pair_loop.h"
 
 #include <algorithm>
 #include <cmath>
@@ -68,8 +69,7 @@ void ViscosityWeiler2018::assemble(const World& world, Real dt) {
   const auto& p = world.particles;
   const NeighborList& nf = world.fluidNeighbors();
   const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Real h = world.supportRadius();
   const Real eps = kRegularisation * h * h;
   fluidPair_.resize(nf.totalPairs());
@@ -79,27 +79,25 @@ void ViscosityWeiler2018::assemble(const World& world, Real dt) {
   for (Index i = 0; i < n; ++i) {
     const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
     Mat3 block = p.mass[i] * Mat3::Identity();
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
+    fluid.forEach(i, [&](Index j, const Vec3& gradW, Index k) {
       const Real mu =
           pairViscosity(mui, viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])]);
       const Real c =
           kDimensionFactor * (p.mass[i] * p.mass[j]) * mu / (p.density[i] * p.density[j]);
-      const Real s = c == 0 ? 0 : pairScale(c, p.x[i] - p.x[j], gradF[k], eps);
+      const Real s = c == 0 ? 0 : pairScale(c, p.x[i] - p.x[j], gradW, eps);
       fluidPair_[k] = s;
-      block -= (dt * s) * gradF[k] * gradF[k].transpose();
-    }
+      block -= (dt * s) * gradW * gradW.transpose();
+    });
     Vec3 wallForce = Vec3::Zero();  // [N] the part of the wall force set by the wall velocity
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-      const Index b = nw.indices[k];
+    wall.forEach(i, [&](Index b, const Vec3& gradW, Index k) {
       const Real c = params_.wallFriction
                          ? kDimensionFactor * p.mass[i] * world.walls.volume[b] * mui / p.density[i]
                          : 0.0;
-      const Real s = c == 0 ? 0 : pairScale(c, p.x[i] - world.walls.x[b], gradB[k], eps);
+      const Real s = c == 0 ? 0 : pairScale(c, p.x[i] - world.walls.x[b], gradW, eps);
       wallPair_[k] = s;
-      block -= (dt * s) * gradB[k] * gradB[k].transpose();
-      if (wallVelocity_ != nullptr) wallForce -= s * gradB[k].dot((*wallVelocity_)[b]) * gradB[k];
-    }
+      block -= (dt * s) * gradW * gradW.transpose();
+      if (wallVelocity_ != nullptr) wallForce -= s * gradW.dot((*wallVelocity_)[b]) * gradW;
+    });
     preconditioner_[i] = block.inverse();
     // Right-hand side b = M v* + dt f_wall(v_b) (the wall velocity is known, so it moves over).
     rhs_[i] = p.mass[i] * velocityStar_[i] + dt * wallForce;
@@ -109,20 +107,19 @@ void ViscosityWeiler2018::assemble(const World& world, Real dt) {
 Real ViscosityWeiler2018::multiply(const World& world, Real dt, const std::vector<Vec3>& in,
                                    std::vector<Vec3>& out) {
   const auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Index n = static_cast<Index>(p.size());
   // The pair loop is the cost: a plain static loop so that every thread gets work even when the
   // particle count is below a few reduction blocks; the dot product is a separate cheap pass.
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Vec3 f = Vec3::Zero();  // [N] linear part of the viscous force on i
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
-      f += (fluidPair_[k] * gradF[k].dot(in[i] - in[nf.indices[k]])) * gradF[k];
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
-      f += (wallPair_[k] * gradB[k].dot(in[i])) * gradB[k];
+    fluid.forEach(i, [&](Index j, const Vec3& gradW, Index k) {
+      f += (fluidPair_[k] * gradW.dot(in[i] - in[j])) * gradW;
+    });
+    wall.forEach(i, [&](Index, const Vec3& gradW, Index k) {
+      f += (wallPair_[k] * gradW.dot(in[i])) * gradW;
+    });
     out[i] = p.mass[i] * in[i] - dt * f;
   }
   return reducer_.sum(p.size(), [&](std::size_t i) { return in[i].dot(out[i]); });
@@ -131,20 +128,18 @@ Real ViscosityWeiler2018::multiply(const World& world, Real dt, const std::vecto
 void ViscosityWeiler2018::computeForces(const World& world, const std::vector<Vec3>& v,
                                         std::vector<Vec3>& out) const {
   const auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Vec3 f = Vec3::Zero();
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
-      f += (fluidPair_[k] * gradF[k].dot(v[i] - v[nf.indices[k]])) * gradF[k];
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-      const Vec3 vb = wallVelocity_ != nullptr ? (*wallVelocity_)[nw.indices[k]] : Vec3::Zero();
-      f += (wallPair_[k] * gradB[k].dot(v[i] - vb)) * gradB[k];
-    }
+    fluid.forEach(i, [&](Index j, const Vec3& gradW, Index k) {
+      f += (fluidPair_[k] * gradW.dot(v[i] - v[j])) * gradW;
+    });
+    wall.forEach(i, [&](Index b, const Vec3& gradW, Index k) {
+      const Vec3 vb = wallVelocity_ != nullptr ? (*wallVelocity_)[b] : Vec3::Zero();
+      f += (wallPair_[k] * gradW.dot(v[i] - vb)) * gradW;
+    });
     out[i] = f;
   }
 }

@@ -8,6 +8,7 @@
 
 #include "sim/boundary/wall_layers.h"
 #include "sim/boundary/wetted_surface.h"
+#include "sim/world/pair_loop.h"
 
 namespace sim {
 namespace {
@@ -115,10 +116,7 @@ void WallAdhesionYoung::updateWettedTissue(World& world) {
   const auto& p = world.particles;
   const Index n = static_cast<Index>(p.size());
   const auto& tags = *findWettedSurfaceField(p);  // tag + 1, 0 = none
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Kernel& kernel = world.kernel;
   const Real h = world.supportRadius();
   tissueCosA_.resize(n);
@@ -137,20 +135,18 @@ void WallAdhesionYoung::updateWettedTissue(World& world) {
     // fluid), the kernel gradients gradW(x_k - x_j) pointing from k towards j: into the tissue.
     Vec3 g = Vec3::Zero();
     Real surfaceDensity = cubicSpline2d(0, h), fluidSum = 0;  // [1/m^2], [1]
-    for (Index q = nf.offsets[k]; q < nf.offsets[k + 1]; ++q) {
-      const Index j = nf.indices[q];
+    fluid.forEach(k, [&](Index j, const Vec3& gradW) {
       const Real vj = p.mass[j] / p.density[j];
       if (world.materials.isFluid(p.material[j])) {
-        g -= vj * gradF[q];
+        g -= vj * gradW;
         if (p.material[j] == materialA_ || p.material[j] == materialB_)
           fluidSum += vj * kernel.W(p.x[k] - p.x[j]);
       } else {
-        g += vj * gradF[q];
+        g += vj * gradW;
         if (tags[j] != 0) surfaceDensity += cubicSpline2d((p.x[k] - p.x[j]).norm(), h);
       }
-    }
-    for (Index q = nw.offsets[k]; q < nw.offsets[k + 1]; ++q)
-      g += world.walls.volume[nw.indices[q]] * gradB[q];
+    });
+    wall.forEach(k, [&](Index b, const Vec3& gradW) { g += world.walls.volume[b] * gradW; });
     if (g.squaredNorm() == 0) continue;
     tissueNormal_[k] = g.normalized();
     tissueArea_[k] = 1.0 / surfaceDensity;
@@ -245,26 +241,24 @@ bool WallAdhesionYoung::wallStress(const World& world) {
 void WallAdhesionYoung::applyStressForces(World& world) {
   auto& p = world.particles;
   const Index n = static_cast<Index>(p.size());
-  const NeighborList& nf = world.fluidNeighbors();
-  const auto& gradF = world.fluidGradients();
+  const PairLoop fluid = fluidPairs(world);
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     if (!inPair(p.material[i])) continue;
     const Real vi = p.mass[i] / p.density[i];
     Vec3 f = Vec3::Zero();  // [N]
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
-      if (!stressed_[i] && !stressed_[j]) continue;
+    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
+      if (!stressed_[i] && !stressed_[j]) return;
       // Tissue neighbours stay out of the sum, as wall particles do (they are not in the fluid
       // lists). With them a stressed particle read gamma delta P sum_j V_j gradW_ij over the
       // tissue, the tangential gradient of the tissue's number density: 0 above the lattice's
       // columns, and off them a force towards the columns for a layer under tension (away from
       // them under compression) that walls do not exert (docs/methods/interface.md, validation 3).
-      if (!world.materials.isFluid(p.material[j])) continue;
+      if (!world.materials.isFluid(p.material[j])) return;
       const Mat3 sum =
           stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i]) : stress_[j];
-      f += vi * (p.mass[j] / p.density[j]) * (sum * gradF[k]);
-    }
+      f += vi * (p.mass[j] / p.density[j]) * (sum * gradW);
+    });
     p.a[i] += f / p.mass[i];
   }
 }

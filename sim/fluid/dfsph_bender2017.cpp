@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "sim/fluid/density.h"
+#include "sim/world/pair_loop.h"
 
 namespace sim {
 
@@ -25,8 +26,7 @@ void DfsphBender2017::attach(World& world) {
 
 void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real>& kappa, Real dt) {
   auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
-  const auto& gradF = world.fluidGradients();
+  const PairLoop fluid = fluidPairs(world);
   const auto& rho = p.density;
   const Index n = static_cast<Index>(p.size());
   // k_j / rho_j once per particle instead of once per pair (a division per pair saved; the same
@@ -39,10 +39,8 @@ void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real
   for (Index i = 0; i < n; ++i) {
     const Real ki = scaled[i];
     Vec3 dv = Vec3::Zero();
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
-      dv += p.mass[j] * (ki + scaled[j]) * gradF[k];
-    }
+    fluid.forEach(i,
+                  [&](Index j, const Vec3& gradW) { dv += p.mass[j] * (ki + scaled[j]) * gradW; });
     dv += ki * wallGradient_[i];
     p.v[i] -= dt * dv;
   }
@@ -50,11 +48,9 @@ void DfsphBender2017::applyPressureVelocity(World& world, const std::vector<Real
 
 Real DfsphBender2017::densityRate(const World& world, Index i) const {
   const auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
-  const auto& gradF = world.fluidGradients();
   Real rate = 0;
-  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
-    rate += p.mass[nf.indices[k]] * (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k]);
+  fluidPairs(world).forEach(
+      i, [&](Index j, const Vec3& gradW) { rate += p.mass[j] * (p.v[i] - p.v[j]).dot(gradW); });
   return rate + p.v[i].dot(wallGradient_[i]);
 }
 
@@ -117,11 +113,8 @@ void DfsphBender2017::beginStep(World& world, const StepContext& context) {
 void DfsphBender2017::stiffnessFactors(const World& world, bool divergence) {
   const auto& p = world.particles;
   const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Kernel& kernel = world.kernel;
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
   const Index n = static_cast<Index>(p.size());
   // kappaDivergence_ holds last step's accumulated stiffness (a pressure per density, m^2/s^2),
   // not stiffness * dt: the pressure is what persists from step to step when dt changes.
@@ -130,15 +123,13 @@ void DfsphBender2017::stiffnessFactors(const World& world, bool divergence) {
   for (Index i = 0; i < n; ++i) {
     Vec3 g = Vec3::Zero();
     Real sumSq = 0;
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
-      const Vec3 gradW = p.mass[j] * gradF[k];
-      g += gradW;
-      sumSq += gradW.squaredNorm() * p.mass[i] / p.mass[j];
-    }
+    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
+      const Vec3 massGradW = p.mass[j] * gradW;
+      g += massGradW;
+      sumSq += massGradW.squaredNorm() * p.mass[i] / p.mass[j];
+    });
     Vec3 gw = Vec3::Zero();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
-      gw += walls.volume[nw.indices[k]] * gradB[k];
+    wall.forEach(i, [&](Index b, const Vec3& gradW) { gw += walls.volume[b] * gradW; });
     wallGradient_[i] = world.restDensityOf(i) * gw;
     g += wallGradient_[i];
     const Real denominator = g.squaredNorm() + sumSq;

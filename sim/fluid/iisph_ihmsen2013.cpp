@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "sim/fluid/density.h"
+#include "sim/world/pair_loop.h"
 
 namespace sim {
 
@@ -25,9 +26,7 @@ void IisphIhmsen2013::beginStep(World& world, const StepContext&) {
 void IisphIhmsen2013::pressureAcceleration(const World& world) {
   const auto& p = world.particles;
   const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const auto& pressure = *pressure_;
   const Real wallFactor = params_.mirrorWallPressure ? 2.0 : 1.0;
   const Index n = static_cast<Index>(p.size());
@@ -35,12 +34,11 @@ void IisphIhmsen2013::pressureAcceleration(const World& world) {
   for (Index i = 0; i < n; ++i) {
     const Real pi = pressure[i] / (p.density[i] * p.density[i]);
     Vec3 a = Vec3::Zero();
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-      a -= p.mass[*j] * (pi + pressure[*j] / (p.density[*j] * p.density[*j])) *
-           kernel.gradW(p.x[i] - p.x[*j]);
+    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
+      a -= p.mass[j] * (pi + pressure[j] / (p.density[j] * p.density[j])) * gradW;
+    });
     Vec3 g = Vec3::Zero();
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      g += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+    wall.forEach(i, [&](Index b, const Vec3& gradW) { g += walls.volume[b] * gradW; });
     acceleration_[i] = a - wallFactor * world.restDensityOf(i) * pi * g;
   }
 }
@@ -101,9 +99,7 @@ void IisphIhmsen2013::correctVelocities(World& world, const StepContext& context
 void IisphIhmsen2013::advectedDensityAndDiagonal(const World& world, Real dt) {
   const auto& p = world.particles;
   const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Real dt2 = dt * dt;
   const Real wallFactor = params_.mirrorWallPressure ? 2.0 : 1.0;
   const Index n = static_cast<Index>(p.size());
@@ -113,18 +109,16 @@ void IisphIhmsen2013::advectedDensityAndDiagonal(const World& world, Real dt) {
     const Real rho0 = world.restDensityOf(i);
     Real rate = 0, sumSq = 0;
     Vec3 gFluid = Vec3::Zero(), gWall = Vec3::Zero();
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j) {
-      const Vec3 gradW = kernel.gradW(p.x[i] - p.x[*j]);
-      rate += p.mass[*j] * (p.v[i] - p.v[*j]).dot(gradW);
-      gFluid += p.mass[*j] * gradW;
-      sumSq += p.mass[*j] * gradW.squaredNorm();
-    }
+    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
+      rate += p.mass[j] * (p.v[i] - p.v[j]).dot(gradW);
+      gFluid += p.mass[j] * gradW;
+      sumSq += p.mass[j] * gradW.squaredNorm();
+    });
     Real wallRate = 0;
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b) {
-      const Vec3 gradW = kernel.gradW(p.x[i] - walls.x[*b]);
-      wallRate += walls.volume[*b] * p.v[i].dot(gradW);
-      gWall += walls.volume[*b] * gradW;
-    }
+    wall.forEach(i, [&](Index b, const Vec3& gradW) {
+      wallRate += walls.volume[b] * p.v[i].dot(gradW);
+      gWall += walls.volume[b] * gradW;
+    });
     advected_[i] = p.density[i] + dt * (rate + rho0 * wallRate);
     const Real invRho2 = 1.0 / (p.density[i] * p.density[i]);
     // a_i depends on p_i through -p_i/rho_i^2 (gFluid + wallFactor rho0 gWall); a_j through
@@ -139,20 +133,19 @@ void IisphIhmsen2013::advectedDensityAndDiagonal(const World& world, Real dt) {
 void IisphIhmsen2013::pressureProduct(const World& world, Real dt2) {
   const auto& p = world.particles;
   const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Index n = static_cast<Index>(p.size());
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     Real value = 0;
-    for (const Index* j = nf.begin(i); j != nf.end(i); ++j)
-      value +=
-          p.mass[*j] * (acceleration_[i] - acceleration_[*j]).dot(kernel.gradW(p.x[i] - p.x[*j]));
-    Real wall = 0;
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      wall += walls.volume[*b] * acceleration_[i].dot(kernel.gradW(p.x[i] - walls.x[*b]));
-    product_[i] = dt2 * (value + world.restDensityOf(i) * wall);
+    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
+      value += p.mass[j] * (acceleration_[i] - acceleration_[j]).dot(gradW);
+    });
+    Real wallSum = 0;
+    wall.forEach(i, [&](Index b, const Vec3& gradW) {
+      wallSum += walls.volume[b] * acceleration_[i].dot(gradW);
+    });
+    product_[i] = dt2 * (value + world.restDensityOf(i) * wallSum);
   }
 }
 

@@ -5,6 +5,7 @@
 #include "sim/boundary/wall_layers.h"
 #include "sim/fluid/density.h"
 #include "sim/solid/fixed_particles.h"
+#include "sim/world/pair_loop.h"
 
 namespace sim {
 
@@ -54,7 +55,7 @@ void IndsphWang2023::prepareStaticWalls(const World& world) {
   const auto& walls = world.walls;
   const auto& p = world.particles;
   const NeighborList& nw = world.wallNeighbors();
-  const auto& gradB = world.wallGradients();
+  const PairLoop wall = wallPairs(world);
   const Index nb = static_cast<Index>(walls.size());
   const Index n = static_cast<Index>(p.size());
   // Transpose of the dynamic -> wall lists, filled in dynamic-index order (deterministic).
@@ -80,7 +81,7 @@ void IndsphWang2023::prepareStaticWalls(const World& world) {
       const Index j = t.dynamic[s];
       const Real c = world.restVolumeOf(j) / walls.volume[b];  // V0_j / V_b
       delta += c * world.kernel.W(p.x[j] - walls.x[b]);
-      diagonal += c * c * gradB[t.pair[s]].squaredNorm() / p.mass[j];
+      diagonal += c * c * wall.gradient(t.pair[s], j, b).squaredNorm() / p.mass[j];
     }
     wallDensity_[b] = wallStaticDensity_[b] + delta;
     // Small-diagonal guard (IndsphParameters::minWallDynamicFraction): not an unknown.
@@ -93,7 +94,7 @@ void IndsphWang2023::prepareStaticWalls(const World& world) {
 Real IndsphWang2023::predictWallNumberDensity(const World& world, Real dt) {
   const auto& walls = world.walls;
   const auto& p = world.particles;
-  const auto& gradB = world.wallGradients();
+  const PairLoop wall = wallPairs(world);
   const auto& t = wallPairs_;
   const Index active = static_cast<Index>(t.walls.size());
 #pragma omp parallel for schedule(static)
@@ -102,7 +103,7 @@ Real IndsphWang2023::predictWallNumberDensity(const World& world, Real dt) {
     Real rate = 0;  // eq. 14 with v_b = 0: sum_j (V0_j/V_b) (0 - v_j).gradW_bj, gradW_bj = -gradB
     for (Index s = t.offsets[b]; s < t.offsets[b + 1]; ++s) {
       const Index j = t.dynamic[s];
-      rate += world.restVolumeOf(j) * p.v[j].dot(gradB[t.pair[s]]);
+      rate += world.restVolumeOf(j) * p.v[j].dot(wall.gradient(t.pair[s], j, b));
     }
     wallPredicted_[b] =
         std::max(wallDensity_[b] + dt * rate / walls.volume[b], 1.0 / walls.volume[b]);
@@ -116,10 +117,7 @@ Real IndsphWang2023::predictWallNumberDensity(const World& world, Real dt) {
 void IndsphWang2023::beginStep(World& world, const StepContext& context) {
   auto& p = world.particles;
   const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Index n = static_cast<Index>(p.size());
   computeNumberDensities(world, *numberDensity_);
   // Effects (viscosity, XSPH) read p.density: give them the adapted density m delta (eq. 7),
@@ -135,13 +133,12 @@ void IndsphWang2023::beginStep(World& world, const StepContext& context) {
   for (Index i = 0; i < n; ++i) {
     Vec3 g = Vec3::Zero();
     Real neighbours = 0;
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      g += gradF[k];
-      neighbours += gradF[k].squaredNorm() / p.mass[nf.indices[k]];
-    }
+    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
+      g += gradW;
+      neighbours += gradW.squaredNorm() / p.mass[j];
+    });
     Vec3 gw = Vec3::Zero();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
-      gw += walls.volume[nw.indices[k]] * gradB[k];
+    wall.forEach(i, [&](Index b, const Vec3& gradW) { gw += walls.volume[b] * gradW; });
     wallGradient_[i] = gw / world.restVolumeOf(i);
     g += wallGradient_[i];
     diagonal_[i] = g.squaredNorm() / p.mass[i] + neighbours;
@@ -156,11 +153,9 @@ void IndsphWang2023::beginStep(World& world, const StepContext& context) {
 
 Real IndsphWang2023::numberDensityRate(const World& world, Index i) const {
   const auto& p = world.particles;
-  const NeighborList& nf = world.fluidNeighbors();
-  const auto& gradF = world.fluidGradients();
   Real rate = 0;  // eq. 14
-  for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
-    rate += (p.v[i] - p.v[nf.indices[k]]).dot(gradF[k]);
+  fluidPairs(world).forEach(
+      i, [&](Index j, const Vec3& gradW) { rate += (p.v[i] - p.v[j]).dot(gradW); });
   return rate + p.v[i].dot(wallGradient_[i]);
 }
 
@@ -230,10 +225,7 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
                                            const std::vector<Real>* wallKappa) {
   auto& p = world.particles;
   const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const auto& gradF = world.fluidGradients();
-  const auto& gradB = world.wallGradients();
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const auto& delta = *numberDensity_;
   const Index n = static_cast<Index>(p.size());
   // Anchored particles (sim/solid/fixed_particles.h) do not move: the pipeline resets their
@@ -248,10 +240,8 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
     if (fixed && (*fixed)[i] != 0) continue;
     const Real ki = kappa[i] / delta[i];
     Vec3 force = Vec3::Zero();  // eq. 19 without the common factor -1
-    for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
-      const Index j = nf.indices[k];
-      force += (ki + kappa[j] / delta[j]) * gradF[k];
-    }
+    fluid.forEach(i,
+                  [&](Index j, const Vec3& gradW) { force += (ki + kappa[j] / delta[j]) * gradW; });
     // The fluid particle's own stiffness acts on its wall neighbours through its own number
     // density (eq. 19's first term runs over all neighbours, static ones included). With layered
     // walls the wall particles' own stiffnesses kappa_b add the second term (eq. 19 with j = b):
@@ -261,11 +251,10 @@ void IndsphWang2023::applyPressureVelocity(World& world, const std::vector<Real>
     if (wallKappa) {
       const Real v0 = world.restVolumeOf(i);
       Vec3 g = Vec3::Zero();
-      for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k) {
-        const Index b = nw.indices[k];
+      wall.forEach(i, [&](Index b, const Vec3& gradW) {
         if ((*wallKappa)[b] != 0.0)
-          g += ((*wallKappa)[b] / (wallDensity_[b] * walls.volume[b])) * gradB[k];
-      }
+          g += ((*wallKappa)[b] / (wallDensity_[b] * walls.volume[b])) * gradW;
+      });
       force += v0 * g;
     }
     p.v[i] -= (dt / p.mass[i]) * force;  // eq. 20: the advection velocity is incremented

@@ -7,6 +7,7 @@
 #include "sim/fluid/density.h"
 #include "sim/fluid/density_compression.h"
 #include "sim/fluid/tait_equation.h"
+#include "sim/world/pair_loop.h"
 
 namespace sim {
 
@@ -41,11 +42,9 @@ void WcsphBecker2007::beginStep(World& world, const StepContext&) {
 void WcsphBecker2007::correctVelocities(World& world, const StepContext& context) {
   auto& p = world.particles;
   const auto& walls = world.walls;
-  const NeighborList& nf = world.fluidNeighbors();
-  const NeighborList& nw = world.wallNeighbors();
-  const Kernel& kernel = world.kernel;
+  const PairLoop fluid = fluidPairs(world), wall = wallPairs(world);
   const Real dt = context.dt;
-  const Real h = kernel.supportRadius();
+  const Real h = world.kernel.supportRadius();
   const Real alphaC = params_.artificialViscosity * params_.speedOfSound;
   const auto& pressure = *pressure_;
   const Index n = static_cast<Index>(p.size());
@@ -55,10 +54,8 @@ void WcsphBecker2007::correctVelocities(World& world, const StepContext& context
   for (Index i = 0; i < n; ++i) {
     const Real pi = pressure[i] / (p.density[i] * p.density[i]);
     Vec3 a = Vec3::Zero();
-    for (const Index* jp = nf.begin(i); jp != nf.end(i); ++jp) {
-      const Index j = *jp;
+    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
       const Vec3 xij = p.x[i] - p.x[j];
-      const Vec3 gradW = kernel.gradW(xij);
       Real term = pi + pressure[j] / (p.density[j] * p.density[j]);
       const Real vx = (p.v[i] - p.v[j]).dot(xij);
       if (vx < 0 && alphaC > 0) {  // approaching pair: Monaghan artificial viscosity
@@ -66,10 +63,9 @@ void WcsphBecker2007::correctVelocities(World& world, const StepContext& context
         term += -alphaC * mu / (0.5 * (p.density[i] + p.density[j]));
       }
       a -= p.mass[j] * term * gradW;
-    }
+    });
     Vec3 g = Vec3::Zero();
-    for (const Index* b = nw.begin(i); b != nw.end(i); ++b)
-      g += walls.volume[*b] * kernel.gradW(p.x[i] - walls.x[*b]);
+    wall.forEach(i, [&](Index b, const Vec3& gradW) { g += walls.volume[b] * gradW; });
     a -= world.restDensityOf(i) * pi * g;
     pressureAcceleration_[i] = a;
   }
