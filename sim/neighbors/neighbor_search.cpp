@@ -235,23 +235,23 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
       }
       growTo(buf.indices, m + candidates);
       Index* slot = buf.indices.data();
-      const Index self = skipSelf ? pbins.slotOf[i] : ~Index{0};
+      const Index selfSlot = skipSelf ? pbins.slotOf[i] : ~Index{0};
       const std::size_t first = m;
       // Stencil order: z, then y, then the x-adjacent cells, one contiguous range.
       for (std::size_t q = 0; q < rows; ++q) {
         const Index b = stencil[q].begin, e = stencil[q].end;
         if (qR2 == nullptr) {  // fixed support
           m = scanRange(
-              b, e, xi, sortedX, self, [r2](Index) { return r2; }, slot, m);
+              b, e, xi, sortedX, selfSlot, [r2](Index) { return r2; }, slot, m);
         } else if (pR2 == nullptr) {  // variable support against walls (support h <= h_i)
           const Real ri2 = qR2[i];
           m = scanRange(
-              b, e, xi, sortedX, self, [ri2](Index) { return ri2; }, slot, m);
+              b, e, xi, sortedX, selfSlot, [ri2](Index) { return ri2; }, slot, m);
         } else {  // variable support, dynamic pairs: max(h_i, h_j)
           const Real ri2 = qR2[i];
           m = scanRange(
-              b, e, xi, sortedX, self, [ri2, pR2](Index k) { return std::max(ri2, pR2[k]); }, slot,
-              m);
+              b, e, xi, sortedX, selfSlot, [ri2, pR2](Index k) { return std::max(ri2, pR2[k]); },
+              slot, m);
         }
       }
       out.offsets[i + 1] = static_cast<Index>(m - first);
