@@ -79,7 +79,7 @@ struct StaticWallPairs {
   std::vector<Index> walls;    // wall indices with at least one dynamic neighbour (ascending)
   std::vector<Index> offsets;  // CSR into dynamic/pair, one row per wall particle (size walls+1)
   std::vector<Index> dynamic;  // dynamic neighbour j
-  std::vector<Index> pair;     // index k of the pair (j, b) in World::wallNeighbors()
+  std::vector<Index> pair;  // index k of the pair (j, b) in World::wallNeighbors()/wallGradients()
 };
 
 class IndsphWang2023 final : public PressureSolver {

@@ -141,19 +141,18 @@ struct StencilRow {
   Index begin, end;
 };
 
-// Kernel gradient scale and value of each pair of query point xi with the sorted points in
-// `slot`, one square root and one kernel branch per pair; K is the kernel itself, so the choice of
-// kernel is made once per list, not per pair. xij * scale is Kernel::gradW(xij) bit for bit (the
-// same product), and the value is Kernel::W.
+// Kernel gradient and value of each pair of query point xi with the sorted points in `slot`, one
+// square root and one kernel branch per pair; K is the kernel itself, so the choice of kernel is
+// made once per list, not per pair. Same values as Kernel::gradW and Kernel::W.
 template <class K>
 void pairKernels(const K& k, Real gradientCutoff, const Vec3& xi, const Vec3* sortedX,
-                 const Index* slot, std::size_t count, Real* gradScale, Real* values) {
+                 const Index* slot, std::size_t count, Vec3* grad, Real* values) {
   for (std::size_t a = 0; a < count; ++a) {
     const Vec3 xij = xi - sortedX[slot[a]];
     const Real r = xij.norm();
     Real dwdr;
     k.evaluate(r, values[a], dwdr);
-    gradScale[a] = r <= gradientCutoff ? 0.0 : dwdr / r;
+    grad[a] = r <= gradientCutoff ? Vec3::Zero().eval() : (xij * (dwdr / r)).eval();
   }
 }
 
@@ -161,7 +160,7 @@ void pairKernels(const K& k, Real gradientCutoff, const Vec3& xi, const Vec3* so
 
 void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbins,
                                const CellBins& pbins, bool skipSelf, const Kernel* kernel,
-                               NeighborList& out, std::vector<Real>& gradScale,
+                               NeighborList& out, std::vector<Vec3>& grad,
                                std::vector<Real>& values, const Real* qR2) {
   const std::size_t n = qx.size();
   const Real r2 = radius_ * radius_;
@@ -272,16 +271,16 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
       growTo(out.indices, total);
       out.indices.resize(total);
       if (kernel) {
-        growTo(gradScale, total);
-        gradScale.resize(total);
+        growTo(grad, total);
+        grad.resize(total);
         growTo(values, total);
         values.resize(total);
       } else {
         values.clear();  // no stale kernel values for a list built without a kernel
       }
     }  // implicit barrier
-    // Each thread places its block: the point indices, and the kernel's gradient scale and value
-    // of each pair computed straight into the final lists (no per-thread copy of them to move).
+    // Each thread places its block: the point indices, and the kernel's gradient and value of
+    // each pair computed straight into the final lists (no per-thread copy of them to move).
     Index running = static_cast<Index>(buf.offset);
     const Index* slots = buf.indices.data();
     Index* indices = out.indices.data();
@@ -297,10 +296,10 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
       const std::size_t count = static_cast<std::size_t>(running - begin);
       if (kernel->kind() == KernelKind::kCubicSpline)
         pairKernels(kernel->cubicSpline(), kernel->gradientCutoff(), xi, sortedX, s, count,
-                    gradScale.data() + begin, values.data() + begin);
+                    grad.data() + begin, values.data() + begin);
       else
         pairKernels(kernel->wendlandC2(), kernel->gradientCutoff(), xi, sortedX, s, count,
-                    gradScale.data() + begin, values.data() + begin);
+                    grad.data() + begin, values.data() + begin);
     }
   }
 }
@@ -308,7 +307,7 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
 void NeighborSearch::setStatic(const std::vector<Vec3>& staticX) {
   staticX_ = staticX;
   bin(staticX_, staticBins_, false);
-  buildList(staticX_, staticBins_, staticBins_, true, nullptr, ss_, noGradScale_, noW_);
+  buildList(staticX_, staticBins_, staticBins_, true, nullptr, ss_, noGrad_, noW_);
 }
 
 void NeighborSearch::update(const std::vector<Vec3>& dynamicX) { updateImpl(dynamicX, nullptr); }
@@ -327,14 +326,14 @@ void NeighborSearch::updateImpl(const std::vector<Vec3>& dynamicX, const Kernel*
   bin(dynamicX, dynamicBins_, true);
   if (supportRadii != nullptr) binRadii(*supportRadii, dynamicBins_);
   const Real* qR2 = supportRadii != nullptr ? qR2_.data() : nullptr;
-  buildList(dynamicX, dynamicBins_, dynamicBins_, true, kernel, dd_, ddGradScale_, ddW_, qR2);
+  buildList(dynamicX, dynamicBins_, dynamicBins_, true, kernel, dd_, ddGrad_, ddW_, qR2);
   if (staticX_.empty()) {
     ds_.offsets.assign(dynamicX.size() + 1, 0);
     ds_.indices.clear();
-    dsGradScale_.clear();
+    dsGrad_.clear();
     dsW_.clear();
   } else {
-    buildList(dynamicX, dynamicBins_, staticBins_, false, kernel, ds_, dsGradScale_, dsW_, qR2);
+    buildList(dynamicX, dynamicBins_, staticBins_, false, kernel, ds_, dsGrad_, dsW_, qR2);
   }
 }
 

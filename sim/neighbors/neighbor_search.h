@@ -9,18 +9,14 @@
 // no list). The compressed-sparse-row lists are built in ONE parallel region: each thread scans its
 // contiguous block of query points and appends the accepted candidates branch-free to its own
 // reusable buffer; once the blocks' offsets are known, each thread writes its block's point indices
-// into place and, when a kernel is given, computes the per-pair kernel gradient scales and values
-// straight into the final lists (they are never copied). The result does not
+// into place and, when a kernel is given, computes the per-pair kernel gradients and values
+// straight into the final lists (36 of a pair's 40 bytes are never copied). The result does not
 // depend on the thread count (each point's neighbours come in stencil order, inside a cell in index
 // order). Static wall particles are binned once. Dynamic particle data are periodically reordered
 // by the Z-order (Morton) index of their cell (zOrder()), which keeps neighbours close in memory.
 // Buffers only grow (per-thread buffers to 1.5x when less than 1/16 headroom is left, lists by a
 // quarter), so a running simulation whose pair count drifts slowly does not allocate. Memory: the
-// lists plus about 1.5x their indices. A pair costs 20 bytes: its index (4), the kernel value (8)
-// and the gradient's scale (dW/dr)/r (8); the gradient itself, (x_i - x_j) times the scale, is
-// formed where it is used (sim/world/pair_loop.h) from the positions the lists were built from,
-// the same product as Kernel::gradW, so nothing changes bit for bit. Storing the 24-byte vector
-// instead made the lists 40 bytes per pair, about 1.4 KiB per particle.
+// lists plus about 1.5x their indices.
 //
 // Variable support (VSLSPH, sim/fluid/vslsph_li2023.h): the grid is built for the largest support
 // R any particle may take (cells R/2 wide, a 5 x 5 x 5 stencil), and update() may be given
@@ -91,10 +87,9 @@ class NeighborSearch {
   // Bins dynamic points and rebuilds dynamic-dynamic and dynamic-static lists.
   // Throws SimError naming the first particle outside the domain.
   void update(const std::vector<Vec3>& dynamicX);
-  // Same, and also fills the kernel gradients' scales (dW/dr)(r)/r, 0 where Kernel::gradW is 0,
-  // aligned with the dynamic-dynamic and dynamic-static lists (entry k belongs to the pair
-  // (i, indices[k])), computed in the same pass as the lists: gradW(x_i - x_j) is exactly
-  // (x_i - x_j) * scale.
+  // Same, and also fills the kernel gradients gradW(x_i - x_j) aligned with the dynamic-dynamic
+  // and dynamic-static lists (entry k belongs to the pair (i, indices[k])), computed in the same
+  // pass as the lists with exactly Kernel::gradW's arithmetic.
   void update(const std::vector<Vec3>& dynamicX, const Kernel& kernel);
   // Same with per-particle support radii h_i [m] (<= largestSupport(); nullptr: the fixed-h
   // update): a pair is kept when r < max(h, h_i, h_j) (see the file comment).
@@ -104,10 +99,9 @@ class NeighborSearch {
   const NeighborList& dynamicDynamic() const { return dd_; }
   const NeighborList& dynamicStatic() const { return ds_; }
   const NeighborList& staticStatic() const { return ss_; }
-  // [1/m^5] filled by update(x, kernel) only; positions are those passed to update() and
-  // setStatic()
-  const std::vector<Real>& dynamicDynamicGradientScales() const { return ddGradScale_; }
-  const std::vector<Real>& dynamicStaticGradientScales() const { return dsGradScale_; }
+  // [1/m^4] filled by update(x, kernel) only
+  const std::vector<Vec3>& dynamicDynamicGradients() const { return ddGrad_; }
+  const std::vector<Vec3>& dynamicStaticGradients() const { return dsGrad_; }
   // [1/m^3] kernel values W(x_i - x_j), same alignment; filled by update(x, kernel), emptied by
   // update(x). They let density sums skip a square root and a kernel evaluation per pair.
   const std::vector<Real>& dynamicDynamicKernelValues() const { return ddW_; }
@@ -128,13 +122,12 @@ class NeighborSearch {
   void binRadii(const std::vector<Real>& radii, CellBins& bins);
   // CSR list from query points `qx` to the points in `bins` with positions `px`; `skipSelf` drops
   // the pair (i, i) when both sets are the same.
-  // `kernel` non-null: also fill `gradScale` and `values` (aligned with out.indices); null:
-  // `values` is emptied. `qR2` non-null: per-query squared radii (variable support), with
-  // pbins.sortedR2 the points' ones when that is filled (else the fixed radius for the points).
+  // `kernel` non-null: also fill `grad` and `values` (aligned with out.indices); null: `values`
+  // is emptied. `qR2` non-null: per-query squared radii (variable support), with pbins.sortedR2
+  // the points' ones when that is filled (else the fixed radius for the points).
   void buildList(const std::vector<Vec3>& qx, const CellBins& qbins, const CellBins& pbins,
-                 bool skipSelf, const Kernel* kernel, NeighborList& out,
-                 std::vector<Real>& gradScale, std::vector<Real>& values,
-                 const Real* qR2 = nullptr);
+                 bool skipSelf, const Kernel* kernel, NeighborList& out, std::vector<Vec3>& grad,
+                 std::vector<Real>& values, const Real* qR2 = nullptr);
   void updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel,
                   const std::vector<Real>* supportRadii = nullptr);
 
@@ -159,7 +152,7 @@ class NeighborSearch {
   CellBins staticBins_, dynamicBins_;
   std::vector<Vec3> staticX_;
   NeighborList dd_, ds_, ss_;
-  std::vector<Real> ddGradScale_, dsGradScale_, noGradScale_;
+  std::vector<Vec3> ddGrad_, dsGrad_, noGrad_;
   std::vector<Real> ddW_, dsW_, noW_;
   std::vector<ThreadBuffer> threadBuffers_;
   std::vector<Index> counts_;

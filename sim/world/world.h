@@ -82,17 +82,11 @@ class World {
 
   const NeighborList& fluidNeighbors() const { return search_->dynamicDynamic(); }
   const NeighborList& wallNeighbors() const { return search_->dynamicStatic(); }
-  // Kernel gradient scales (dW/dr)/r aligned with the neighbour lists: entry k belongs to the pair
-  // (i, indices[k]), and gradW(x_i - x_j) = (x_i - x_j) * scale. Computed once per neighbour
-  // update, they save the solvers a square root, a kernel evaluation and a division per pair and
-  // iteration (positions do not change between the update and the end of the step). Read them
-  // through sim/world/pair_loop.h.
-  const std::vector<Real>& fluidGradientScales() const {
-    return search_->dynamicDynamicGradientScales();
-  }
-  const std::vector<Real>& wallGradientScales() const {
-    return search_->dynamicStaticGradientScales();
-  }
+  // Kernel gradients gradW(x_i - x_j) aligned with the neighbour lists: entry k belongs to the
+  // pair (i, indices[k]). Computed once per neighbour update, they save the iterative solvers a
+  // square root and a division per pair and iteration (positions do not change during a solve).
+  const std::vector<Vec3>& fluidGradients() const { return search_->dynamicDynamicGradients(); }
+  const std::vector<Vec3>& wallGradients() const { return search_->dynamicStaticGradients(); }
   // Kernel values W(x_i - x_j), same alignment (density sums; empty if no kernel pass ran).
   const std::vector<Real>& fluidKernelValues() const {
     return search_->dynamicDynamicKernelValues();

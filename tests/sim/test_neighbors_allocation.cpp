@@ -44,7 +44,7 @@ TEST_CASE("neighbour search allocates nothing after warm-up", "[unit][neighbors]
   counting = false;
   INFO("pairs before " << pairsBefore << ", after " << search.dynamicDynamic().totalPairs());
   CHECK(search.dynamicDynamic().totalPairs() > 0);
-  CHECK(search.dynamicDynamicGradientScales().size() == search.dynamicDynamic().totalPairs());
+  CHECK(search.dynamicDynamicGradients().size() == search.dynamicDynamic().totalPairs());
   CHECK(allocations.load() == 0);
 }
 
