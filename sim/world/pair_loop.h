@@ -33,10 +33,9 @@ class PairLoop {
         f(indices_[k], gradients_[k]);
     }
   }
-  // gradW(x_i - x_j) of the pair (i, j) in list slot k (for loops that visit the pairs in another
-  // order, e.g. a wall particle's fluid neighbours).
-  const Vec3& gradient(Index k, Index /*i*/, Index /*j*/) const { return gradients_[k]; }
-  Index count(Index i) const { return offsets_[i + 1] - offsets_[i]; }
+  // gradW of the pair in list slot k (for loops that visit the pairs in another order, e.g. a
+  // wall particle's fluid neighbours).
+  const Vec3& gradient(Index k) const { return gradients_[k]; }
 
  private:
   const Index* offsets_;
