@@ -94,8 +94,8 @@ TEST_CASE("schedule.start = equilibrium: the fluid starts at the first posture's
   INFO("oil centre from the equilibrium's: fill plane "
        << planeOffset * 1e3 << " mm, equilibrium start " << startOffset * 1e3 << " mm");
   // The particles sit on the fill's lattice, so the oil region's boundary is quantised by the
-  // spacing d; measured 0.10 d (0.116 mm at 1.2 mm, the draft preset's 0.3 mm voxel) against the
-  // fill plane's 0.33 d. The start must put the oil at less than half the fill plane's offset
+  // spacing d; measured 0.005 d (0.006 mm at 1.2 mm, the draft preset's 0.3 mm voxel) against the
+  // fill plane's 0.24 d. The start must put the oil at less than half the fill plane's offset
   // (the supine aqueous pool is about 2 mm deep, under two spacings, so its centre is quantised
   // by a good part of a spacing and the oil's follows it at a ninth of that), and within a fifth
   // of a spacing.

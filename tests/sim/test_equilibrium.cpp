@@ -108,39 +108,70 @@ TEST_CASE("Equilibrium: vanishing tension gives the flat fill plane", "[validati
   }
 }
 
+namespace {
+
+// [1] Covered fraction of the Bond 1.2 sphere, minus its axisymmetric Young-Laplace equilibrium.
+double bond12Error(double theta, double fill, double voxel) {
+  const double c = (kAqueous - kOil) * kG / kSigma;
+  const double reference =
+      testref::youngLaplaceSphere(kR, c, theta * kDeg, 1 - fill).upperWetFraction;
+  const EquilibriumSolution s =
+      solveEquilibrium(sphereProblem(theta, fill, Vec3(0, 0, -kG), kOil, kSigma, voxel));
+  CHECK(s.converged);
+  const double measured = coverageOf(s, theta).fraction;
+  INFO("theta " << theta << " fill " << fill << " voxel " << voxel << ": " << measured << " vs "
+                << reference);
+  return measured - reference;
+}
+
+constexpr double kDraftVoxel = 0.3e-3;  // [m] protocols' equilibriumVoxelSpacing("draft")
+
+}  // namespace
+
 TEST_CASE("Equilibrium at Bond 1.2 in a sphere against Young-Laplace",
           "[validation][equilibrium]") {
   // The clinical case of the toolkit: the retina's 18 deg, and 40, 90, 140 deg, at 80 and 90 %
-  // fill, at the draft preset's 0.3 mm voxel (what a run uses by default). Measured errors
-  // (docs/methods/equilibrium.md, the table and its command): 18 deg -0.9 / -2.3, 40 deg
-  // -2.6 / -2.7, 90 deg -0.4 / -0.9, 140 deg +0.5 / -0.3 points. These are measured bounds of the
-  // method at this voxel, not derived ones, and not the 1 point the toolkit aims for: 3 points at
-  // 18 and 40 deg (the scheme's contact-line error, which the docs analyse), 1.5 points at
-  // 90-140 deg, so that neither can grow unnoticed.
-  constexpr double kDraftVoxel = 0.3e-3;  // [m] protocols' equilibriumVoxelSpacing("draft")
+  // fill, at the draft preset's 0.3 mm voxel (what a run uses by default). The wall kernel's
+  // ratio was calibrated on these fills at 18 and 40 deg (wallKernelRatio), so there this test
+  // holds the calibration: measured +0.4 / +0.1 and -0.1 / -0.3 points, bound 1 point (the
+  // toolkit's aim). 90 and 140 deg were not calibrated (90 deg has no wall term; 140 deg takes
+  // 40 deg's ratio by the phases' symmetry): measured -0.3 / -0.9 and -1.0 / -0.7, bound 1.5
+  // points (docs/methods/equilibrium.md, the table and its command).
   for (const double theta : {18.0, 40.0, 90.0, 140.0})
-    for (const double fill : {0.8, 0.9}) {
-      const double c = (kAqueous - kOil) * kG / kSigma;
-      const double reference =
-          testref::youngLaplaceSphere(kR, c, theta * kDeg, 1 - fill).upperWetFraction;
-      const EquilibriumSolution s =
-          solveEquilibrium(sphereProblem(theta, fill, Vec3(0, 0, -kG), kOil, kSigma, kDraftVoxel));
-      const double measured = coverageOf(s, theta).fraction;
-      INFO("theta " << theta << " fill " << fill << ": " << measured << " vs " << reference);
-      CHECK(s.converged);
-      CHECK(std::abs(measured - reference) < (theta < 60.0 ? 0.03 : 0.015));
-    }
+    for (const double fill : {0.8, 0.9})
+      CHECK(std::abs(bond12Error(theta, fill, kDraftVoxel)) < (theta < 60.0 ? 0.01 : 0.015));
+}
+
+TEST_CASE("Equilibrium at Bond 1.2: fills and voxels the wall kernel was not calibrated on",
+          "[validation][equilibrium]") {
+  // Independent of the calibration (fill 0.8 and 0.9 at 0.3 mm): half fill and 95 % at the draft
+  // voxel, and the standard preset's 0.25 mm voxel. Measured at 18 deg +0.6 (fill 0.5), -0.2
+  // (0.25 mm, fill 0.9); at 40 deg +0.9 (fill 0.5), -0.2 (fill 0.95), +0.6 (0.25 mm, fill 0.9).
+  // Bound 1 point, the toolkit's aim. (18 deg at 95 % has no axisymmetric meniscus to compare.)
+  CHECK(std::abs(bond12Error(18, 0.5, kDraftVoxel)) < 0.01);
+  CHECK(std::abs(bond12Error(40, 0.5, kDraftVoxel)) < 0.01);
+  CHECK(std::abs(bond12Error(40, 0.95, kDraftVoxel)) < 0.01);
+  CHECK(std::abs(bond12Error(18, 0.9, 0.25e-3)) < 0.01);
+  CHECK(std::abs(bond12Error(40, 0.9, 0.25e-3)) < 0.01);
 }
 
 TEST_CASE("Equilibrium without gravity: the spherical cap", "[validation][equilibrium]") {
-  // Zero gravity, 90 and 140 deg at 80 % fill, against the closed form. Measured -1.6 and 0.0
-  // points; bound 2 points. (At 18 deg without gravity the method misses by 20 points: a known
-  // limit, docs/methods/equilibrium.md; no posture has zero gravity and protocols refuse it.)
-  for (const double theta : {90.0, 140.0}) {
-    const EquilibriumSolution s = solveEquilibrium(sphereProblem(theta, 0.8, Vec3::Zero()));
-    const double closed = testref::zeroGravityWetFraction((180.0 - theta) * kDeg, 0.8);
-    INFO("theta " << theta);
-    CHECK(std::abs(coverageOf(s, theta).fraction - closed) < 0.02);
+  // Zero gravity at the draft voxel against the closed form; none of these was calibrated on.
+  // Measured: 40 deg +0.3 / -0.4 (fill 0.8 / 0.9), bound 1 point; 90 and 140 deg at 80 % -0.6
+  // and -1.3, bound 2 points. 18 deg reads -3.5 / -3.8: bound 4.5 points, the measured error and
+  // not the aim. (With a single kernel for wall and interface it missed by 11 and 23 points: the
+  // aqueous ran along the wall as a film; docs/methods/equilibrium.md, "The wall kernel".)
+  struct Case {
+    double theta, fill, bound;
+  };
+  for (const Case c : {Case{18, 0.8, 0.045}, Case{18, 0.9, 0.045}, Case{40, 0.8, 0.01},
+                       Case{40, 0.9, 0.01}, Case{90, 0.8, 0.02}, Case{140, 0.8, 0.02}}) {
+    const EquilibriumSolution s =
+        solveEquilibrium(sphereProblem(c.theta, c.fill, Vec3::Zero(), kOil, kSigma, kDraftVoxel));
+    const double closed = testref::zeroGravityWetFraction((180.0 - c.theta) * kDeg, c.fill);
+    const double measured = coverageOf(s, c.theta).fraction;
+    INFO("theta " << c.theta << " fill " << c.fill << ": " << measured << " vs " << closed);
+    CHECK(std::abs(measured - closed) < c.bound);
   }
 }
 
@@ -166,11 +197,21 @@ TEST_CASE("Equilibrium in a sphere does not depend on the gravity direction",
           "[validation][equilibrium]") {
   // The sphere has no preferred direction, so the covered fraction must not change when gravity
   // turns off the grid axes, and the covered region (oil floats) must face away from gravity.
-  // Bound 1 point: the grid's anisotropy at one voxel.
+  // At the draft preset's voxel, what runs use. Both must meet the axisymmetric Young-Laplace
+  // equilibrium within 1 point, the toolkit's aim: measured +0.1 along the axis and -0.9 turned
+  // (at small angles the grid's anisotropy is worth about a point).
   const Vec3 tilted = Vec3(1, 2, -3).normalized() * kG;
-  const Coverage axis = coverageOf(solveEquilibrium(sphereProblem(18, 0.9, Vec3(0, 0, -kG))), 18);
-  const Coverage turned = coverageOf(solveEquilibrium(sphereProblem(18, 0.9, tilted)), 18);
-  CHECK(std::abs(turned.fraction - axis.fraction) < 0.01);
+  const Coverage axis = coverageOf(
+      solveEquilibrium(sphereProblem(18, 0.9, Vec3(0, 0, -kG), kOil, kSigma, kDraftVoxel)), 18);
+  const Coverage turned =
+      coverageOf(solveEquilibrium(sphereProblem(18, 0.9, tilted, kOil, kSigma, kDraftVoxel)), 18);
+  const double reference =
+      testref::youngLaplaceSphere(kR, (kAqueous - kOil) * kG / kSigma, 18 * kDeg, 0.1)
+          .upperWetFraction;
+  INFO("along an axis " << axis.fraction << ", turned " << turned.fraction << ", Young-Laplace "
+                        << reference);
+  CHECK(std::abs(axis.fraction - reference) < 0.01);
+  CHECK(std::abs(turned.fraction - reference) < 0.01);
   const double angle =
       std::acos(std::clamp(turned.centroid.normalized().dot(-tilted.normalized()), -1.0, 1.0));
   CHECK(angle < 3.0 * kDeg);

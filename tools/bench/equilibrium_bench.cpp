@@ -5,11 +5,14 @@
 //
 //   sim_equilibrium_bench [--voxels 0.5,0.4,0.3] [--angles 18,40,90,140] [--fills 0.8,0.9]
 //                         [--smoothing 1.5] [--out DIR]
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -44,7 +47,9 @@ std::vector<double> numbers(const std::string& text) {
 
 int main(int argc, char** argv) {
   std::vector<double> voxels{0.5, 0.4, 0.3}, angles{18, 40, 90, 140}, fills{0.8, 0.9};
-  double smoothing = ThresholdDynamicsOptions{}.finalSmoothing;  // [voxels] final sqrt(t) / h
+  double smoothing = ThresholdDynamicsOptions{}.finalSmoothing;   // [voxels] final sqrt(t) / h
+  double wallRatio = ThresholdDynamicsOptions{}.wallKernelRatio;  // 0: Young's ratio per angle
+  double g = 9.81;                                                // [m/s^2]
   std::filesystem::path out = ".";
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
@@ -57,17 +62,24 @@ int main(int argc, char** argv) {
       fills = numbers(argv[++k]);
     else if (a == "--smoothing" && value)
       smoothing = numbers(argv[++k]).at(0);
+    else if (a == "--wall-ratio" && value)
+      wallRatio = std::stod(argv[++k]);
+    else if (a == "--gravity" && value)
+      g = std::stod(argv[++k]);
     else if (a == "--out" && value)
       out = argv[++k];
     else {
       std::fprintf(stderr,
                    "usage: sim_equilibrium_bench [--voxels MM,...] [--angles DEG,...] "
-                   "[--fills F,...] [--smoothing VOXELS] [--out DIR]\n");
+                   "[--fills F,...] [--smoothing VOXELS] [--wall-ratio R] [--gravity G] "
+                   "[--out DIR]\n");
       return a == "--help" ? 0 : 2;
     }
   }
-  constexpr double R = 12e-3, sigma = 0.04, oil = 970, aqueous = 1004, g = 9.81;
-  const double c = (aqueous - oil) * g / sigma;
+  constexpr double R = 12e-3, sigma = 0.04, oil = 970, aqueous = 1004;
+  // Without gravity the reference is the shooting at a vanishing capillary constant, which meets
+  // the spherical cap's closed form within 0.05 points (tests/sim/test_equilibrium.cpp).
+  const double c = std::max((aqueous - oil) * g / sigma, 1e-6 / (R * R));
   std::filesystem::create_directories(out);
   std::ofstream csv(out / "equilibrium_bench.csv");
   csv << "voxel_mm,theta_deg,fill,coverage,young_laplace,error_points,iterations,seconds\n";
@@ -78,7 +90,13 @@ int main(int argc, char** argv) {
     for (const double theta : angles)
       for (const double fill : fills) {
         const double rad = theta * std::numbers::pi / 180;
-        const double reference = testref::youngLaplaceSphere(R, c, rad, 1 - fill).upperWetFraction;
+        // NaN where no axisymmetric meniscus holds the volume (e.g. 18 deg at fill 0.95): the
+        // solver still runs, and the error reads nan.
+        double reference = std::numeric_limits<double>::quiet_NaN();
+        try {
+          reference = testref::youngLaplaceSphere(R, c, rad, 1 - fill).upperWetFraction;
+        } catch (const std::exception&) {
+        }
         const auto start = std::chrono::steady_clock::now();
         EquilibriumProblem p;
         p.grid = gridAround(Vec3::Constant(-R), Vec3::Constant(R), voxel * 1e-3, 2);
@@ -93,6 +111,7 @@ int main(int argc, char** argv) {
         p.wallArea = 4 * std::numbers::pi * R * R;
         ThresholdDynamicsOptions options;
         options.finalSmoothing = smoothing;
+        options.wallKernelRatio = wallRatio;
         const EquilibriumSolution s = solveEquilibrium(p, options);
         const WallOilReader reader(s, rad);
         const int samples = 20000;
