@@ -135,27 +135,32 @@ SphereMeniscus youngLaplaceSphere(double R, double c, double lowerAngle, double 
   // at the angle, so a scan finds two neighbouring heights that have one and bracket the volume,
   // then bisection.
   auto solveAt = [&](double z0, double& b) { return shootAngle(R, c, cosAngle, z0, b); };
-  const int kScan = 40;
+  // 40 heights first; a thin pool at a small angle (18 deg at 5 % of the volume) has a meniscus
+  // only within a few tenths of a millimetre of the bottom, so a finer scan follows if needed.
   double lo = 0.0, hi = 0.0, bLo = 0.0;
-  bool bracketed = false, havePrevious = false;
-  double zPrevious = 0.0, vPrevious = 0.0;
-  for (int k = 0; k <= kScan && !bracketed; ++k) {
-    const double z0 = -R * (1.0 - 1e-3) + 2.0 * R * (1.0 - 1e-3) * k / kScan;
-    double b = 0.0;
-    const Shot s = solveAt(z0, b);
-    if (!s.hit) {
-      havePrevious = false;
-      continue;
+  bool bracketed = false;
+  for (const int kScan : {40, 800}) {
+    bool havePrevious = false;
+    double zPrevious = 0.0, vPrevious = 0.0;
+    for (int k = 0; k <= kScan && !bracketed; ++k) {
+      const double z0 = -R * (1.0 - 1e-3) + 2.0 * R * (1.0 - 1e-3) * k / kScan;
+      double b = 0.0;
+      const Shot s = solveAt(z0, b);
+      if (!s.hit) {
+        havePrevious = false;
+        continue;
+      }
+      if (havePrevious && (vPrevious - target) * (s.lowerVolume - target) <= 0.0) {
+        lo = zPrevious;
+        hi = z0;
+        bracketed = true;
+        bLo = b;
+      }
+      havePrevious = true;
+      zPrevious = z0;
+      vPrevious = s.lowerVolume;
     }
-    if (havePrevious && (vPrevious - target) * (s.lowerVolume - target) <= 0.0) {
-      lo = zPrevious;
-      hi = z0;
-      bracketed = true;
-      bLo = b;
-    }
-    havePrevious = true;
-    zPrevious = z0;
-    vPrevious = s.lowerVolume;
+    if (bracketed) break;
   }
   if (!bracketed) throw std::runtime_error("Young-Laplace: no meniscus holds the volume");
   (void)bLo;
