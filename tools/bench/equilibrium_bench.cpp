@@ -4,7 +4,11 @@
 // equilibrium_bench.csv to --out. A benchmark, not a test (not registered with CTest).
 //
 //   sim_equilibrium_bench [--voxels 0.5,0.4,0.3] [--angles 18,40,90,140] [--fills 0.8,0.9]
-//                         [--smoothing 1.5] [--out DIR]
+//                         [--smoothing 1.5] [--wall-ratio R] [--gravity 9.81] [--out DIR]
+//
+// --wall-ratio: the wall kernel's width over the interface kernel's (default: the calibrated
+// ratio per angle, wallKernelRatio; 1: one kernel for both). --gravity 0: the reference is the
+// zero-gravity lens.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -43,12 +47,22 @@ std::vector<double> numbers(const std::string& text) {
   return out;
 }
 
+double nonNegative(const char* text) {
+  char* end = nullptr;
+  const double v = std::strtod(text, &end);
+  if (end == text || *end != '\0' || !(v >= 0)) {
+    std::fprintf(stderr, "sim_equilibrium_bench: '%s' is not a number >= 0\n", text);
+    std::exit(2);
+  }
+  return v;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   std::vector<double> voxels{0.5, 0.4, 0.3}, angles{18, 40, 90, 140}, fills{0.8, 0.9};
   double smoothing = ThresholdDynamicsOptions{}.finalSmoothing;   // [voxels] final sqrt(t) / h
-  double wallRatio = ThresholdDynamicsOptions{}.wallKernelRatio;  // 0: Young's ratio per angle
+  double wallRatio = ThresholdDynamicsOptions{}.wallKernelRatio;  // 0: calibrated per angle
   double g = 9.81;                                                // [m/s^2]
   std::filesystem::path out = ".";
   for (int k = 1; k < argc; ++k) {
@@ -63,9 +77,9 @@ int main(int argc, char** argv) {
     else if (a == "--smoothing" && value)
       smoothing = numbers(argv[++k]).at(0);
     else if (a == "--wall-ratio" && value)
-      wallRatio = std::stod(argv[++k]);
+      wallRatio = numbers(argv[++k]).at(0);
     else if (a == "--gravity" && value)
-      g = std::stod(argv[++k]);
+      g = nonNegative(argv[++k]);
     else if (a == "--out" && value)
       out = argv[++k];
     else {
@@ -90,8 +104,8 @@ int main(int argc, char** argv) {
     for (const double theta : angles)
       for (const double fill : fills) {
         const double rad = theta * std::numbers::pi / 180;
-        // NaN where no axisymmetric meniscus holds the volume (e.g. 18 deg at fill 0.95): the
-        // solver still runs, and the error reads nan.
+        // NaN where no axisymmetric meniscus holds the volume: the solver still runs, and the
+        // error reads nan.
         double reference = std::numeric_limits<double>::quiet_NaN();
         try {
           reference = testref::youngLaplaceSphere(R, c, rad, 1 - fill).upperWetFraction;
