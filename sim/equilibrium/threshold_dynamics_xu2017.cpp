@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <numbers>
+#include <optional>
 
 #include "sim/core/error.h"
 #include "sim/equilibrium/gaussian_blur.h"
@@ -87,6 +88,30 @@ double wallAreaScale(const EquilibriumProblem& p, const GaussianBlur& blur,
   return p.wallArea / (blur.areaFactor() * contact * p.grid.voxelVolume());
 }
 
+// One stage's kernels: the interface's (time t) and the wall's (r^2 t), the fluid fractions
+// blurred by each, and the two terms' factors [N/m^2]. The iterations' psi and the final energy
+// read the same terms.
+struct StageTerms {
+  StageTerms(const EquilibriumProblem& p, double t, double wallRatio)
+      : blur(p.grid, t), wallBlur(p.grid, wallRatio * wallRatio * t) {
+    blur.apply(p.fluidFraction, blurredFluid);
+    wallBlur.apply(p.fluidFraction, blurredWallFluid);
+    a = blur.areaFactor() * p.tension;
+    // The wall term's own kernel's area factor, scaled to the true wall area.
+    aWall = wallBlur.areaFactor() * p.tension * std::cos(p.contactAngle) *
+            wallAreaScale(p, wallBlur, blurredWallFluid);
+  }
+  // a [G*f - oilWeight G*(u f)] + a_w (1 - G_w*f) at voxel v: psi with oilWeight 2, the energy
+  // density's tension and wall part with 1.
+  double terms(std::size_t v, double blurredOil, double oilWeight) const {
+    return a * (blurredFluid[v] - oilWeight * blurredOil) + aWall * (1.0 - blurredWallFluid[v]);
+  }
+
+  GaussianBlur blur, wallBlur;
+  std::vector<double> blurredFluid, blurredWallFluid;
+  double a = 0.0, aWall = 0.0;  // [N/m^2]
+};
+
 }  // namespace
 
 double wallKernelRatio(double contactAngle) {
@@ -157,28 +182,19 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
     selectLowest(start, fluid, f, target, tie, out.oil);
   }
 
-  const double cosTheta = std::cos(problem.contactAngle);
   const double wallRatio = options.wallKernelRatio > 0.0 ? options.wallKernelRatio
                                                          : wallKernelRatio(problem.contactAngle);
-  std::vector<double> blurredFluid, blurredWallFluid, blurredOil, oilField(n), psi(n), previous;
+  std::vector<double> blurredOil, oilField(n), psi(n), previous;
+  std::optional<StageTerms> stage;
   double smoothing = std::max(options.startSmoothing, options.finalSmoothing);
   for (;;) {
     const double t = (smoothing * h) * (smoothing * h);
-    GaussianBlur blur(grid, t);
-    blur.apply(f, blurredFluid);
-    GaussianBlur wallBlur(grid, wallRatio * wallRatio * t);
-    wallBlur.apply(f, blurredWallFluid);
-    const double a = blur.areaFactor() * problem.tension;  // [N/m^2]
-    // [N/m^2] the wall term's factor: its own kernel's area factor, scaled to the true wall area.
-    const double aWall = wallBlur.areaFactor() * problem.tension * cosTheta *
-                         wallAreaScale(problem, wallBlur, blurredWallFluid);
+    stage.emplace(problem, t, wallRatio);
     bool settled = false;
     for (int it = 0; it < options.maxIterationsPerStage && !settled; ++it) {
       for (std::size_t v = 0; v < n; ++v) oilField[v] = out.oil[v] * f[v];
-      blur.apply(oilField, blurredOil);
-      for (std::size_t v : fluid)
-        psi[v] = a * (blurredFluid[v] - 2.0 * blurredOil[v]) + aWall * (1.0 - blurredWallFluid[v]) +
-                 potential[v];
+      stage->blur.apply(oilField, blurredOil);
+      for (std::size_t v : fluid) psi[v] = stage->terms(v, blurredOil[v], 2.0) + potential[v];
       previous = out.oil;
       selectLowest(psi, fluid, f, target, tie, out.oil);
       ++out.iterations;
@@ -191,22 +207,14 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
     smoothing = std::max(0.5 * smoothing, options.finalSmoothing);
   }
 
-  // Energy E_t of the final state (with the final kernel), up to a constant.
+  // Energy E_t of the final state with the last stage's (the final) kernels, up to a constant.
   {
-    GaussianBlur blur(grid, out.heatKernelTime);
-    GaussianBlur wallBlur(grid, wallRatio * wallRatio * out.heatKernelTime);
     for (std::size_t v = 0; v < n; ++v) oilField[v] = out.oil[v] * f[v];
-    blur.apply(oilField, blurredOil);
-    blur.apply(f, blurredFluid);
-    wallBlur.apply(f, blurredWallFluid);
-    const double a = blur.areaFactor() * problem.tension;
-    const double aWall = wallBlur.areaFactor() * problem.tension * cosTheta *
-                         wallAreaScale(problem, wallBlur, blurredWallFluid);
+    stage->blur.apply(oilField, blurredOil);
     double e = 0.0, oilUnits = 0.0;
     for (std::size_t v : fluid) {
       const double chi = oilField[v];
-      e += chi * (a * (blurredFluid[v] - blurredOil[v]) + aWall * (1.0 - blurredWallFluid[v]) +
-                  potential[v]);
+      e += chi * (stage->terms(v, blurredOil[v], 1.0) + potential[v]);
       oilUnits += chi;
     }
     out.energy = e * dV;
