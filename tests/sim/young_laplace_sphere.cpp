@@ -137,7 +137,7 @@ SphereMeniscus youngLaplaceSphere(double R, double c, double lowerAngle, double 
   auto solveAt = [&](double z0, double& b) { return shootAngle(R, c, cosAngle, z0, b); };
   // 40 heights first; a thin pool at a small angle (18 deg at 5 % of the volume) has a meniscus
   // only within a few tenths of a millimetre of the bottom, so a finer scan follows if needed.
-  double lo = 0.0, hi = 0.0, bLo = 0.0;
+  double lo = 0.0, hi = 0.0;
   bool bracketed = false;
   for (const int kScan : {40, 800}) {
     bool havePrevious = false;
@@ -154,7 +154,6 @@ SphereMeniscus youngLaplaceSphere(double R, double c, double lowerAngle, double 
         lo = zPrevious;
         hi = z0;
         bracketed = true;
-        bLo = b;
       }
       havePrevious = true;
       zPrevious = z0;
@@ -163,7 +162,6 @@ SphereMeniscus youngLaplaceSphere(double R, double c, double lowerAngle, double 
     if (bracketed) break;
   }
   if (!bracketed) throw std::runtime_error("Young-Laplace: no meniscus holds the volume");
-  (void)bLo;
   const bool rising = true;
   SphereMeniscus out;
   for (int it = 0; it < 30; ++it) {
