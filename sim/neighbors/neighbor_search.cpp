@@ -105,6 +105,18 @@ void NeighborSearch::binRadii(const std::vector<Real>& radii, CellBins& bins) {
 #pragma omp parallel for schedule(static)
   for (std::size_t k = 0; k < n; ++k)
     bins.sortedR2[k] = qR2_[static_cast<std::size_t>(bins.sorted[k])];
+  // Per cell, the largest squared radius of its points (0 when empty): the candidate scan skips
+  // a cell that lies beyond both the query's radius and every radius inside it, so the bulk,
+  // where h_i = h, scans like the fixed-h grid instead of out to the largest support.
+  bins.cellMaxR2.resize(static_cast<std::size_t>(cellCount_));
+  const std::int64_t cells = cellCount_;
+#pragma omp parallel for schedule(static)
+  for (std::int64_t c = 0; c < cells; ++c) {
+    Real largest = 0.0;
+    for (Index k = bins.cellStart[c]; k < bins.cellStart[c + 1]; ++k)
+      largest = std::max(largest, bins.sortedR2[k]);
+    bins.cellMaxR2[static_cast<std::size_t>(c)] = largest;
+  }
 }
 
 namespace {
@@ -174,6 +186,7 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
   const Vec3* sortedX = pbins.sortedX.data();
   const Index* cellStart = pbins.cellStart.data();
   const Real* pR2 = qR2 != nullptr && !pbins.sortedR2.empty() ? pbins.sortedR2.data() : nullptr;
+  const Real* cellMaxR2 = pR2 != nullptr ? pbins.cellMaxR2.data() : nullptr;
 
   const Vec3 origin = domain_.min();
   const Real cell = 1.0 / invCell_;        // [m]
@@ -184,6 +197,7 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
   constexpr int kMaxReach = 2;  // [cells] the variable-support stencil's half-width
   constexpr int kMaxRows = (2 * kMaxReach + 1) * (2 * kMaxReach + 1);
   auto sq = [](Real v) { return v * v; };
+  double kernelStart = 0.0;  // [s] set by the master thread
 
 #pragma omp parallel
   {
@@ -222,10 +236,20 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
         for (std::int64_t y = ylo; y <= yhi; ++y) {
           const Real left = prune2 - gy2[y - ylo] - gz2;  // [m^2] room left along x
           if (left < 0.0) continue;
-          std::int64_t a = 0, b = last;
-          while (a < b && gx2[a] > left) ++a;
-          while (b > a && gx2[b] > left) --b;
           const std::int64_t base = z * dz + y * dy + xlo;
+          std::int64_t a = 0, b = last;
+          if (cellMaxR2 == nullptr) {
+            while (a < b && gx2[a] > left) ++a;
+            while (b > a && gx2[b] > left) --b;
+          } else {  // variable support: a cell is needed within max(h_i, its largest h_j)
+            const Real gyz2 = gy2[y - ylo] + gz2;
+            auto beyond = [&](std::int64_t x) {
+              return gx2[x] + gyz2 > std::max(qR2[i], cellMaxR2[base + x]) * kPruneSlack;
+            };
+            while (a < b && beyond(a)) ++a;
+            while (b > a && beyond(b)) --b;
+            if (a == b && beyond(a)) continue;
+          }
           const StencilRow row{cellStart[base + a], cellStart[base + b + 1]};
           if (row.end == row.begin) continue;
           stencil[rows++] = row;
@@ -279,27 +303,39 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
         values.clear();  // no stale kernel values for a list built without a kernel
       }
     }  // implicit barrier
-    // Each thread places its block: the point indices, and the kernel's gradient and value of
+    // Each thread places its block: the point indices, then the kernel's gradient and value of
     // each pair computed straight into the final lists (no per-thread copy of them to move).
-    Index running = static_cast<Index>(buf.offset);
     const Index* slots = buf.indices.data();
     Index* indices = out.indices.data();
+    const Index blockBegin = static_cast<Index>(buf.offset);
+    Index running = blockBegin;
     for (std::size_t i = lo; i < hi; ++i) {
       const Index begin = running;
       running += out.offsets[i + 1];
       out.offsets[i + 1] = running;
-      const Vec3 xi = qx[i];
-      const Index* s = slots + (begin - static_cast<Index>(buf.offset));
+      const Index* s = slots + (begin - blockBegin);
       for (Index a = begin; a < running; ++a, ++s) indices[a] = sorted[*s];
-      if (!kernel) continue;
-      s = slots + (begin - static_cast<Index>(buf.offset));
-      const std::size_t count = static_cast<std::size_t>(running - begin);
-      if (kernel->kind() == KernelKind::kCubicSpline)
-        pairKernels(kernel->cubicSpline(), kernel->gradientCutoff(), xi, sortedX, s, count,
-                    grad.data() + begin, values.data() + begin);
-      else
-        pairKernels(kernel->wendlandC2(), kernel->gradientCutoff(), xi, sortedX, s, count,
-                    grad.data() + begin, values.data() + begin);
+    }
+    if (kernel) {
+      // The pair kernels are timed apart from the search proper (pairKernelSeconds()): they
+      // are the stages' kernel evaluations done here once, not part of finding neighbours.
+#pragma omp barrier
+#pragma omp master
+      kernelStart = omp_get_wtime();
+      for (std::size_t i = lo; i < hi; ++i) {
+        const Index begin = out.offsets[i];  // written by the previous block before the barrier
+        const Index* s = slots + (begin - blockBegin);
+        const std::size_t count = static_cast<std::size_t>(out.offsets[i + 1] - begin);
+        if (kernel->kind() == KernelKind::kCubicSpline)
+          pairKernels(kernel->cubicSpline(), kernel->gradientCutoff(), qx[i], sortedX, s, count,
+                      grad.data() + begin, values.data() + begin);
+        else
+          pairKernels(kernel->wendlandC2(), kernel->gradientCutoff(), qx[i], sortedX, s, count,
+                      grad.data() + begin, values.data() + begin);
+      }
+#pragma omp barrier
+#pragma omp master
+      pairKernelSeconds_ += omp_get_wtime() - kernelStart;
     }
   }
 }
@@ -323,6 +359,7 @@ void NeighborSearch::update(const std::vector<Vec3>& dynamicX, const Kernel& ker
 
 void NeighborSearch::updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel,
                                 const std::vector<Real>* supportRadii) {
+  pairKernelSeconds_ = 0.0;
   bin(dynamicX, dynamicBins_, true);
   if (supportRadii != nullptr) binRadii(*supportRadii, dynamicBins_);
   const Real* qR2 = supportRadii != nullptr ? qR2_.data() : nullptr;

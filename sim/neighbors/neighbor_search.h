@@ -23,8 +23,14 @@
 // per-particle support radii h_i <= R. A dynamic pair is then kept when
 // r < max(h, h_i, h_j) (h the kernel's support), a dynamic-wall pair when r < max(h, h_i): a
 // superset of the fixed-h lists, so stages that use the kernel of support h see every pair they
-// would without the radii, and the extra ones carry W = 0. Without radii the scan is the fixed-h
-// one, branch for branch.
+// would without the radii, and the extra ones carry W = 0. The scan skips a cell that lies beyond
+// both the query's radius and the largest radius of the points in it (CellBins::cellMaxR2), so a
+// bulk particle at h among neighbours at h scans about the fixed-h volume, not the largest
+// support's. Without radii the scan is the fixed-h one, branch for branch.
+//
+// Time: pairKernelSeconds() is the part of an update spent on the per-pair kernel gradients and
+// values (the stages' kernel evaluations, done here once); the pipeline reports it as its own
+// stage, "pair_kernels", beside the search proper, "neighbors".
 #pragma once
 
 #include <cstdint>
@@ -66,6 +72,8 @@ struct CellBins {
   // [m^2] squared search radii max(h, h_i)^2 in `sorted` order; filled only for dynamic points
   // binned with per-particle support radii (empty otherwise).
   std::vector<Real> sortedR2;
+  // [m^2] per cell, the largest of its points' sortedR2 (0 when empty); filled with sortedR2.
+  std::vector<Real> cellMaxR2;
 };
 
 class NeighborSearch {
@@ -106,6 +114,10 @@ class NeighborSearch {
   // update(x). They let density sums skip a square root and a kernel evaluation per pair.
   const std::vector<Real>& dynamicDynamicKernelValues() const { return ddW_; }
   const std::vector<Real>& dynamicStaticKernelValues() const { return dsW_; }
+
+  // [s] wall time the last update spent on the per-pair kernel gradients and values (part of
+  // update()'s time; the rest is the search proper: binning, candidate scan, list placement).
+  double pairKernelSeconds() const { return pairKernelSeconds_; }
 
   // Permutation (new -> old) that orders points by the Morton index of their cell.
   void zOrder(const std::vector<Vec3>& x, std::vector<Index>& newToOld) const;
@@ -158,6 +170,7 @@ class NeighborSearch {
   std::vector<Index> counts_;
   std::vector<Real> qR2_;  // [m^2] max(h, h_i)^2 per dynamic point (variable support only)
   mutable std::vector<std::uint64_t> mortonScratch_;
+  double pairKernelSeconds_ = 0.0;  // [s] see pairKernelSeconds()
 };
 
 }  // namespace sim

@@ -63,7 +63,8 @@ class Pipeline {
   std::vector<std::unique_ptr<Effect>> effects_;
   std::vector<StageDecision> decisions_;
   StageTimers timers_;
-  int neighborSlot_ = 0, solverBeginSlot_ = 0, solverSlot_ = 0, integrateSlot_ = 0;
+  int neighborSlot_ = 0, pairKernelSlot_ = 0, solverBeginSlot_ = 0, solverSlot_ = 0,
+      integrateSlot_ = 0;
   std::vector<int> effectSlots_;
   // Non-pressure effects, velocity prediction and pressure solve for one step length.
   void advanceVelocities(World& world, const StepContext& context);
