@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -40,18 +41,20 @@ constexpr const char* kBenchUsage =
     "                              (what each accuracy choice costs and changes; --help)\n"
     "       tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
     "                              [--solvers dfsph,wcsph] [--tolerance F] [--relaxation W]\n"
-    "                              [--out DIR]\n";
+    "                              [--max-error-factor F] [--out DIR]\n";
 
 constexpr const char* kEngineUsage =
     "usage: tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
     "                              [--solvers dfsph,wcsph] [--tolerance F] [--relaxation W]\n"
-    "                              [--out DIR]\n";
+    "                              [--max-error-factor F] [--out DIR]\n";
 
 constexpr const char* kEngineDescription =
     "Runs the 3D dam break (water column a x 2a x a, a = 0.1 m, in a 4a long tank) with about\n"
     "the given numbers of particles for a fixed simulated time with each solver, and writes\n"
     "DIR/bench_engine.csv and DIR/bench_engine.md. Prints progress. Every iterative solver\n"
     "stops at the same mean density error (--tolerance), so their iterations compare.\n"
+    "The table also counts the particles whose centre passed the tank's walls (the most after\n"
+    "any step, and the deepest in particle spacings): what a stopping rule buys.\n"
     "Threads: OMP_NUM_THREADS. On a shared machine set OMP_WAIT_POLICY=passive.\n";
 
 struct BenchOptions {
@@ -63,6 +66,9 @@ struct BenchOptions {
   // are compared at the same accuracy.
   double tolerance = 1e-3;
   std::optional<double> relaxation;  // [1] Jacobi omega of every solver that has one
+  // [1] DFSPH's stopping rule on the largest compression (DfsphParameters::maxErrorFactor);
+  // 0 turns it off. Unset: the solver's default.
+  std::optional<double> maxErrorFactor;
   std::string out = ".";
 };
 
@@ -93,6 +99,11 @@ void defineEngineOptions(CLI::App& app, BenchOptions& o) {
                  "each solver's own)")
       ->type_name("W")
       ->check(numberBetween(0.05, 1.0));
+  app.add_option("--max-error-factor", o.maxErrorFactor,
+                 "DFSPH: also iterate while a particle is compressed by more than F times the "
+                 "tolerance (default 10; 0 turns the rule off)")
+      ->type_name("F")
+      ->check(numberBetween(0.0, 1e6));
   app.add_option("--out", o.out, "output folder")->type_name("DIR")->capture_default_str();
 }
 
@@ -101,13 +112,38 @@ struct BenchResult {
   long particles = 0;
   long steps = 0;
   long rejected = 0;
-  double simulatedTime = 0;      // [s]
-  double meanDt = 0;             // [s]
-  double meanIterations = 0;     // density-solve iterations per step
-  double meanDivIterations = 0;  // divergence-solve iterations per step
-  double wallSeconds = 0;        // [s] the time loop only (no scene set-up)
+  double simulatedTime = 0;       // [s]
+  double meanDt = 0;              // [s]
+  double meanIterations = 0;      // density-solve iterations per step
+  double meanDivIterations = 0;   // divergence-solve iterations per step
+  double wallSeconds = 0;         // [s] the time loop only (no scene set-up)
+  long mostBeyondWalls = 0;       // largest number of particles past the walls after any step
+  double deepestBeyondWalls = 0;  // [d] deepest such particle over the run
   std::vector<sim::StageTimers::Entry> stages;
 };
+
+// Particles whose centre lies past the tank's walls (beyond the inner box on a walled side, the
+// open top excluded), and the deepest of them in particle spacings: what the walls let through.
+struct BeyondWalls {
+  long count = 0;
+  double deepest = 0;  // [d]
+};
+BeyondWalls beyondWalls(const sim::DamBreakScene& scene) {
+  const sim::World& world = *scene.world;
+  const sim::Vec3 lo = scene.tank.innerMin, hi = scene.tank.innerMax;
+  BeyondWalls b;
+  for (const sim::Vec3& x : world.particles.x) {
+    double depth = 0;  // [m]
+    for (int k = 0; k < 3; ++k) {
+      depth = std::max(depth, lo[k] - x[k]);
+      if (k != 1 || scene.tank.closedTop) depth = std::max(depth, x[k] - hi[k]);
+    }
+    if (depth <= 0) continue;
+    ++b.count;
+    b.deepest = std::max(b.deepest, depth / world.particleSpacing());
+  }
+  return b;
+}
 
 // The registry entry of `solver` (the option's check has accepted the name).
 const sim::SolverEntry& solverEntry(const std::string& solver) {
@@ -130,6 +166,9 @@ BenchResult runOne(const std::string& solver, long targetParticles, const BenchO
   const sim::SolverEntry& entry = solverEntry(solver);
   if (entry.setTolerance) entry.setTolerance(scene.options, o.tolerance);
   if (entry.setRelaxation && o.relaxation) entry.setRelaxation(scene.options, *o.relaxation);
+  if (solver == "dfsph" && o.maxErrorFactor)
+    scene.options.dfsph.maxErrorFactor =
+        *o.maxErrorFactor > 0 ? *o.maxErrorFactor : std::numeric_limits<double>::infinity();
   sim::World& world = *scene.world;
   sim::Pipeline pipeline = sim::assemblePipeline(world, scene.options);
   pipeline.attach(world);
@@ -146,6 +185,9 @@ BenchResult runOne(const std::string& solver, long targetParticles, const BenchO
     pipeline.step(world);
     iterations += pipeline.solver().stats().densityIterations;
     divIterations += pipeline.solver().stats().divergenceIterations;
+    const BeyondWalls beyond = beyondWalls(scene);
+    r.mostBeyondWalls = std::max(r.mostBeyondWalls, beyond.count);
+    r.deepestBeyondWalls = std::max(r.deepestBeyondWalls, beyond.deepest);
     if (world.time >= nextReport * simTime) {
       const double wall =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -174,8 +216,8 @@ void writeReports(const std::vector<BenchResult>& results, const BenchOptions& o
   std::ofstream csv(csvPath);
   if (!csv) throw std::runtime_error("cannot write " + csvPath);
   csv << "solver,particles,steps,rejected_steps,simulated_time_s,mean_dt_s,mean_density_iterations,"
-         "mean_divergence_iterations,wall_s,wall_per_step_ms,particle_steps_per_s,threads,stage_"
-         "seconds\n";
+         "mean_divergence_iterations,wall_s,wall_per_step_ms,particle_steps_per_s,threads,"
+         "most_beyond_walls,deepest_beyond_walls_d,stage_seconds\n";
   const int threads = omp_get_max_threads();
   for (const BenchResult& r : results) {
     csv << r.solver << ',' << r.particles << ',' << r.steps << ',' << r.rejected << ','
@@ -183,7 +225,7 @@ void writeReports(const std::vector<BenchResult>& results, const BenchOptions& o
         << r.meanDivIterations << ',' << r.wallSeconds << ','
         << 1e3 * r.wallSeconds / static_cast<double>(r.steps) << ','
         << static_cast<double>(r.particles) * static_cast<double>(r.steps) / r.wallSeconds << ','
-        << threads << ',';
+        << threads << ',' << r.mostBeyondWalls << ',' << r.deepestBeyondWalls << ',';
     for (std::size_t k = 0; k < r.stages.size(); ++k)
       csv << (k ? ";" : "") << r.stages[k].name << '=' << r.stages[k].seconds;
     csv << '\n';
@@ -194,13 +236,15 @@ void writeReports(const std::vector<BenchResult>& results, const BenchOptions& o
   char line[512];
   md << "| solver | particles | steps (rejected) | mean dt [s] | iterations/step (density + "
         "divergence) "
-        "| wall/step [ms] | particle-steps/s |\n|---|---|---|---|---|---|---|\n";
+        "| wall/step [ms] | particle-steps/s | past the walls: most particles (deepest [d]) "
+        "|\n|---|---|---|---|---|---|---|---|\n";
   for (const BenchResult& r : results) {
     std::snprintf(line, sizeof line,
-                  "| %s | %ld | %ld (%ld) | %.3g | %.1f + %.1f | %.2f | %.3g |\n", r.solver.c_str(),
-                  r.particles, r.steps, r.rejected, r.meanDt, r.meanIterations, r.meanDivIterations,
-                  1e3 * r.wallSeconds / static_cast<double>(r.steps),
-                  static_cast<double>(r.particles) * static_cast<double>(r.steps) / r.wallSeconds);
+                  "| %s | %ld | %ld (%ld) | %.3g | %.1f + %.1f | %.2f | %.3g | %ld (%.2f) |\n",
+                  r.solver.c_str(), r.particles, r.steps, r.rejected, r.meanDt, r.meanIterations,
+                  r.meanDivIterations, 1e3 * r.wallSeconds / static_cast<double>(r.steps),
+                  static_cast<double>(r.particles) * static_cast<double>(r.steps) / r.wallSeconds,
+                  r.mostBeyondWalls, r.deepestBeyondWalls);
     md << line;
   }
   md << "\nIterative solvers stop at a mean density error of " << options.tolerance

@@ -1,4 +1,5 @@
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
+#include "sim/effects/symmetric_stress_sum.h"
 
 #include <cmath>
 #include <limits>
@@ -171,13 +172,7 @@ bool InterfacialTensionHuAdams2006::addCorrectedPairForce(const World& world, In
 // Adds particle i's pair sum of the symmetric form to f.
 void InterfacialTensionHuAdams2006::addSymmetricPairForce(const World& world, Index i, Real vi,
                                                           Vec3& f) const {
-  const auto& p = world.particles;
-  fluidPairs(world).forEach(i, [&](Index j, const Vec3& gradW) {
-    if (!stressed_[i] && !stressed_[j]) return;  // both zero (includes non-members)
-    const Mat3 sum =
-        stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i]) : stress_[j];
-    f += vi * (p.mass[j] / p.density[j]) * (sum * gradW);
-  });
+  f += symmetricStressSum(world, i, vi, stress_, stressed_, [](Index) { return true; });
 }
 
 // Mirror image of the stress across the wall: Pi_b = R Pi_i R with the reflection

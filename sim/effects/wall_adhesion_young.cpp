@@ -8,6 +8,7 @@
 
 #include "sim/boundary/wall_layers.h"
 #include "sim/boundary/wetted_surface.h"
+#include "sim/effects/symmetric_stress_sum.h"
 #include "sim/world/pair_loop.h"
 
 namespace sim {
@@ -241,24 +242,18 @@ bool WallAdhesionYoung::wallStress(const World& world) {
 void WallAdhesionYoung::applyStressForces(World& world) {
   auto& p = world.particles;
   const Index n = static_cast<Index>(p.size());
-  const PairLoop fluid = fluidPairs(world);
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
     if (!inPair(p.material[i])) continue;
     const Real vi = p.mass[i] / p.density[i];
-    Vec3 f = Vec3::Zero();  // [N]
-    fluid.forEach(i, [&](Index j, const Vec3& gradW) {
-      if (!stressed_[i] && !stressed_[j]) return;
-      // Tissue neighbours stay out of the sum, as wall particles do (they are not in the fluid
-      // lists). With them a stressed particle read gamma delta P sum_j V_j gradW_ij over the
-      // tissue, the tangential gradient of the tissue's number density: 0 above the lattice's
-      // columns, and off them a force towards the columns for a layer under tension (away from
-      // them under compression) that walls do not exert (docs/methods/interface.md, validation 3).
-      if (!world.materials.isFluid(p.material[j])) return;
-      const Mat3 sum =
-          stressed_[i] ? (stressed_[j] ? Mat3(stress_[i] + stress_[j]) : stress_[i]) : stress_[j];
-      f += vi * (p.mass[j] / p.density[j]) * (sum * gradW);
-    });
+    // Tissue neighbours stay out of the sum, as wall particles do (they are not in the fluid
+    // lists). With them a stressed particle read gamma delta P sum_j V_j gradW_ij over the
+    // tissue, the tangential gradient of the tissue's number density: 0 above the lattice's
+    // columns, and off them a force towards the columns for a layer under tension (away from
+    // them under compression) that walls do not exert (docs/methods/interface.md, validation 3).
+    const Vec3 f = symmetricStressSum(world, i, vi, stress_, stressed_, [&](Index j) {
+      return world.materials.isFluid(p.material[j]);
+    });  // [N]
     p.a[i] += f / p.mass[i];
   }
 }

@@ -8,6 +8,7 @@
 #include "interface_fixtures.h"
 #include "sim/effects/background_pressure.h"
 #include "sim/fluid/indsph_wang2023.h"
+#include "sim/world/pair_loop.h"
 
 using namespace sim;
 using Catch::Matchers::Contains;
@@ -184,7 +185,7 @@ TEST_CASE("background_pressure's fluid pair terms are equal and opposite", "[uni
   // bracket times -p_bg: its fluid pairs must cancel.
   Vec3 momentum = Vec3::Zero(), wallPart = Vec3::Zero();
   Real magnitude = 0;
-  const NeighborList& nw = w.wallNeighbors();
+  const PairLoop walls = wallPairs(w);
   for (Index i = 0; i < w.particles.size(); ++i) {
     const Real vi = w.particles.mass[i] / w.particles.density[i];
     const Vec3 f = kReferenceDensity * vi * w.particles.a[i];
@@ -192,8 +193,7 @@ TEST_CASE("background_pressure's fluid pair terms are equal and opposite", "[uni
     magnitude += f.norm();
     // The wall term as the stage writes it: -p_bg 2 V_i^2 / V0_i sum_b V_b gradW_ib.
     Vec3 g = Vec3::Zero();
-    for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
-      g += w.walls.volume[nw.indices[k]] * w.wallGradients()[k];
+    walls.forEach(i, [&](Index b, const Vec3& gradW) { g += w.walls.volume[b] * gradW; });
     wallPart -= 160.0 * 2 * vi * vi / w.restVolumeOf(i) * g;
   }
   REQUIRE(magnitude > 0);
