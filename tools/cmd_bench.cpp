@@ -41,12 +41,12 @@ constexpr const char* kBenchUsage =
     "                              (what each accuracy choice costs and changes; --help)\n"
     "       tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
     "                              [--solvers dfsph,wcsph] [--tolerance F] [--relaxation W]\n"
-    "                              [--max-error-factor F] [--out DIR]\n";
+    "                              [--max-error-factor F] [--no-pair-cache] [--out DIR]\n";
 
 constexpr const char* kEngineUsage =
     "usage: tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
     "                              [--solvers dfsph,wcsph] [--tolerance F] [--relaxation W]\n"
-    "                              [--max-error-factor F] [--out DIR]\n";
+    "                              [--max-error-factor F] [--no-pair-cache] [--out DIR]\n";
 
 constexpr const char* kEngineDescription =
     "Runs the 3D dam break (water column a x 2a x a, a = 0.1 m, in a 4a long tank) with about\n"
@@ -69,6 +69,7 @@ struct BenchOptions {
   // [1] DFSPH's stopping rule on the largest compression (DfsphParameters::maxErrorFactor);
   // 0 turns it off. Unset: the solver's default.
   std::optional<double> maxErrorFactor;
+  bool noPairCache = false;  // WorldParameters::cachePairKernels = false
   std::string out = ".";
 };
 
@@ -104,6 +105,9 @@ void defineEngineOptions(CLI::App& app, BenchOptions& o) {
                  "tolerance (default 10; 0 turns the rule off)")
       ->type_name("F")
       ->check(numberBetween(0.0, 1e6));
+  app.add_flag("--no-pair-cache", o.noPairCache,
+               "keep no kernel value and gradient per neighbour pair (less memory, same results; "
+               "the stages evaluate the kernel instead)");
   app.add_option("--out", o.out, "output folder")->type_name("DIR")->capture_default_str();
 }
 
@@ -159,6 +163,7 @@ BenchResult runOne(const std::string& solver, long targetParticles, const BenchO
   spec.heightRatio = 2.0;
   spec.depth = spec.columnWidth;
   spec.solver = solver;
+  spec.cachePairKernels = !o.noPairCache;
   // The column holds 2 (a/d)^3 particles.
   const long cells = std::lround(std::cbrt(static_cast<double>(targetParticles) / 2.0));
   spec.spacing = spec.columnWidth / static_cast<double>(cells);

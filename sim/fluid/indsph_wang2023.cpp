@@ -81,7 +81,7 @@ void IndsphWang2023::prepareStaticWalls(const World& world) {
       const Index j = t.dynamic[s];
       const Real c = world.restVolumeOf(j) / walls.volume[b];  // V0_j / V_b
       delta += c * world.kernel.W(p.x[j] - walls.x[b]);
-      diagonal += c * c * wall.gradient(t.pair[s]).squaredNorm() / p.mass[j];
+      diagonal += c * c * wall.gradient(t.pair[s], j, b).squaredNorm() / p.mass[j];
     }
     wallDensity_[b] = wallStaticDensity_[b] + delta;
     // Small-diagonal guard (IndsphParameters::minWallDynamicFraction): not an unknown.
@@ -103,7 +103,7 @@ Real IndsphWang2023::predictWallNumberDensity(const World& world, Real dt) {
     Real rate = 0;  // eq. 14 with v_b = 0: sum_j (V0_j/V_b) (0 - v_j).gradW_bj, gradW_bj = -gradB
     for (Index s = t.offsets[b]; s < t.offsets[b + 1]; ++s) {
       const Index j = t.dynamic[s];
-      rate += world.restVolumeOf(j) * p.v[j].dot(wall.gradient(t.pair[s]));
+      rate += world.restVolumeOf(j) * p.v[j].dot(wall.gradient(t.pair[s], j, b));
     }
     wallPredicted_[b] =
         std::max(wallDensity_[b] + dt * rate / walls.volume[b], 1.0 / walls.volume[b]);

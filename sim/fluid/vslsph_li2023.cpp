@@ -81,6 +81,7 @@ void VslsphLi2023::computeDensities(World& world) {
   const Real w0 = kernel.W0();
   const std::vector<Real>& fluidW = world.fluidKernelValues();
   const std::vector<Real>& wallWs = world.wallKernelValues();
+  const bool cached = world.parameters().cachePairKernels;
   // Walls carry the fixed support h (scale 1); their volume sum over particle i's rest volume
   // counts them as neighbours of i's own kind. A pair of particles both at h (the bulk: s = 1
   // exactly, since h_i is clamped to f_min h = h) reads the search's cached W, which is the
@@ -93,10 +94,10 @@ void VslsphLi2023::computeDensities(World& world) {
       },
       [&](Index i, Index j, const Vec3& xij, Index k) {
         const Real si = scale_[i], sj = scale_[j];
-        return si == 1.0 && sj == 1.0 ? fluidW[k] : averageW(kernel, xij.norm(), si, sj);
+        return cached && si == 1.0 && sj == 1.0 ? fluidW[k] : averageW(kernel, xij.norm(), si, sj);
       },
       [&](Index i, const Vec3& xib, Index k) {
-        return scale_[i] == 1.0 ? wallWs[k] : wallW(kernel, xib.norm(), scale_[i]);
+        return cached && scale_[i] == 1.0 ? wallWs[k] : wallW(kernel, xib.norm(), scale_[i]);
       },
       [&](Index i, Real fluid, Real wall) {
         const Real delta = fluid + wall / world.restVolumeOf(i);
@@ -132,6 +133,7 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
   const auto& pressure = *pressure_;
   const std::vector<Vec3>& fluidGrad = world.fluidGradients();
   const std::vector<Vec3>& wallGrad = world.wallGradients();
+  const bool cached = world.parameters().cachePairKernels;
   const Real si = scale_[i], pi = pressure[i];
   Vec3 a = Vec3::Zero();
   for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
@@ -139,8 +141,9 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
     const Vec3 xij = p.x[i] - p.x[j];
     const Real r = xij.norm();
     // Both at h: the cached gradient is the average's, bit for bit (see computeDensities).
-    const Vec3 gradW =
-        si == 1.0 && scale_[j] == 1.0 ? fluidGrad[k] : averageGradW(kernel, xij, r, si, scale_[j]);
+    const Vec3 gradW = cached && si == 1.0 && scale_[j] == 1.0
+                           ? fluidGrad[k]
+                           : averageGradW(kernel, xij, r, si, scale_[j]);
     // Eq. 17 over m_i: V_i V_j (p_i + p_j) / m_i = (p_i + p_j) / (rho_i delta_j).
     Real term = (pi + pressure[j]) / (p.density[i] * numberDensity_[j]);
     const Real vx = (p.v[i] - p.v[j]).dot(xij);
@@ -152,7 +155,7 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
     a -= term * gradW;
   }
   const Vec3 g = wallVolumeSum(world, i, Vec3(Vec3::Zero()), [&](const Vec3& xib, Index k) -> Vec3 {
-    return si == 1.0 ? wallGrad[k] : wallGradW(kernel, xib, xib.norm(), si);
+    return cached && si == 1.0 ? wallGrad[k] : wallGradW(kernel, xib, xib.norm(), si);
   });
   // Walls have no pressure of their own (p_b = 0 in eq. 17), so a wall pair carries p_i once:
   // Akinci et al. 2012's wall force, as in WCSPH. The mirrored p_b = p_i doubles it; on the

@@ -299,8 +299,9 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
         grad.resize(total);
         growTo(values, total);
         values.resize(total);
-      } else {
-        values.clear();  // no stale kernel values for a list built without a kernel
+      } else {  // no stale kernel values or gradients for a list built without a kernel
+        values.clear();
+        grad.clear();
       }
     }  // implicit barrier
     // Each thread places its block: the point indices, then the kernel's gradient and value of
@@ -347,6 +348,11 @@ void NeighborSearch::setStatic(const std::vector<Vec3>& staticX) {
 }
 
 void NeighborSearch::update(const std::vector<Vec3>& dynamicX) { updateImpl(dynamicX, nullptr); }
+
+void NeighborSearch::update(const std::vector<Vec3>& dynamicX,
+                            const std::vector<Real>* supportRadii) {
+  updateImpl(dynamicX, nullptr, supportRadii);
+}
 
 void NeighborSearch::update(const std::vector<Vec3>& dynamicX, const Kernel& kernel) {
   updateImpl(dynamicX, &kernel);

@@ -95,6 +95,9 @@ class NeighborSearch {
   // Bins dynamic points and rebuilds dynamic-dynamic and dynamic-static lists.
   // Throws SimError naming the first particle outside the domain.
   void update(const std::vector<Vec3>& dynamicX);
+  // Lists only, with per-particle support radii (nullptr: fixed h); no kernel values or
+  // gradients are kept (the pair-cache-free mode, WorldParameters::cachePairKernels).
+  void update(const std::vector<Vec3>& dynamicX, const std::vector<Real>* supportRadii);
   // Same, and also fills the kernel gradients gradW(x_i - x_j) aligned with the dynamic-dynamic
   // and dynamic-static lists (entry k belongs to the pair (i, indices[k])), computed in the same
   // pass as the lists with exactly Kernel::gradW's arithmetic.

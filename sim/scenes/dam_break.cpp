@@ -58,6 +58,7 @@ DamBreakScene buildDamBreak(const DamBreakSpec& spec) {
   WorldParameters params;
   params.particleSpacing = d;
   params.kernel = spec.kernel;
+  params.cachePairKernels = spec.cachePairKernels;
   params.gravity = Vec3(0, -spec.gravity, 0);
   params.domain = tankDomain(scene.tank, d);
   scene.world = std::make_unique<World>(params);

@@ -32,7 +32,8 @@ struct DamBreakSpec {
                                //     Z = 3.2 at T = 2.65 in the experiment)
   std::string solver = "wcsph";
   KernelKind kernel = KernelKind::kCubicSpline;
-  Real gravity = 9.81;  // [m/s^2] magnitude, along -y
+  Real gravity = 9.81;           // [m/s^2] magnitude, along -y
+  bool cachePairKernels = true;  // WorldParameters::cachePairKernels
 };
 
 struct DamBreakScene {

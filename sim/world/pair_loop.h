@@ -1,9 +1,11 @@
-// One loop over a particle's cached neighbour pairs: the neighbour's index, the pair's kernel
-// gradient gradW(x_i - x_j) as the neighbour search stored it, and (when the lambda asks for it)
-// the pair's slot in the list, in list order. Every solver and effect that sums over pairs with
-// the cached gradients goes through it, so the cache is read in one place
-// (sim/neighbors/neighbor_search.h). The lambda inlines: the loop is the hand-written one
-// (docs/benchmarks.md, Engine).
+// One loop over a particle's neighbour pairs: the neighbour's index, the pair's kernel gradient
+// gradW(x_i - x_j) and (when the lambda asks for it) the pair's slot in the list, in list order.
+// Every solver and effect that sums over pairs with kernel gradients goes through it, so the
+// per-pair cache is read in one place (sim/neighbors/neighbor_search.h). The gradient is the one
+// the neighbour search stored, or, when the world keeps no pair cache
+// (WorldParameters::cachePairKernels = false), Kernel::gradW evaluated here: the same value bit
+// for bit, so a run does not depend on the choice. The lambda inlines: the loop is the
+// hand-written one (docs/benchmarks.md, Engine).
 //
 //   const PairLoop fluid = fluidPairs(world), walls = wallPairs(world);
 //   fluid.forEach(i, [&](Index j, const Vec3& gradW) { ... });
@@ -18,38 +20,63 @@ namespace sim {
 
 class PairLoop {
  public:
-  PairLoop(const NeighborList& list, const std::vector<Vec3>& gradients)
+  // Pairs (i, j) of `list`, i a point of `queryX`, j a point of `pointX`; `gradients` aligned
+  // with the list, or empty to evaluate `kernel` per pair.
+  PairLoop(const NeighborList& list, const std::vector<Vec3>& gradients,
+           const std::vector<Vec3>& queryX, const std::vector<Vec3>& pointX, const Kernel& kernel)
       : offsets_(list.offsets.data()),
         indices_(list.indices.data()),
-        gradients_(gradients.data()) {}
+        gradients_(gradients.size() == list.indices.size() && !gradients.empty() ? gradients.data()
+                                                                                 : nullptr),
+        queryX_(queryX.data()),
+        pointX_(pointX.data()),
+        kernel_(&kernel) {}
 
   // f(j, gradW) or f(j, gradW, slot) for each neighbour j of i, in list order.
   template <class F>
   void forEach(Index i, F&& f) const {
+    if (gradients_ != nullptr) {
+      for (Index k = offsets_[i]; k < offsets_[i + 1]; ++k) call(f, indices_[k], gradients_[k], k);
+      return;
+    }
+    const Vec3 xi = queryX_[i];
     for (Index k = offsets_[i]; k < offsets_[i + 1]; ++k) {
-      if constexpr (std::is_invocable_v<F&, Index, const Vec3&, Index>)
-        f(indices_[k], gradients_[k], k);
-      else
-        f(indices_[k], gradients_[k]);
+      const Index j = indices_[k];
+      call(f, j, kernel_->gradW(xi - pointX_[j]), k);
     }
   }
-  // gradW of the pair in list slot k (for loops that visit the pairs in another order, e.g. a
-  // wall particle's fluid neighbours).
-  const Vec3& gradient(Index k) const { return gradients_[k]; }
+  // gradW of the pair (i, j) in list slot k (for loops that visit the pairs in another order,
+  // e.g. a wall particle's fluid neighbours).
+  Vec3 gradient(Index k, Index i, Index j) const {
+    return gradients_ != nullptr ? gradients_[k] : kernel_->gradW(queryX_[i] - pointX_[j]);
+  }
 
  private:
+  template <class F>
+  static void call(F& f, Index j, const Vec3& gradW, Index k) {
+    if constexpr (std::is_invocable_v<F&, Index, const Vec3&, Index>)
+      f(j, gradW, k);
+    else
+      f(j, gradW);
+  }
+
   const Index* offsets_;
   const Index* indices_;
-  const Vec3* gradients_;
+  const Vec3* gradients_;  // null: no cache, evaluate the kernel
+  const Vec3* queryX_;
+  const Vec3* pointX_;
+  const Kernel* kernel_;
 };
 
 // Dynamic particle i's dynamic neighbours j, with gradW(x_i - x_j).
 inline PairLoop fluidPairs(const World& world) {
-  return {world.fluidNeighbors(), world.fluidGradients()};
+  return {world.fluidNeighbors(), world.fluidGradients(), world.particles.x, world.particles.x,
+          world.kernel};
 }
 // Dynamic particle i's wall neighbours b, with gradW(x_i - x_b).
 inline PairLoop wallPairs(const World& world) {
-  return {world.wallNeighbors(), world.wallGradients()};
+  return {world.wallNeighbors(), world.wallGradients(), world.particles.x, world.walls.x,
+          world.kernel};
 }
 
 }  // namespace sim

@@ -76,11 +76,19 @@ void World::updateNeighbors() {
       particles.fields.permute(permutation_);
       updatesSinceSort_ = 0;
     }
-    // The lists and the per-pair kernel gradients come from one pass (NeighborSearch::update).
-    search_->update(particles.x, kernel, variableSupport_);
+    rebuildLists();
   } catch (const SimError& e) {
     throw SimError(describeEscape(e.what()));
   }
+}
+
+// The lists and, when kept, the per-pair kernel values and gradients, from one pass
+// (NeighborSearch::update).
+void World::rebuildLists() {
+  if (parameters_.cachePairKernels)
+    search_->update(particles.x, kernel, variableSupport_);
+  else
+    search_->update(particles.x, variableSupport_);
 }
 
 void World::useVariableSupport(const std::vector<Real>& support, Real maxSupport) {
@@ -91,7 +99,7 @@ void World::useVariableSupport(const std::vector<Real>& support, Real maxSupport
   search_->setStatic(walls.x);
   variableSupport_ = &support;
   try {
-    search_->update(particles.x, kernel, variableSupport_);
+    rebuildLists();
   } catch (const SimError& e) {
     throw SimError(describeEscape(e.what()));
   }

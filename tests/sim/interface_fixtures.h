@@ -79,6 +79,7 @@ struct DropletSpec {
   int tissueFreeLayers = 0;
   Real tissueYoungsModulus = 5e4;  // [Pa]
   Vec3 gravity = Vec3::Zero();     // [m/s^2]
+  bool cachePairKernels = true;    // WorldParameters::cachePairKernels
 };
 
 // Fills the box from `origin` with nx x ny x nz lattice sites of spacing d, one particle at each
@@ -130,6 +131,7 @@ inline DropletScene dropletScene(const DropletSpec& s) {
     params.domain.extend(out.spec.innerMax + Vec3::Constant((s.wallLayers + 1) * d));
   }
   if (s.maxTimeStep > 0) params.maxTimeStep = s.maxTimeStep;
+  params.cachePairKernels = s.cachePairKernels;
   out.world = std::make_unique<World>(params);
   World& w = *out.world;
   out.oil = w.materials.add(liquid("oil", s.oilDensity, s.oilViscosity));
