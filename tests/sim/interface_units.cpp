@@ -45,7 +45,7 @@ constexpr Real kHemisphereRadius = 0.003;  // [m]
 
 // tissueLayers > 0: the floor is that many layers of elastic tissue on the layered wall, its top
 // layer the wetted surface (DropletSpec::tissueFloorLayers).
-testing::DropletScene hemisphere(int wallLayers = 0, int tissueLayers = 0) {
+testing::DropletSpec hemisphereSpec(int wallLayers = 0, int tissueLayers = 0) {
   testing::DropletSpec s;
   s.wallLayers = wallLayers;
   s.tissueFloorLayers = tissueLayers;
@@ -56,7 +56,10 @@ testing::DropletScene hemisphere(int wallLayers = 0, int tissueLayers = 0) {
   s.sigma = 0.04;
   s.massExcess = 0;
   s.sessileStartCos = 0;  // centre on the floor: a hemisphere, 90 deg
-  return testing::dropletScene(s);
+  return s;
+}
+testing::DropletScene hemisphere(int wallLayers = 0, int tissueLayers = 0) {
+  return testing::dropletScene(hemisphereSpec(wallLayers, tissueLayers));
 }
 
 // Sum of m a . e_r over particles within `reach` of the vertical axis through the centre,
@@ -551,13 +554,7 @@ TEST_CASE("Interface stages give the same state bit for bit without the pair cac
           "[unit][interface]") {
   std::array<testing::DropletScene, 2> scenes;
   for (int k = 0; k < 2; ++k) {
-    testing::DropletSpec s;
-    s.radius = kHemisphereRadius;
-    s.spacing = s.radius / 4;
-    s.halfWidth = 2 * s.radius;
-    s.boxHeight = 1.6 * s.radius;
-    s.sigma = 0.04;
-    s.sessileStartCos = 0;
+    testing::DropletSpec s = hemisphereSpec();
     s.gravity = Vec3(0, -9.81, 0);
     s.cachePairKernels = k == 0;
     scenes[k] = testing::dropletScene(s);
