@@ -61,9 +61,14 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
   // XSPH reads the kernel values the neighbour pass cached (no square root per pair).
   const std::vector<Real>& cachedW = world.fluidKernelValues();
   const bool cached = cachedW.size() == nf.indices.size();
+  // The viscosity per particle once instead of a material lookup per pair.
+  viscosity_.resize(p.size());
+#pragma omp parallel for schedule(static)
+  for (Index i = 0; i < n; ++i)
+    viscosity_[i] = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
 #pragma omp parallel for schedule(static)
   for (Index i = 0; i < n; ++i) {
-    const Real mui = viscosityOfMaterial_[static_cast<std::size_t>(p.material[i])];
+    const Real mui = viscosity_[i];
     if (mui < 0) {
       p.a[i] += kFactor * elasticReaction(world, i, h2);
       continue;
@@ -76,7 +81,7 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
       if constexpr (kSmoothing)
         if (p.material[j] == p.material[i])
           smooth += XsphMonaghan1989::pairTerm(p, i, j, cached ? cachedW[k] : kernel.W(xij));
-      const Real muj = viscosityOfMaterial_[static_cast<std::size_t>(p.material[j])];
+      const Real muj = viscosity_[j];
       // An elastic neighbour is a wall moving with the solid's velocity: the fluid's viscosity.
       const Real mu = muj < 0 ? mui : 0.5 * (mui + muj);
       if (mu == 0) return;

@@ -45,6 +45,8 @@ class ViscosityMonaghan2005 final : public Effect {
   bool wallFriction_;
   Real smoothing_ = 0;                     // [1] XSPH eps computed here (0: none)
   std::vector<Real> viscosityOfMaterial_;  // [Pa s]
+  // [Pa s] per particle, refreshed each apply (-1: elastic); resized only when the count grows.
+  std::vector<Real> viscosity_;
 };
 
 }  // namespace sim
