@@ -41,12 +41,14 @@ constexpr const char* kBenchUsage =
     "                              (what each accuracy choice costs and changes; --help)\n"
     "       tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
     "                              [--solvers dfsph,wcsph] [--tolerance F] [--relaxation W]\n"
-    "                              [--max-error-factor F] [--no-pair-cache] [--out DIR]\n";
+    "                              [--max-error-factor F] [--no-pair-cache]\n"
+    "                              [--initial-density R] [--out DIR]\n";
 
 constexpr const char* kEngineUsage =
     "usage: tamponade bench engine [--particles 30000,100000] [--time SECONDS]\n"
     "                              [--solvers dfsph,wcsph] [--tolerance F] [--relaxation W]\n"
-    "                              [--max-error-factor F] [--no-pair-cache] [--out DIR]\n";
+    "                              [--max-error-factor F] [--no-pair-cache]\n"
+    "                              [--initial-density R] [--out DIR]\n";
 
 constexpr const char* kEngineDescription =
     "Runs the 3D dam break (water column a x 2a x a, a = 0.1 m, in a 4a long tank) with about\n"
@@ -69,7 +71,8 @@ struct BenchOptions {
   // [1] DFSPH's stopping rule on the largest compression (DfsphParameters::maxErrorFactor);
   // 0 turns it off. Unset: the solver's default.
   std::optional<double> maxErrorFactor;
-  bool noPairCache = false;  // WorldParameters::cachePairKernels = false
+  bool noPairCache = false;     // WorldParameters::cachePairKernels = false
+  double initialDensity = 1.0;  // [1] DamBreakSpec::initialDensityRatio
   std::string out = ".";
 };
 
@@ -108,6 +111,12 @@ void defineEngineOptions(CLI::App& app, BenchOptions& o) {
   app.add_flag("--no-pair-cache", o.noPairCache,
                "keep no kernel value and gradient per neighbour pair (less memory, same results; "
                "the stages evaluate the kernel instead)");
+  app.add_option("--initial-density", o.initialDensity,
+                 "the column's initial density over the rest density (particle mass R rho0 d^3); "
+                 "0.8 is how SPlisHSPlasH's regular fluid blocks start")
+      ->type_name("R")
+      ->check(numberBetween(0.5, 1.0))
+      ->capture_default_str();
   app.add_option("--out", o.out, "output folder")->type_name("DIR")->capture_default_str();
 }
 
@@ -164,6 +173,7 @@ BenchResult runOne(const std::string& solver, long targetParticles, const BenchO
   spec.depth = spec.columnWidth;
   spec.solver = solver;
   spec.cachePairKernels = !o.noPairCache;
+  spec.initialDensityRatio = o.initialDensity;
   // The column holds 2 (a/d)^3 particles.
   const long cells = std::lround(std::cbrt(static_cast<double>(targetParticles) / 2.0));
   spec.spacing = spec.columnWidth / static_cast<double>(cells);

@@ -61,12 +61,13 @@ void addTankWalls(World& world, const TankSpec& tank, Real d, int tag, const Wal
       }
 }
 
-std::size_t addFluidBlock(World& world, const Vec3& min, const Vec3& max, Real d,
-                          int materialIndex) {
+std::size_t addFluidBlock(World& world, const Vec3& min, const Vec3& max, Real d, int materialIndex,
+                          Real densityRatio) {
   require(d > 0, "fluid spacing must be > 0 m");
+  require(densityRatio > 0, "fluid block: the initial density ratio must be > 0");
   require(materialIndex >= 0 && materialIndex < world.materials.size(),
           "fluid block refers to an undefined material");
-  const Real mass = world.materials[materialIndex].restDensity * d * d * d;
+  const Real mass = densityRatio * world.materials[materialIndex].restDensity * d * d * d;
   const Eigen::Vector3i cells = ((max - min) / d).array().round().cast<int>();
   std::size_t added = 0;
   for (int kz = 0; kz < cells.z(); ++kz)

@@ -32,8 +32,10 @@ void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag = 0)
 void addTankWalls(World& world, const TankSpec& tank, Real spacing, int tag,
                   const WallLayers& layers);
 // Fills [min, max] with particles on a lattice of spacing d (cell-centred: first at min + d/2),
-// mass rho0 d^3 of material `materialIndex`. Returns the number added.
+// mass densityRatio rho0 d^3 of material `materialIndex`: the lattice's kernel sum is d^-3 within
+// 0.003 % (cubic spline, support 2d), so it starts at densityRatio times the rest density.
+// Returns the number added.
 std::size_t addFluidBlock(World& world, const Vec3& min, const Vec3& max, Real spacing,
-                          int materialIndex);
+                          int materialIndex, Real densityRatio = 1.0);
 
 }  // namespace sim

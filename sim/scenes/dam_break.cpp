@@ -65,7 +65,8 @@ DamBreakScene buildDamBreak(const DamBreakSpec& spec) {
   World& world = *scene.world;
   world.materials.add(damBreakWater());
   addTankWalls(world, scene.tank, d);
-  addFluidBlock(world, Vec3::Constant(gap), Vec3(gap + a, gap + height, gap + depth), d, 0);
+  addFluidBlock(world, Vec3::Constant(gap), Vec3(gap + a, gap + height, gap + depth), d, 0,
+                spec.initialDensityRatio);
   world.initialize();
 
   scene.options.solver = spec.solver;

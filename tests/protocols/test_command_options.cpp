@@ -99,6 +99,8 @@ const std::vector<BadOption> kBadOptions = {
     {"bench engine --relaxation 0", "--relaxation: '0' must be a number from 0.05 to 1"},
     {"bench engine --max-error-factor -1",
      "--max-error-factor: '-1' must be a number from 0 to 1e+06"},
+    {"bench engine --initial-density 0.3",
+     "--initial-density: '0.3' must be a number from 0.5 to 1"},
     {"bench solvers --ratios 2,0.5", "--ratios: '0.5': give heavy/light >= 1"},
     {"bench solvers --time abc", "--time: 'abc' must be a positive number"},
     {"bench solvers --quick=maybe", "--quick"},
