@@ -130,6 +130,18 @@ void growTo(std::vector<T>& v, std::size_t n) {
   v.resize(n);
 }
 
+// Sizes `v` to `n` elements whose old contents are not needed (the final lists, rewritten whole
+// after it): when it must grow, the old buffer is released before the larger one is reserved, with
+// the same 25 % headroom, so the peak memory never holds both and nothing is copied.
+template <class T>
+void sizeDiscarding(std::vector<T>& v, std::size_t n) {
+  if (v.capacity() < n) {
+    std::vector<T>().swap(v);
+    v.reserve(n + n / 4);
+  }
+  v.resize(n);
+}
+
 // Stores every slot k of [b, e) at slot[m] and advances m when |xi - x_k|^2 < cut(k) and k is
 // not `selfSlot` (the query point's own slot, compared without loading its index): no
 // unpredictable branch per candidate. `cut` inlines to a constant on the fixed-h path.
@@ -292,13 +304,10 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
         threadBuffers_[k].offset = total;
         total += threadBuffers_[k].count;
       }
-      growTo(out.indices, total);
-      out.indices.resize(total);
+      sizeDiscarding(out.indices, total);
       if (kernel) {
-        growTo(grad, total);
-        grad.resize(total);
-        growTo(values, total);
-        values.resize(total);
+        sizeDiscarding(grad, total);
+        sizeDiscarding(values, total);
       } else {  // no stale kernel values or gradients for a list built without a kernel
         values.clear();
         grad.clear();
