@@ -121,23 +121,27 @@ void NeighborSearch::binRadii(const std::vector<Real>& radii, CellBins& bins) {
 
 namespace {
 
-// Grows `v` to at least `n` elements with 25 % headroom, so that a list whose size drifts from
-// step to step stops reallocating after the first few steps.
+// The capacity reserved for n elements: 25 % headroom, so that a list whose size drifts from step
+// to step stops reallocating after the first few steps (reserved, untouched pages are not
+// resident memory).
+std::size_t withHeadroom(std::size_t n) { return n + n / 4; }
+
+// Grows `v` to at least `n` elements, keeping its contents, with withHeadroom capacity.
 template <class T>
 void growTo(std::vector<T>& v, std::size_t n) {
   if (v.size() >= n) return;
-  if (v.capacity() < n) v.reserve(n + n / 4);
+  if (v.capacity() < n) v.reserve(withHeadroom(n));
   v.resize(n);
 }
 
 // Sizes `v` to `n` elements whose old contents are not needed (the final lists, rewritten whole
-// after it): when it must grow, the old buffer is released before the larger one is reserved, with
-// the same 25 % headroom, so the peak memory never holds both and nothing is copied.
+// after it): when it must grow, the old buffer is released before the larger one is reserved, so
+// the peak memory never holds both and nothing is copied.
 template <class T>
 void sizeDiscarding(std::vector<T>& v, std::size_t n) {
   if (v.capacity() < n) {
     std::vector<T>().swap(v);
-    v.reserve(n + n / 4);
+    v.reserve(withHeadroom(n));
   }
   v.resize(n);
 }

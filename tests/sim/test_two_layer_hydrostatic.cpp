@@ -39,8 +39,8 @@ struct TwoLayerResult {
   Real interfaceTilt = 0;            // [m] largest difference of the interface height between
                                      //     the four quarters of the tank
   Real gapRatio = 0;                 // [1] number density at the interface / in the bulk (0 if
-                      //     the phases do not touch over a quarter of the tank or more)
-  Real separation = 0;  // [m] lowest light minus highest heavy interior particle
+                                     //     the phases are apart over a whole quarter)
+  Real separation = 0;               // [m] lowest light minus highest heavy interior particle
   bool finite = true, contained = true;
 };
 
