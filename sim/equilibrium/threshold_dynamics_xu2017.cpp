@@ -8,6 +8,7 @@
 
 #include "sim/core/error.h"
 #include "sim/equilibrium/gaussian_blur.h"
+#include "sim/equilibrium/volume_threshold.h"
 
 namespace sim::equilibrium {
 namespace {
@@ -25,54 +26,6 @@ void checkProblem(const EquilibriumProblem& p) {
           "equilibrium: the interfacial tension must be > 0");
   require(p.oilDensity > 0.0 && p.aqueousDensity > 0.0, "equilibrium: densities must be > 0");
   require(p.gravity.allFinite(), "equilibrium: gravity must be finite");
-}
-
-// Sets u to 1 on the voxels of smallest psi until sum u f reaches `target`; 0 elsewhere (the
-// threshold step of the scheme). The voxels whose psi lies within `tie` of the last one taken
-// share what is left of the volume alike (a linear program with equal costs has every split as a
-// minimum; the even one is the limit of vanishing tension, where a whole layer of voxels ties:
-// filled in index order, its oil stood next to the wall or in the middle by the tension's residue
-// and the flat interface read a voxel off). Deterministic. O(n): a histogram of psi finds the
-// voxels that straddle the quantile, and only those are sorted.
-void selectLowest(const std::vector<double>& psi, const std::vector<std::size_t>& fluid,
-                  const std::vector<double>& f, double target, double tie, std::vector<double>& u) {
-  double lo = psi[fluid[0]], hi = lo;
-  for (std::size_t v : fluid) {
-    lo = std::min(lo, psi[v]);
-    hi = std::max(hi, psi[v]);
-  }
-  constexpr int kBins = 1 << 16;
-  const double scale = hi > lo ? (kBins - 1) / (hi - lo) : 0.0;
-  auto binOf = [&](std::size_t v) { return static_cast<int>((psi[v] - lo) * scale); };
-  std::vector<double> weight(kBins, 0.0);
-  for (std::size_t v : fluid) weight[binOf(v)] += f[v];
-  int cut = 0;
-  double below = 0.0;
-  while (cut < kBins - 1 && below + weight[cut] < target) below += weight[cut++];
-  std::vector<std::size_t> straddling;
-  for (std::size_t v : fluid)
-    if (binOf(v) == cut) straddling.push_back(v);
-  std::sort(straddling.begin(), straddling.end(), [&](std::size_t a, std::size_t b) {
-    return psi[a] < psi[b] || (psi[a] == psi[b] && a < b);
-  });
-  double cutPsi = straddling.empty() ? hi : psi[straddling.back()];
-  for (std::size_t v : straddling) {
-    below += f[v];
-    if (below >= target) {
-      cutPsi = psi[v];
-      break;
-    }
-  }
-  double lower = 0.0, tied = 0.0;  // [voxels] below the tie band, in it
-  for (std::size_t v : fluid) {
-    if (psi[v] < cutPsi - tie)
-      lower += f[v];
-    else if (psi[v] <= cutPsi + tie)
-      tied += f[v];
-  }
-  const double share = tied > 0.0 ? std::clamp((target - lower) / tied, 0.0, 1.0) : 0.0;
-  for (std::size_t v : fluid)
-    u[v] = psi[v] < cutPsi - tie ? 1.0 : (psi[v] <= cutPsi + tie ? share : 0.0);
 }
 
 // [1] The true wall area over the discrete one, sqrt(pi / t) int f G*(1 - f) dV; 1 when the true
@@ -190,20 +143,35 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
   for (;;) {
     const double t = (smoothing * h) * (smoothing * h);
     stage.emplace(problem, t, wallRatio);
+    const bool last = smoothing <= options.finalSmoothing;
+    const bool fractional = last && options.fractionalWidth > 0.0;
+    // [J/m^3] psi's change per voxel across a planar interface: the tension's sigma / t (the
+    // derivative of the blurred step, 2 a G_1D(0)) and the buoyancy's.
+    const double width = options.fractionalWidth * (problem.tension / t + buoyancyWeight) * h;
+    const int maxIterations =
+        fractional ? options.maxFractionalIterations : options.maxIterationsPerStage;
+    double level = std::numeric_limits<double>::quiet_NaN();
     bool settled = false;
-    for (int it = 0; it < options.maxIterationsPerStage && !settled; ++it) {
+    for (int it = 0; it < maxIterations && !settled; ++it) {
       for (std::size_t v = 0; v < n; ++v) oilField[v] = out.oil[v] * f[v];
       stage->blur.apply(oilField, blurredOil);
       for (std::size_t v : fluid) psi[v] = stage->terms(v, blurredOil[v], 2.0) + potential[v];
       previous = out.oil;
-      selectLowest(psi, fluid, f, target, tie, out.oil);
       ++out.iterations;
-      settled = std::equal(out.oil.begin(), out.oil.end(), previous.begin());
+      if (!fractional) {
+        selectLowest(psi, fluid, f, target, tie, out.oil);
+        settled = std::equal(out.oil.begin(), out.oil.end(), previous.begin());
+        continue;
+      }
+      selectFractional(psi, fluid, f, target, width, level, out.oil);
+      double change = 0.0;
+      for (std::size_t v : fluid) change = std::max(change, std::abs(out.oil[v] - previous[v]));
+      settled = change < options.fractionalTolerance;
     }
     ++out.stages;
     out.converged = settled;
     out.heatKernelTime = t;
-    if (smoothing <= options.finalSmoothing) break;
+    if (last) break;
     smoothing = std::max(0.5 * smoothing, options.finalSmoothing);
   }
 
