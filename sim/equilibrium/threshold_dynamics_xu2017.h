@@ -58,9 +58,9 @@ struct ThresholdDynamicsOptions {
   // this many voxels of a planar interface's psi (volume_threshold.h), so that the contact line
   // can move by less than a voxel (whole voxels pin it below a kernel of about 3 voxels). Not the
   // default: it meets the zero-gravity lens at 18 deg within 0.2 points where whole voxels miss by
-  // 3.5, but lets a sub-voxel aqueous film take up to half of a thin pool's volume, and it needs
-  // ratios of its own (0.97 at 18 deg, 1.11 at 40 deg; wallKernelRatio is calibrated for whole
-  // voxels). docs/methods/equilibrium.md, "Fractional thresholding".
+  // 3.5, but reads thin aqueous pools up to 2.4 points low, and it needs ratios of its own (0.97 at
+  // 18 deg, 1.11 at 40 deg; wallKernelRatio is calibrated for whole voxels).
+  // docs/methods/equilibrium.md, "Fractional thresholding".
   double fractionalWidth = 0.0;
   // The fractional stage ends when no voxel's u changes by more than this in an iteration.
   double fractionalTolerance = 1e-3;
