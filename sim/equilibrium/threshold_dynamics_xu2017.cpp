@@ -67,31 +67,57 @@ struct StageTerms {
 
 }  // namespace
 
-double wallKernelRatio(double contactAngle) {
-  // (theta through the wetting phase [deg], ratio): in a 12 mm sphere at Bond 1.2 with 0.3 mm
-  // voxels, the covered fraction meets the axisymmetric Young-Laplace equilibrium at fill 0.8 and
-  // 0.9 at these ratios from 18 to 75 deg (docs/methods/equilibrium.md, "The wall kernel"); 90 deg
-  // takes Young's ratio, pi / 2 (the wall term vanishes there). At 10 deg a change of 0.02 moves
-  // the coverage by 5-20 points and no ratio serves gravity and zero gravity alike: below 18 deg
-  // the ratio returns to the single kernel.
-  static constexpr std::array<std::array<double, 2>, 8> kCalibrated{{{10.0, 1.0},
-                                                                     {18.0, 1.025},
-                                                                     {25.0, 1.07},
-                                                                     {30.0, 1.10},
-                                                                     {40.0, 1.20},
-                                                                     {60.0, 1.40},
-                                                                     {75.0, 1.55},
-                                                                     {90.0, 1.57}}};
-  // The scheme is symmetric under swapping the phases (theta -> 180 deg - theta).
+namespace {
+
+using CalibrationTable = std::array<std::array<double, 2>, 8>;
+
+// (theta through the wetting phase [deg], ratio): in a 12 mm sphere at Bond 1.2 with 0.3 mm
+// voxels, the covered fraction meets the axisymmetric Young-Laplace equilibrium at fill 0.8 and
+// 0.9 at these ratios from 18 to 75 deg (docs/methods/equilibrium.md, "The wall kernel"); 90 deg
+// takes Young's ratio, pi / 2 (the wall term vanishes there). At 10 deg a change of 0.02 moves
+// the coverage by 5-20 points and no ratio serves gravity and zero gravity alike: with whole
+// voxels the ratio returns to the single kernel below 18 deg, with fractions it keeps 18 deg's.
+constexpr CalibrationTable kWholeVoxelRatios{{{10.0, 1.0},
+                                              {18.0, 1.025},
+                                              {25.0, 1.07},
+                                              {30.0, 1.10},
+                                              {40.0, 1.20},
+                                              {60.0, 1.40},
+                                              {75.0, 1.55},
+                                              {90.0, 1.57}}};
+constexpr CalibrationTable kFractionalRatios{{{10.0, 0.97},
+                                              {18.0, 0.97},
+                                              {25.0, 0.99},
+                                              {30.0, 1.02},
+                                              {40.0, 1.11},
+                                              {60.0, 1.35},
+                                              {75.0, 1.50},
+                                              {90.0, 1.5708}}};
+
+// [deg] The smaller of theta and 180 deg - theta: the scheme is symmetric under swapping the
+// phases.
+double wettingAngle(double contactAngle) {
   const double deg = contactAngle * 180.0 / std::numbers::pi;
-  const double wetting = std::min(deg, 180.0 - deg);
-  if (wetting <= kCalibrated.front()[0]) return kCalibrated.front()[1];
+  return std::min(deg, 180.0 - deg);
+}
+
+double interpolate(const CalibrationTable& table, double wetting) {
+  if (wetting <= table.front()[0]) return table.front()[1];
   std::size_t k = 1;
-  while (kCalibrated[k][0] < wetting) ++k;
-  const auto& [x0, y0] = kCalibrated[k - 1];
-  const auto& [x1, y1] = kCalibrated[k];
+  while (table[k][0] < wetting) ++k;
+  const auto& [x0, y0] = table[k - 1];
+  const auto& [x1, y1] = table[k];
   return y0 + (y1 - y0) * (wetting - x0) / (x1 - x0);
 }
+
+}  // namespace
+
+double wallKernelRatio(double contactAngle, bool fractional) {
+  return interpolate(fractional ? kFractionalRatios : kWholeVoxelRatios,
+                     wettingAngle(contactAngle));
+}
+
+bool fractionalFinalStage(double contactAngle) { return wettingAngle(contactAngle) >= 40.0; }
 
 EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
                                      const ThresholdDynamicsOptions& options) {
@@ -135,8 +161,12 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
     selectLowest(start, fluid, f, target, tie, out.oil);
   }
 
-  const double wallRatio = options.wallKernelRatio > 0.0 ? options.wallKernelRatio
-                                                         : wallKernelRatio(problem.contactAngle);
+  const bool fractionalFinal = options.finalThreshold == FinalThreshold::kFractional ||
+                               (options.finalThreshold == FinalThreshold::kByAngle &&
+                                fractionalFinalStage(problem.contactAngle));
+  const double wallRatio = options.wallKernelRatio > 0.0
+                               ? options.wallKernelRatio
+                               : wallKernelRatio(problem.contactAngle, fractionalFinal);
   std::vector<double> blurredOil, oilField(n), psi(n), previous;
   std::optional<StageTerms> stage;
   double smoothing = std::max(options.startSmoothing, options.finalSmoothing);
@@ -144,7 +174,7 @@ EquilibriumSolution solveEquilibrium(const EquilibriumProblem& problem,
     const double t = (smoothing * h) * (smoothing * h);
     stage.emplace(problem, t, wallRatio);
     const bool last = smoothing <= options.finalSmoothing;
-    const bool fractional = last && options.fractionalWidth > 0.0;
+    const bool fractional = last && fractionalFinal;
     // [J/m^3] psi's change per voxel across a planar interface: the tension's sigma / t (the
     // derivative of the blurred step, 2 a G_1D(0)) and the buoyancy's.
     const double width = options.fractionalWidth * (problem.tension / t + buoyancyWeight) * h;

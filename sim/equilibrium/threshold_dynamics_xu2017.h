@@ -20,8 +20,9 @@
 //
 // (the wall term with a kernel of its own, t_w = r^2 t: wallKernelRatio below) until it holds its
 // volume (a weighted quantile, so the volume is exact). t is lowered from a
-// coarse start to its final value; at each t the iteration stops when no voxel changes. The method,
-// its accuracy against Young-Laplace and its cost: docs/methods/equilibrium.md.
+// coarse start to its final value; at each t the iteration stops when no voxel changes. From a
+// wetting angle of 40 deg the final stage thresholds to fractions of a voxel (volume_threshold.h).
+// The method, its accuracy against Young-Laplace and its cost: docs/methods/equilibrium.md.
 #pragma once
 
 #include <limits>
@@ -47,6 +48,12 @@ struct EquilibriumProblem {
   double wallArea = 0.0;
 };
 
+enum class FinalThreshold {
+  kByAngle,      // fractional from a wetting angle of 40 deg on, whole voxels below
+  kWholeVoxels,  // whole voxels at every angle
+  kFractional,   // fractions of a voxel at every angle
+};
+
 struct ThresholdDynamicsOptions {
   // [voxels] sqrt(t) / h at the end. The areas' error grows with sqrt(t) (a line energy at the
   // contact line), the pinning to the voxels with h / sqrt(t); docs/methods/equilibrium.md
@@ -54,34 +61,40 @@ struct ThresholdDynamicsOptions {
   double finalSmoothing = 1.5;
   double startSmoothing = 6.0;  // [voxels] sqrt(t) / h of the first stage; halved per stage
   int maxIterationsPerStage = 200;
-  // [voxels] > 0: the final stage thresholds to fractions of a voxel, u ramping from 1 to 0 over
-  // this many voxels of a planar interface's psi (volume_threshold.h), so that the contact line
-  // can move by less than a voxel (whole voxels pin it below a kernel of about 3 voxels). Not the
-  // default: it meets the zero-gravity lens at 18 deg within 0.2 points where whole voxels miss by
-  // 3.5, but reads thin aqueous pools up to 2.4 points low, and it needs ratios of its own (0.97 at
-  // 18 deg, 1.11 at 40 deg; wallKernelRatio is calibrated for whole voxels).
-  // docs/methods/equilibrium.md, "Fractional thresholding".
-  double fractionalWidth = 0.0;
+  // How the final stage thresholds: to whole voxels, or to fractions of a voxel, u ramping from 1
+  // to 0 over `fractionalWidth` voxels of a planar interface's psi (volume_threshold.h), so that
+  // the contact line can move by less than a voxel (whole voxels pin it below a kernel of about
+  // 3 voxels). By default the angle decides (fractionalFinalStage).
+  FinalThreshold finalThreshold = FinalThreshold::kByAngle;
+  double fractionalWidth = 1.0;  // [voxels]
   // The fractional stage ends when no voxel's u changes by more than this in an iteration.
   double fractionalTolerance = 1e-3;
   int maxFractionalIterations = 1500;
   // sqrt(t_wall / t): the wall term's kernel width over the interface's. 0 picks
-  // wallKernelRatio(theta); 1 is Xu, Wang & Wang 2017's single kernel.
+  // wallKernelRatio(theta, fractional); 1 is Xu, Wang & Wang 2017's single kernel.
   double wallKernelRatio = 0.0;
 };
 
-// [1] The wall term's kernel width over the interface term's, per contact angle. With one kernel
-// for both (ratio 1) the aqueous at 18 deg spreads along the wall: at a point of the contact line
-// the threshold keeps the oil only while the oil's wedge there exceeds pi (1 + cos theta) / 2,
-// so the line's local angle falls to pi (1 - cos theta) / 2 (4.4 deg for 18 deg) and a film of
-// the wetting phase runs ahead. A wider wall kernel raises that local angle; the ratio that makes
-// it Young's, cos theta / (1 - 2 theta / pi) (1.19 at 18 deg), overshoots, because the kernel's
-// line energy at the wall remains (Wang, Wang & Xu 2019, J. Comput. Phys. 392:291, choose a kernel
-// per interface pair to the same end). The ratio is therefore calibrated against the axisymmetric
-// Young-Laplace equilibrium of a 12 mm sphere at Bond 1.2: 1.025 at 18 deg, 1.20 at 40 deg, 1.57
-// at 90 deg, 1.0 at 10 deg and below, symmetric about 90 deg (docs/methods/equilibrium.md, "The
-// wall kernel", which also gives the checks it was not calibrated on).
-double wallKernelRatio(double contactAngle);
+// [1] The wall term's kernel width over the interface term's, per contact angle and final
+// threshold. With one kernel for both (ratio 1) the aqueous at 18 deg spreads along the wall: at a
+// point of the contact line the threshold keeps the oil only while the oil's wedge there exceeds
+// pi (1 + cos theta) / 2, so the line's local angle falls to pi (1 - cos theta) / 2 (4.4 deg for
+// 18 deg) and a film of the wetting phase runs ahead. A wider wall kernel raises that local angle;
+// the ratio that makes it Young's, cos theta / (1 - 2 theta / pi) (1.19 at 18 deg), overshoots,
+// because the kernel's line energy at the wall remains (Wang, Wang & Xu 2019, J. Comput. Phys.
+// 392:291, choose a kernel per interface pair to the same end). The ratio is therefore calibrated
+// against the axisymmetric Young-Laplace equilibrium of a 12 mm sphere at Bond 1.2, for each
+// final threshold: with whole voxels 1.025 at 18 deg, 1.20 at 40 deg; with fractions 0.97 and
+// 1.11; Young's pi / 2 at 90 deg; symmetric about 90 deg (docs/methods/equilibrium.md, "The wall
+// kernel" and "Fractional thresholding", which also give the checks it was not calibrated on).
+double wallKernelRatio(double contactAngle, bool fractional);
+
+// Whether the final stage thresholds to fractions of a voxel under FinalThreshold::kByAngle: from
+// a wetting angle (the smaller of theta and 180 deg - theta) of 40 deg on. There it reads pools of
+// every depth within 0.5 points at the draft voxel, and the lens without gravity too; below, it
+// reads thin pools up to 2.4 points low where whole voxels stay within 1
+// (docs/methods/equilibrium.md, "Fractional thresholding").
+bool fractionalFinalStage(double contactAngle);
 
 struct EquilibriumSolution {
   VoxelGrid grid;

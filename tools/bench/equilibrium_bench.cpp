@@ -7,15 +7,17 @@
 //
 //   sim_equilibrium_bench [--voxels 0.5,0.4,0.3] [--angles 18,40,90,140] [--fills 0.8,0.9]
 //                         [--smoothing 1.5] [--wall-ratio R] [--gravity 9.81] [--tension 0.04]
-//                         [--fractional VOXELS] [--stop DU] [--out DIR]
+//                         [--threshold auto|whole|fractional] [--stop DU] [--out DIR]
 //
 // --wall-ratio: the wall kernel's width over the interface kernel's (default: the calibrated
 // ratio per angle, wallKernelRatio; 1: one kernel for both). --gravity 0: the reference is the
-// zero-gravity lens. --fractional: the final stage's threshold ramp in voxels (0: whole voxels
-// in every stage; ThresholdDynamicsOptions::fractionalWidth); --stop: its end, the largest change
-// of a voxel's oil share in an iteration (fractionalTolerance). --tension [N/m]: the oil-aqueous
-// tension of the solver and the reference alike (what an effective tension below the true one would
-// move the coverage by, e.g. 0.032 for 0.8 sigma: docs/validation.md, "Weight against tension").
+// zero-gravity lens. --threshold: the final stage's, to whole voxels or to fractions of a voxel
+// (default auto: fractions from a wetting angle of 40 deg; ThresholdDynamicsOptions::
+// finalThreshold); the ratio follows it unless --wall-ratio is given. --stop: the fractional
+// stage's end, the largest change of a voxel's oil share in an iteration (fractionalTolerance).
+// --tension [N/m]: the oil-aqueous tension of the solver and the reference alike (what an effective
+// tension below the true one would move the coverage by, e.g. 0.032 for 0.8 sigma:
+// docs/validation.md, "Weight against tension").
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,6 +27,7 @@
 #include <fstream>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -64,6 +67,13 @@ double nonNegative(const char* text) {
   return v;
 }
 
+std::optional<FinalThreshold> thresholdNamed(const std::string& name) {
+  if (name == "auto") return FinalThreshold::kByAngle;
+  if (name == "whole") return FinalThreshold::kWholeVoxels;
+  if (name == "fractional") return FinalThreshold::kFractional;
+  return std::nullopt;
+}
+
 // [1] The share of the aqueous volume above the sphere's centre (z > 0, against gravity). A light
 // oil at fills from 0.6 up leaves no aqueous there except a film along the wall, which the
 // discrete energy makes nearly free at small angles (docs/methods/equilibrium.md).
@@ -81,9 +91,9 @@ double aqueousAboveCentre(const EquilibriumSolution& s) {
 
 int main(int argc, char** argv) {
   std::vector<double> voxels{0.5, 0.4, 0.3}, angles{18, 40, 90, 140}, fills{0.8, 0.9};
-  double smoothing = ThresholdDynamicsOptions{}.finalSmoothing;    // [voxels] final sqrt(t) / h
-  double wallRatio = ThresholdDynamicsOptions{}.wallKernelRatio;   // 0: calibrated per angle
-  double fractional = ThresholdDynamicsOptions{}.fractionalWidth;  // [voxels] 0: whole voxels
+  double smoothing = ThresholdDynamicsOptions{}.finalSmoothing;   // [voxels] final sqrt(t) / h
+  double wallRatio = ThresholdDynamicsOptions{}.wallKernelRatio;  // 0: calibrated per angle
+  FinalThreshold threshold = ThresholdDynamicsOptions{}.finalThreshold;
   double stop = ThresholdDynamicsOptions{}.fractionalTolerance;
   double g = 9.81;      // [m/s^2]
   double sigma = 0.04;  // [N/m]
@@ -101,8 +111,8 @@ int main(int argc, char** argv) {
       smoothing = numbers(argv[++k]).at(0);
     else if (a == "--wall-ratio" && value)
       wallRatio = numbers(argv[++k]).at(0);
-    else if (a == "--fractional" && value)
-      fractional = nonNegative(argv[++k]);
+    else if (a == "--threshold" && value && thresholdNamed(argv[k + 1]))
+      threshold = *thresholdNamed(argv[++k]);
     else if (a == "--stop" && value)
       stop = nonNegative(argv[++k]);
     else if (a == "--gravity" && value)
@@ -115,7 +125,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr,
                    "usage: sim_equilibrium_bench [--voxels MM,...] [--angles DEG,...] "
                    "[--fills F,...] [--smoothing VOXELS] [--wall-ratio R] [--gravity G] "
-                   "[--tension N/M] [--fractional VOXELS] [--stop DU] [--out DIR]\n");
+                   "[--tension N/M] [--threshold auto|whole|fractional] [--stop DU] [--out DIR]\n");
       return a == "--help" ? 0 : 2;
     }
   }
@@ -156,7 +166,7 @@ int main(int argc, char** argv) {
         ThresholdDynamicsOptions options;
         options.finalSmoothing = smoothing;
         options.wallKernelRatio = wallRatio;
-        options.fractionalWidth = fractional;
+        options.finalThreshold = threshold;
         options.fractionalTolerance = stop;
         const EquilibriumSolution s = solveEquilibrium(p, options);
         const WallOilReader reader(s, rad);
