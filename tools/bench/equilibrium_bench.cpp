@@ -28,8 +28,10 @@
 #include <limits>
 #include <numbers>
 #include <optional>
+#include <set>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include "sim/equilibrium/threshold_dynamics_xu2017.h"
@@ -111,9 +113,16 @@ int main(int argc, char** argv) {
       smoothing = numbers(argv[++k]).at(0);
     else if (a == "--wall-ratio" && value)
       wallRatio = numbers(argv[++k]).at(0);
-    else if (a == "--threshold" && value && thresholdNamed(argv[k + 1]))
-      threshold = *thresholdNamed(argv[++k]);
-    else if (a == "--stop" && value)
+    else if (a == "--threshold" && value) {
+      const std::optional<FinalThreshold> named = thresholdNamed(argv[++k]);
+      if (!named) {
+        std::fprintf(stderr,
+                     "sim_equilibrium_bench: --threshold %s: use auto, whole or fractional\n",
+                     argv[k]);
+        return 2;
+      }
+      threshold = *named;
+    } else if (a == "--stop" && value)
       stop = nonNegative(argv[++k]);
     else if (a == "--gravity" && value)
       g = nonNegative(argv[++k]);
@@ -122,7 +131,13 @@ int main(int argc, char** argv) {
     else if (a == "--out" && value)
       out = argv[++k];
     else {
-      std::fprintf(stderr,
+      static const std::set<std::string> kOptions{
+          "--voxels",  "--angles",    "--fills", "--smoothing", "--wall-ratio",
+          "--gravity", "--threshold", "--stop",  "--tension",   "--out"};
+      if (a != "--help")
+        std::fprintf(stderr, "sim_equilibrium_bench: %s '%s'\n",
+                     kOptions.count(a) ? "needs a value:" : "unknown option", a.c_str());
+      std::fprintf(a == "--help" ? stdout : stderr,
                    "usage: sim_equilibrium_bench [--voxels MM,...] [--angles DEG,...] "
                    "[--fills F,...] [--smoothing VOXELS] [--wall-ratio R] [--gravity G] "
                    "[--tension N/M] [--threshold auto|whole|fractional] [--stop DU] [--out DIR]\n");
@@ -133,8 +148,16 @@ int main(int argc, char** argv) {
   // Without gravity the reference is the shooting at a vanishing capillary constant, which meets
   // the spherical cap's closed form within 0.05 points (tests/sim/test_equilibrium.cpp).
   const double c = std::max((aqueous - oil) * g / sigma, 1e-6 / (R * R));
-  std::filesystem::create_directories(out);
+  std::error_code error;
+  std::filesystem::create_directories(out, error);
   std::ofstream csv(out / "equilibrium_bench.csv");
+  if (error || !csv) {
+    std::fprintf(stderr,
+                 "sim_equilibrium_bench: cannot write to '%s' (%s); give a writable folder with "
+                 "--out\n",
+                 out.string().c_str(), error ? error.message().c_str() : "cannot open the table");
+    return 1;
+  }
   csv << "voxel_mm,theta_deg,fill,coverage,young_laplace,error_points,iterations,seconds,"
          "aqueous_above_centre\n";
   std::printf(
