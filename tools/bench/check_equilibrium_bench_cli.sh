@@ -5,34 +5,19 @@
 # second.
 set -u
 bench="$1"
-fail() { echo "FAIL: $*"; exit 1; }
+source "$(dirname "$0")/cli_checks.sh"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work" || fail "no temporary folder"
 
-out=$("$bench" --threshold bogus 2>&1); rc=$?
-[ "$rc" -eq 2 ] || fail "--threshold bogus exited $rc, expected 2"
-grep -q "\-\-threshold bogus: use auto, whole or fractional" <<<"$out" || fail "no --threshold message: $out"
-
-out=$("$bench" --voxels 0.3,-1 2>&1); rc=$?
-[ "$rc" -eq 2 ] || fail "--voxels 0.3,-1 exited $rc, expected 2"
-grep -q "'-1' is not a positive number" <<<"$out" || fail "no --voxels message: $out"
-
-out=$("$bench" --gravity -9.81 2>&1); rc=$?
-[ "$rc" -eq 2 ] || fail "--gravity -9.81 exited $rc, expected 2"
-grep -q "'-9.81' is not a number >= 0" <<<"$out" || fail "no --gravity message: $out"
-
-out=$("$bench" --colour red 2>&1); rc=$?
-[ "$rc" -eq 2 ] || fail "--colour red exited $rc, expected 2"
-grep -q "unknown option '--colour'" <<<"$out" || fail "no unknown-option message: $out"
-
-out=$("$bench" --fills 2>&1); rc=$?
-[ "$rc" -eq 2 ] || fail "--fills without a value exited $rc, expected 2"
-grep -q "needs a value: '--fills'" <<<"$out" || fail "no missing-value message: $out"
-
-out=$("$bench" --out /proc/not-a-folder 2>&1); rc=$?
-[ "$rc" -eq 1 ] || fail "an unwritable --out exited $rc, expected 1"
-grep -q "cannot write to '/proc/not-a-folder'" <<<"$out" || fail "no folder message: $out"
+expects 2 "--threshold bogus: use auto, whole or fractional" --threshold bogus
+expects 2 "'-1' is not a positive number" --voxels 0.3,-1
+expects 2 "'-9.81' is not a number >= 0" --gravity -9.81
+expects 2 "--angles: 200 is not an angle in (0, 180) deg" --angles 30,200
+expects 2 "--fills: 1 is not a fill in (0, 1)" --fills 0.9,1
+expects 2 "unknown option '--colour'" --colour red
+expects 2 "needs a value: '--fills'" --fills
+expects 1 "cannot write to '/proc/not-a-folder'" --out /proc/not-a-folder
 grep -q "| voxel |" <<<"$out" && fail "a table started although the folder cannot be written"
 
 [ -z "$(ls -A "$work")" ] || fail "bad input left files behind: $(ls -A "$work")"

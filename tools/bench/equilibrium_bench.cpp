@@ -144,6 +144,18 @@ int main(int argc, char** argv) {
       return a == "--help" ? 0 : 2;
     }
   }
+  // The solver's own range (a contact line and an interface must exist), checked before any solve.
+  for (const double theta : angles)
+    if (!(theta < 180)) {
+      std::fprintf(stderr, "sim_equilibrium_bench: --angles: %g is not an angle in (0, 180) deg\n",
+                   theta);
+      return 2;
+    }
+  for (const double fill : fills)
+    if (!(fill < 1)) {
+      std::fprintf(stderr, "sim_equilibrium_bench: --fills: %g is not a fill in (0, 1)\n", fill);
+      return 2;
+    }
   constexpr double R = 12e-3, oil = 970, aqueous = 1004;
   // Without gravity the reference is the shooting at a vanishing capillary constant, which meets
   // the spherical cap's closed form within 0.05 points (tests/sim/test_equilibrium.cpp).
