@@ -2,18 +2,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 namespace sim::equilibrium {
+namespace {
 
-// O(n): a histogram of psi finds the voxels that straddle the quantile, and only those are
-// sorted.
-void selectLowest(const std::vector<double>& psi, const std::vector<std::size_t>& fluid,
-                  const std::vector<double>& f, double target, double tie, std::vector<double>& u) {
+// [lowest, highest] psi over the fluid voxels.
+std::pair<double, double> psiRange(const std::vector<double>& psi,
+                                   const std::vector<std::size_t>& fluid) {
   double lo = psi[fluid[0]], hi = lo;
   for (std::size_t v : fluid) {
     lo = std::min(lo, psi[v]);
     hi = std::max(hi, psi[v]);
   }
+  return {lo, hi};
+}
+
+double shareAt(double lambda, double psi, double width) {
+  return std::clamp(0.5 + (lambda - psi) / width, 0.0, 1.0);
+}
+
+}  // namespace
+
+// O(n): a histogram of psi finds the voxels that straddle the quantile, and only those are
+// sorted.
+void selectLowest(const std::vector<double>& psi, const std::vector<std::size_t>& fluid,
+                  const std::vector<double>& f, double target, double tie, std::vector<double>& u) {
+  const auto [lo, hi] = psiRange(psi, fluid);
   constexpr int kBins = 1 << 16;
   const double scale = hi > lo ? (kBins - 1) / (hi - lo) : 0.0;
   auto binOf = [&](std::size_t v) { return static_cast<int>((psi[v] - lo) * scale); };
@@ -48,25 +63,13 @@ void selectLowest(const std::vector<double>& psi, const std::vector<std::size_t>
     u[v] = psi[v] < cutPsi - tie ? 1.0 : (psi[v] <= cutPsi + tie ? share : 0.0);
 }
 
-namespace {
-
-double shareAt(double lambda, double psi, double width) {
-  return std::clamp(0.5 + (lambda - psi) / width, 0.0, 1.0);
-}
-
-}  // namespace
-
 void selectFractional(const std::vector<double>& psi, const std::vector<std::size_t>& fluid,
                       const std::vector<double>& f, double target, double width, double& lambda,
                       std::vector<double>& u) {
   // V(lambda) = sum f share is continuous, piecewise linear and non-decreasing: keep a bracket
   // [lo, hi] around the root, take Newton's step on the local slope when it stays inside, and
   // halve the bracket when it does not.
-  double lo = psi[fluid[0]], hi = lo;
-  for (std::size_t v : fluid) {
-    lo = std::min(lo, psi[v]);
-    hi = std::max(hi, psi[v]);
-  }
+  auto [lo, hi] = psiRange(psi, fluid);
   lo -= width;
   hi += width;
   if (!(lambda > lo && lambda < hi)) lambda = 0.5 * (lo + hi);
@@ -80,8 +83,9 @@ void selectFractional(const std::vector<double>& psi, const std::vector<std::siz
     }
     if (std::abs(volume - target) <= tolerance) break;
     (volume < target ? lo : hi) = lambda;
-    const double newton = slope > 0.0 ? lambda + (target - volume) / slope : lo - 1.0;
-    lambda = newton > lo && newton < hi ? newton : 0.5 * (lo + hi);
+    const double bisection = 0.5 * (lo + hi);
+    const double newton = slope > 0.0 ? lambda + (target - volume) / slope : bisection;
+    lambda = newton > lo && newton < hi ? newton : bisection;
     if (hi - lo <= 1e-15 * (std::abs(lo) + std::abs(hi))) break;
   }
   for (std::size_t v : fluid) u[v] = shareAt(lambda, psi[v], width);

@@ -2,8 +2,8 @@
 // 970 in aqueous 1004 kg/m^3, 40 mN/m, 1 g), each voxel spacing against the axisymmetric
 // Young-Laplace equilibrium, with iterations and wall time. Writes a markdown table to stdout and
 // equilibrium_bench.csv to --out. The last column, the aqueous above the centre, is the film
-// along the wall when the oil is light and fills more than about 0.6. A benchmark, not a test (not
-// registered with CTest).
+// along the wall when the oil is light and fills more than about 0.6. A benchmark, not a test: only
+// its command line is checked in the suite (check_equilibrium_bench_cli.sh).
 //
 //   sim_equilibrium_bench [--voxels 0.5,0.4,0.3] [--angles 18,40,90,140] [--fills 0.8,0.9]
 //                         [--smoothing 1.5] [--wall-ratio R] [--gravity 9.81] [--tension 0.04]
