@@ -65,10 +65,6 @@ struct StageTerms {
   double a = 0.0, aWall = 0.0;  // [N/m^2]
 };
 
-}  // namespace
-
-namespace {
-
 using CalibrationTable = std::array<std::array<double, 2>, 8>;
 
 // (theta through the wetting phase [deg], ratio): in a 12 mm sphere at Bond 1.2 with 0.3 mm

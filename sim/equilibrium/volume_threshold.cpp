@@ -77,9 +77,9 @@ void selectFractional(const std::vector<double>& psi, const std::vector<std::siz
   for (int pass = 0; pass < 200; ++pass) {
     double volume = 0.0, slope = 0.0;
     for (std::size_t v : fluid) {
-      const double s = 0.5 + (lambda - psi[v]) / width;
-      volume += f[v] * std::clamp(s, 0.0, 1.0);
-      if (s > 0.0 && s < 1.0) slope += f[v] / width;
+      const double share = shareAt(lambda, psi[v], width);
+      volume += f[v] * share;
+      if (share > 0.0 && share < 1.0) slope += f[v] / width;  // on the ramp
     }
     if (std::abs(volume - target) <= tolerance) break;
     (volume < target ? lo : hi) = lambda;
