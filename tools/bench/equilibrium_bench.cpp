@@ -25,13 +25,14 @@
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <numbers>
 #include <optional>
-#include <set>
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <utility>
 #include <vector>
 
 #include "sim/equilibrium/threshold_dynamics_xu2017.h"
@@ -100,49 +101,43 @@ int main(int argc, char** argv) {
   double g = 9.81;      // [m/s^2]
   double sigma = 0.04;  // [N/m]
   std::filesystem::path out = ".";
+  // Each option and what its value sets; the same list names the options that need a value.
+  const std::vector<std::pair<std::string, std::function<bool(const char*)>>> setters{
+      {"--voxels", [&](const char* v) { return voxels = numbers(v), true; }},
+      {"--angles", [&](const char* v) { return angles = numbers(v), true; }},
+      {"--fills", [&](const char* v) { return fills = numbers(v), true; }},
+      {"--smoothing", [&](const char* v) { return smoothing = numbers(v).at(0), true; }},
+      {"--wall-ratio", [&](const char* v) { return wallRatio = numbers(v).at(0), true; }},
+      {"--threshold",
+       [&](const char* v) {
+         const std::optional<FinalThreshold> named = thresholdNamed(v);
+         if (named)
+           threshold = *named;
+         else
+           std::fprintf(
+               stderr, "sim_equilibrium_bench: --threshold %s: use auto, whole or fractional\n", v);
+         return named.has_value();
+       }},
+      {"--stop", [&](const char* v) { return stop = nonNegative(v), true; }},
+      {"--gravity", [&](const char* v) { return g = nonNegative(v), true; }},
+      {"--tension", [&](const char* v) { return sigma = numbers(v).at(0), true; }},
+      {"--out", [&](const char* v) { return out = v, true; }}};
   for (int k = 1; k < argc; ++k) {
     const std::string a = argv[k];
-    const bool value = k + 1 < argc;
-    if (a == "--voxels" && value)
-      voxels = numbers(argv[++k]);
-    else if (a == "--angles" && value)
-      angles = numbers(argv[++k]);
-    else if (a == "--fills" && value)
-      fills = numbers(argv[++k]);
-    else if (a == "--smoothing" && value)
-      smoothing = numbers(argv[++k]).at(0);
-    else if (a == "--wall-ratio" && value)
-      wallRatio = numbers(argv[++k]).at(0);
-    else if (a == "--threshold" && value) {
-      const std::optional<FinalThreshold> named = thresholdNamed(argv[++k]);
-      if (!named) {
-        std::fprintf(stderr,
-                     "sim_equilibrium_bench: --threshold %s: use auto, whole or fractional\n",
-                     argv[k]);
-        return 2;
-      }
-      threshold = *named;
-    } else if (a == "--stop" && value)
-      stop = nonNegative(argv[++k]);
-    else if (a == "--gravity" && value)
-      g = nonNegative(argv[++k]);
-    else if (a == "--tension" && value)
-      sigma = numbers(argv[++k]).at(0);
-    else if (a == "--out" && value)
-      out = argv[++k];
-    else {
-      static const std::set<std::string> kOptions{
-          "--voxels",  "--angles",    "--fills", "--smoothing", "--wall-ratio",
-          "--gravity", "--threshold", "--stop",  "--tension",   "--out"};
-      if (a != "--help")
-        std::fprintf(stderr, "sim_equilibrium_bench: %s '%s'\n",
-                     kOptions.count(a) ? "needs a value:" : "unknown option", a.c_str());
-      std::fprintf(a == "--help" ? stdout : stderr,
-                   "usage: sim_equilibrium_bench [--voxels MM,...] [--angles DEG,...] "
-                   "[--fills F,...] [--smoothing VOXELS] [--wall-ratio R] [--gravity G] "
-                   "[--tension N/M] [--threshold auto|whole|fractional] [--stop DU] [--out DIR]\n");
-      return a == "--help" ? 0 : 2;
+    const auto option =
+        std::find_if(setters.begin(), setters.end(), [&](const auto& o) { return o.first == a; });
+    if (option != setters.end() && k + 1 < argc) {
+      if (!option->second(argv[++k])) return 2;
+      continue;
     }
+    if (a != "--help")
+      std::fprintf(stderr, "sim_equilibrium_bench: %s '%s'\n",
+                   option != setters.end() ? "needs a value:" : "unknown option", a.c_str());
+    std::fprintf(a == "--help" ? stdout : stderr,
+                 "usage: sim_equilibrium_bench [--voxels MM,...] [--angles DEG,...] "
+                 "[--fills F,...] [--smoothing VOXELS] [--wall-ratio R] [--gravity G] "
+                 "[--tension N/M] [--threshold auto|whole|fractional] [--stop DU] [--out DIR]\n");
+    return a == "--help" ? 0 : 2;
   }
   // The solver's own range (a contact line and an interface must exist), checked before any solve.
   for (const double theta : angles)
