@@ -115,14 +115,20 @@ Real capAngleOfFootprint(Real volume, Real sectionRadius, Real height) {
     const Real dz = height + radius * u;  // height above the centre
     return std::sqrt(std::max<Real>(0, radius * radius - dz * dz));
   };
-  Real lo = std::numbers::pi / 2, hi = std::numbers::pi;  // section(lo) >= r >= section(hi)
-  if (sectionRadius >= section(lo)) return 90;
+  // The widest section: caps flatter than its angle are lower than `height` near their rim and
+  // narrower there, so only the angles from it to 180 deg are a footprint's.
+  const Real degree = std::numbers::pi / 180;
+  const Real widest =
+      scanGoldenMinimum([&](Real theta) { return -section(theta); },
+                        {degree, std::numbers::pi, degree, degree, std::numbers::pi});
+  Real lo = widest, hi = std::numbers::pi;  // section(lo) >= r >= section(hi)
+  if (sectionRadius >= section(lo)) return lo / degree;
   if (sectionRadius <= section(hi)) return 180;
   for (int k = 0; k < 60; ++k) {
     const Real mid = 0.5 * (lo + hi);
     (section(mid) > sectionRadius ? lo : hi) = mid;
   }
-  return 0.5 * (lo + hi) * 180 / std::numbers::pi;
+  return 0.5 * (lo + hi) / degree;
 }
 
 Real capAngleOfCentroid(Real volume, Real centroidHeight) {

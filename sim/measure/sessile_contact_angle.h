@@ -41,14 +41,15 @@ struct WallPlane {
 Real capAngleOfVolume(const std::vector<Vec3>& points, const WallPlane& wall, const Vec3& axisPoint,
                       Real volume);
 
-// Angle [deg] through the droplet, in [90, 180], of the spherical cap of the given volume [m^3]
-// whose section at `height` [m] above the wall has radius `sectionRadius` [m]: the angle from the
-// droplet's footprint. Meant for non-wetting droplets, whose shape away from the wall hardly
-// depends on the angle (the volume's caps of 165 and 180 deg differ in height by 3 % of their
-// radius) but whose footprint does (at R0 = 12 d the first layer's radius is 4.97 d at 155 deg,
-// 3.88 d at 165, 3.15 d at 175). Over [90, 180] the section shrinks monotonically once `height` is
-// below the 90 deg cap's top; a radius wider than the 90 deg cap's reads 90, narrower than the
-// touching sphere's reads 180.
+// Angle [deg] through the droplet of the spherical cap of the given volume [m^3] whose section at
+// `height` [m] above the wall has radius `sectionRadius` [m]: the angle from the droplet's
+// footprint, i.e. where its contact line sits. Non-wetting droplets' shape away from the wall
+// hardly depends on the angle (the volume's caps of 165 and 180 deg differ in height by 3 % of
+// their radius) but their footprint does (at R0 = 12 d the first layer's radius is 4.97 d at
+// 155 deg, 3.88 d at 165, 3.15 d at 175); for wetting droplets the footprint is what a coverage
+// reading sees. From the widest section's angle (a few degrees: flatter caps sink below `height`
+// near their rim) to 180 deg the section shrinks monotonically; a radius wider than the widest
+// section reads that angle, narrower than the touching sphere's reads 180.
 Real capAngleOfFootprint(Real volume, Real sectionRadius, Real height);
 
 // Angle [deg] through the droplet, in (0, 180), of the spherical cap of the given volume [m^3]

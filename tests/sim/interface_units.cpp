@@ -404,15 +404,18 @@ TEST_CASE("The footprint angle inverts a cap's section radius at a height", "[un
   // Caps of R0 = 3 mm's hemisphere volume, the section at d / 2 with d = R0 / 12 (the first
   // fluid layer): the section radius of the cap of angle theta gives theta back.
   const Real r0 = 0.003, volume = 2.0 / 3.0 * std::numbers::pi * r0 * r0 * r0, y = r0 / 24;
-  for (const Real theta : {95.0, 120.0, 150.0, 165.0, 175.0}) {
+  for (const Real theta : {10.0, 18.0, 30.0, 60.0, 95.0, 120.0, 150.0, 165.0, 175.0}) {
     const Real u = std::cos(theta * std::numbers::pi / 180);
     const Real radius = std::cbrt(3 * volume / (std::numbers::pi * (2 + u) * (1 - u) * (1 - u)));
     const Real dz = y + radius * u;
     const Real section = std::sqrt(radius * radius - dz * dz);
     CHECK(capAngleOfFootprint(volume, section, y) == Approx(theta).margin(1e-6));
   }
-  CHECK(capAngleOfFootprint(volume, 2 * r0, y) == 90.0);  // wider than the hemisphere
-  CHECK(capAngleOfFootprint(volume, 0.0, y) == 180.0);    // narrower than the touching sphere
+  // Wider than every cap's section: the widest one's angle, below the smallest inverted above.
+  const Real widest = capAngleOfFootprint(volume, 10 * r0, y);
+  CHECK(widest < 10.0);
+  CHECK(widest > 0.0);
+  CHECK(capAngleOfFootprint(volume, 0.0, y) == 180.0);  // narrower than the touching sphere
   CHECK_THROWS_AS(capAngleOfFootprint(0.0, 1e-3, y), SimError);
 }
 
