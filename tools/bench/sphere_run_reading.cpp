@@ -4,6 +4,9 @@
 //  - the interface fitted as a sphere beyond 1.5, 2 and 3 spacings from the wall, and the angle
 //    at which that sphere meets the cavity through the aqueous (the lens's shape without gravity;
 //    under gravity the interface is no sphere and the angle is only indicative);
+//  - without gravity, the oil share of the two fluid layers next to the wall against the share
+//    the closed-form lens gives the same particles (where the contact line sits, read at the
+//    particles' own distance from the wall);
 //  - the coverage read below the spacing (sim/measure/wall_oil_extended.h) with the interface
 //    taken 1.25 to 4 spacings from the wall and extended to it at the contact angle.
 // The cavity's centre is the wall's surface layer's (frames' /static/wall), its radius given; the
@@ -24,6 +27,7 @@
 #include "sim/equilibrium/voxel_grid.h"
 #include "sim/measure/sessile_contact_angle.h"
 #include "sim/measure/wall_oil_extended.h"
+#include "tests/sim/interface_fixtures.h"
 #include "tests/sim/sphere_points.h"
 
 using sim::Real;
@@ -140,6 +144,38 @@ Real extendedCoverage(const Frame& f, const Cavity& c, Real d, Real angleDeg, Re
          static_cast<Real>(covered.size());
 }
 
+// Without gravity the oil at volume fraction v is the closed-form lens (tests/sim/
+// interface_fixtures.h, lensCoverage): the cavity inside a sphere of radius r whose centre lies c
+// along the oil's axis. Prints, per fluid layer next to the wall (the k-th spacing inside it), the
+// oil share of the run's particles there and of the same particles classified by that lens: where
+// the run's contact line sits against the lens's, read at the particles' own distance from the
+// wall (no reading below the spacing). Nothing when the oil is no lens at this angle and volume.
+void printLayerShares(const Frame& f, const Cavity& c, Real d, Real angleDeg) {
+  Vec3 axis = Vec3::Zero();
+  Real oil = 0;
+  for (std::size_t i = 0; i < f.x.size(); ++i)
+    if (f.isOil[i]) axis += f.x[i] - c.centre, ++oil;
+  const auto lens = sim::testing::lensCoverage(oil / static_cast<Real>(f.x.size()), 180 - angleDeg);
+  if (lens.radius > 100 || axis.norm() == 0) return;  // the flat limit: no lens
+  const Vec3 ballCentre = lens.distance * c.radius * axis.normalized();
+  const Real ballRadius = lens.radius * c.radius;
+  for (int layer = 1; layer <= 2; ++layer) {
+    Real count = 0, runOil = 0, lensOil = 0;
+    for (std::size_t i = 0; i < f.x.size(); ++i) {
+      const Vec3 x = f.x[i] - c.centre;
+      const Real depth = c.radius - x.norm();  // [m] from the wall
+      if (depth < (layer - 1) * d || depth >= layer * d) continue;
+      ++count;
+      runOil += f.isOil[i];
+      lensOil += (x - ballCentre).norm() < ballRadius ? 1 : 0;
+    }
+    std::printf(
+        "fluid layer %d next to the wall (%.0f particles): oil share %.4f, the %.0f deg "
+        "lens's %.4f (lens wall coverage %.4f)\n",
+        layer, count, runOil / count, angleDeg, lensOil / count, lens.coverage);
+  }
+}
+
 int usage(int code) {
   std::fprintf(
       code == 0 ? stdout : stderr,
@@ -229,6 +265,7 @@ int main(int argc, char** argv) {
           "interface fitted as a sphere beyond %.1f spacings of the wall: %.1f deg "
           "through the aqueous\n",
           margin, fittedAngle(points, frame, cavity, margin * d));
+    printLayerShares(frame, cavity, d, angle);
     std::printf("coverage read below the spacing, interface taken at");
     for (const Real offset : {1.25, 2.0, 2.5, 3.0, 4.0})
       std::printf(" %.2f d: %.4f%s", offset, extendedCoverage(frame, cavity, d, angle, offset),
