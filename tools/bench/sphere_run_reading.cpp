@@ -73,13 +73,26 @@ Cavity readCavity(const protocols::FrameReader& reader, Real radius) {
   return c;
 }
 
+// [m] The oil's centroid relative to the cavity's centre (zero without oil).
+Vec3 oilCentroid(const Frame& f, const Cavity& c) {
+  Vec3 sum = Vec3::Zero();
+  Real count = 0;
+  for (std::size_t i = 0; i < f.x.size(); ++i)
+    if (f.isOil[i]) sum += f.x[i] - c.centre, ++count;
+  return count > 0 ? Vec3(sum / count) : Vec3::Zero();
+}
+
 // Midpoints of oil-aqueous pairs closer than 1.5 d (a hash grid of cell 1.5 d), relative to the
 // cavity's centre.
 std::vector<Vec3> interfaceMidpoints(const Frame& f, const Cavity& c, Real d) {
   const Real cell = 1.5 * d;
+  // One key per cell (21 bits per axis: a million cells across, far beyond any eye scene), so a
+  // cell's list holds only its own particles and no pair is found twice.
   auto key = [cell](const Vec3& p) {
-    const auto k = [cell](Real v) { return static_cast<std::int64_t>(std::floor(v / cell)); };
-    return (k(p.x()) * 73856093) ^ (k(p.y()) * 19349663) ^ (k(p.z()) * 83492791);
+    const auto k = [cell](Real v) {
+      return static_cast<std::int64_t>(std::floor(v / cell)) + (std::int64_t(1) << 20);
+    };
+    return (k(p.x()) << 42) | (k(p.y()) << 21) | k(p.z());
   };
   std::unordered_map<std::int64_t, std::vector<std::size_t>> aqueousCells;
   for (std::size_t i = 0; i < f.x.size(); ++i)
@@ -108,11 +121,7 @@ Real fittedAngle(const std::vector<Vec3>& all, const Frame& f, const Cavity& c, 
     if (p.norm() < c.radius - margin) points.push_back(p);
   if (points.size() < 8) return std::nan("");
   const sim::SphereFit s = sim::fitSphereGeometric(points, sim::fitSphere(points));
-  Vec3 oilCentre = Vec3::Zero();
-  Real oil = 0;
-  for (std::size_t i = 0; i < f.x.size(); ++i)
-    if (f.isOil[i]) oilCentre += f.x[i] - c.centre, ++oil;
-  oilCentre /= oil;
+  const Vec3 oilCentre = oilCentroid(f, c);
   // The outward normals of the cavity and of the fitted sphere meet at cos(beta) = (R^2 + r^2 -
   // c^2) / (2 R r); through the oil the angle is 180 deg - beta when the oil is inside the fitted
   // sphere, beta when outside; through the aqueous it is the supplement.
@@ -151,10 +160,8 @@ Real extendedCoverage(const Frame& f, const Cavity& c, Real d, Real angleDeg, Re
 // the run's contact line sits against the lens's, read at the particles' own distance from the
 // wall (no reading below the spacing). Nothing when the oil is no lens at this angle and volume.
 void printLayerShares(const Frame& f, const Cavity& c, Real d, Real angleDeg) {
-  Vec3 axis = Vec3::Zero();
-  Real oil = 0;
-  for (std::size_t i = 0; i < f.x.size(); ++i)
-    if (f.isOil[i]) axis += f.x[i] - c.centre, ++oil;
+  const Vec3 axis = oilCentroid(f, c);
+  const Real oil = static_cast<Real>(std::count(f.isOil.begin(), f.isOil.end(), 1));
   const auto lens = sim::testing::lensCoverage(oil / static_cast<Real>(f.x.size()), 180 - angleDeg);
   if (lens.radius > 100 || axis.norm() == 0) return;  // the flat limit: no lens
   const Vec3 ballCentre = lens.distance * c.radius * axis.normalized();
@@ -260,11 +267,14 @@ int main(int argc, char** argv) {
         path.c_str(), index, count, reader.frames()[index].time, frame.x.size(),
         cavity.radius * 1e3, d * 1e3);
     const std::vector<Vec3> points = interfaceMidpoints(frame, cavity, d);
-    for (const Real margin : {1.5, 2.0, 3.0})
-      std::printf(
-          "interface fitted as a sphere beyond %.1f spacings of the wall: %.1f deg "
-          "through the aqueous\n",
-          margin, fittedAngle(points, frame, cavity, margin * d));
+    for (const Real margin : {1.5, 2.0, 3.0}) {
+      const Real fitted = fittedAngle(points, frame, cavity, margin * d);
+      std::printf("interface fitted as a sphere beyond %.1f spacings of the wall: ", margin);
+      if (std::isnan(fitted))
+        std::printf("fewer than 8 interface points there\n");
+      else
+        std::printf("%.1f deg through the aqueous\n", fitted);
+    }
     printLayerShares(frame, cavity, d, angle);
     std::printf("coverage read below the spacing, interface taken at");
     for (const Real offset : {1.25, 2.0, 2.5, 3.0, 4.0})
