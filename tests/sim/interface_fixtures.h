@@ -354,6 +354,20 @@ inline LensShape lensCoverage(Real v, Real thetaOilDeg) {
 // within h counts as not covered); plus the "dry" share (no fluid within h) and the contact
 // angle of the interface fitted as a sphere (points more than 2 d inside the wall; 0 if the fit
 // fails).
+// [deg] The angle through the oil at which an interface fitted as the sphere `f` meets a cavity of
+// radius `rs` about the origin, the oil's centroid at `oilCentre` [m]. The outward normals of the
+// cavity and of the fitted sphere meet at cos beta = (Rs^2 + r^2 - c^2) / (2 Rs r). The oil's
+// interior angle is 180 deg minus the angle between its region's outward normals: theta =
+// acos(-cos beta) when the oil is inside the fitted sphere (a bulging lens), acos(cos beta) when
+// it is outside (a concave interface).
+inline Real cavityAngleThroughOil(const SphereFit& f, Real rs, const Vec3& oilCentre) {
+  const Real c = f.centre.norm(), r = f.radius;
+  const Real cosBeta = (rs * rs + r * r - c * c) / (2 * rs * r);
+  const bool oilInside = (oilCentre - f.centre).norm() < r;
+  return std::acos(std::clamp(oilInside ? -cosBeta : cosBeta, Real(-1), Real(1))) * 180 /
+         std::numbers::pi;
+}
+
 struct CavityState {
   Real coverage = 0;         // [1] nearest fluid is oil
   Real shepardCoverage = 0;  // [1] phi >= 0.5
@@ -393,16 +407,7 @@ inline CavityState measureCavity(const CavityScene& scene, Real rs) {
   const Real inner = rs - 2 * w.particleSpacing();
   std::erase_if(points, [inner](const Vec3& x) { return x.norm() > inner; });
   if (points.size() >= 8) {
-    const SphereFit f = fitSphere(points);
-    // Outward normals of the cavity and of the fitted sphere meet at cos beta = (Rs^2 + r^2 -
-    // c^2) / (2 Rs r). The oil's interior angle is 180 deg minus the angle between its region's
-    // outward normals: theta = acos(-cos beta) when the oil is inside the fitted sphere (a
-    // bulging lens), acos(cos beta) when it is outside (a concave interface).
-    const Real c = f.centre.norm(), r = f.radius;
-    const Real cosBeta = (rs * rs + r * r - c * c) / (2 * rs * r);
-    const bool oilInside = (centreOfMaterial(w, scene.oil) - f.centre).norm() < r;
-    out.angle = std::acos(std::clamp(oilInside ? -cosBeta : cosBeta, Real(-1), Real(1))) * 180 /
-                std::numbers::pi;
+    out.angle = cavityAngleThroughOil(fitSphere(points), rs, centreOfMaterial(w, scene.oil));
   }
   return out;
 }

@@ -12,9 +12,8 @@
 #include <vector>
 
 #include "sim/equilibrium/threshold_dynamics_xu2017.h"
-#include "sim/equilibrium/voxel_grid.h"
 #include "sim/measure/wall_oil_extended.h"
-#include "sphere_points.h"
+#include "sphere_wall_reading.h"
 #include "young_laplace_sphere.h"
 
 using namespace sim;
@@ -60,8 +59,6 @@ Lattice latticeWith(const testref::SphereMeniscus& m, double shift) {
   return l;
 }
 
-using testref::sphereNormals;
-
 // The particles read at the wall point itself: the Shepard colour of the lattice within `support`
 // (cubic spline), oil when at least one half; what a reading of the particles next to the wall
 // sees.
@@ -81,24 +78,12 @@ double readAtWall(const Lattice& l, const std::vector<Vec3>& wall, double suppor
   return covered / static_cast<double>(wall.size());
 }
 
-double share(const std::vector<std::uint8_t>& oil) {
-  double sum = 0.0;
-  for (std::uint8_t o : oil) sum += o;
-  return sum / static_cast<double>(oil.size());
-}
-
 }  // namespace
 
 TEST_CASE("Coverage read below the spacing matches the Young-Laplace contact line",
           "[unit][interface]") {
   const double c = (kAqueous - kOil) * kG / kSigma;
-  const std::vector<Vec3> normals = sphereNormals(20000);
-  std::vector<Vec3> wall;
-  for (const Vec3& n : normals) wall.push_back(kR * n);
-  const auto grid =
-      equilibrium::gridAround(Vec3::Constant(-kR), Vec3::Constant(kR), 0.5 * kSpacing, 2);
-  const std::vector<double> fluid =
-      equilibrium::fluidFractionsFromDistance(grid, [](const Vec3& x) { return x.norm() - kR; });
+  const testref::SphereWallReading reading(kR, kSpacing);
   // The reader's settings (docs/methods/interface.md, "Coverage below the spacing"): support 1.5
   // spacings; offset 1.25 spacings, the offset whose mean over alignments came closest to the
   // Young-Laplace line over these nine cases (1, 1.25, 1.5 and 2 spacings compared there; 2
@@ -118,13 +103,13 @@ TEST_CASE("Coverage read below the spacing matches the Young-Laplace contact lin
       double sum = 0.0, atWallSum = 0.0;
       for (const double shift : {0.0, 0.25, 0.5}) {
         const Lattice lattice = latticeWith(m, shift);
-        const double extended = share(wallOilByExtendedInterface(
-            grid, fluid, lattice.x, lattice.isOil, wall, normals, options));
+        const double extended = reading.coverage(lattice.x, lattice.isOil, options);
         INFO("fill " << fill << ", theta " << theta << " deg, shift " << shift << ": exact "
                      << m.upperWetFraction << ", extended " << extended);
         CHECK(std::abs(extended - m.upperWetFraction) <= 0.03);
         sum += extended;
-        if (theta == 18.0) atWallSum += readAtWall(lattice, wall, options.supportRadius);
+        if (theta == 18.0)
+          atWallSum += readAtWall(lattice, reading.wallPoints(), options.supportRadius);
       }
       const double mean = sum / 3.0;
       INFO("fill " << fill << ", theta " << theta << " deg: exact " << m.upperWetFraction

@@ -42,18 +42,16 @@
 
 #include "sim/effects/interfacial_tension_hu_adams2006.h"
 #include "sim/effects/wall_adhesion_young.h"
-#include "sim/equilibrium/voxel_grid.h"
 #include "sim/fluid/density.h"
 #include "sim/measure/droplet_pressure_jump.h"
 #include "sim/measure/sessile_contact_angle.h"
 #include "sim/measure/wall_nearest_material.h"
-#include "sim/measure/wall_oil_extended.h"
 #include "tests/sim/interface_fixtures.h"
 #include "tests/sim/interface_meniscus.h"
 #include "tests/sim/interface_oscillation.h"
 #include "tests/sim/interface_ridge.h"
 #include "tests/sim/interface_sessile.h"
-#include "tests/sim/sphere_points.h"
+#include "tests/sim/sphere_wall_reading.h"
 #include "tools/bench/bench_options.h"
 
 using namespace sim;
@@ -330,25 +328,16 @@ int wedgeStatic(Real thetaDeg, Real jitter) {
 void printExtendedCoverage(const World& w, const testing::CavityScene& scene, Real rs,
                            Real thetaOil) {
   const Real d = w.particleSpacing();
-  const auto grid = equilibrium::gridAround(Vec3::Constant(-rs), Vec3::Constant(rs), 0.5 * d, 2);
-  const auto fluid =
-      equilibrium::fluidFractionsFromDistance(grid, [rs](const Vec3& y) { return y.norm() - rs; });
+  const testref::SphereWallReading reading(rs, d);
   std::vector<std::uint8_t> isOil(w.particles.size());
   for (Index i = 0; i < w.particles.size(); ++i) isOil[i] = w.particles.material[i] == scene.oil;
-  const std::vector<Vec3> normals = testref::sphereNormals(20000);
-  std::vector<Vec3> wall;
-  for (const Vec3& n : normals) wall.push_back(rs * n);
   std::printf("coverage read below the spacing, interface taken at");
   for (const Real offset : {1.25, 2.0, 2.5, 3.0, 4.0}) {
     ExtendedWallReadingOptions o;
     o.supportRadius = 1.5 * d;
     o.offset = offset * d;
     o.contactAngle = (180 - thetaOil) * std::numbers::pi / 180;
-    const auto covered =
-        wallOilByExtendedInterface(grid, fluid, w.particles.x, isOil, wall, normals, o);
-    Real share = 0;
-    for (const std::uint8_t c : covered) share += c;
-    std::printf(" %.2f d: %.4f%s", offset, share / static_cast<Real>(covered.size()),
+    std::printf(" %.2f d: %.4f%s", offset, reading.coverage(w.particles.x, isOil, o),
                 offset < 4 ? "," : "\n");
   }
 }

@@ -24,11 +24,10 @@
 #include <vector>
 
 #include "protocols/io/frame_reader.h"
-#include "sim/equilibrium/voxel_grid.h"
 #include "sim/measure/sessile_contact_angle.h"
 #include "sim/measure/wall_oil_extended.h"
 #include "tests/sim/interface_fixtures.h"
-#include "tests/sim/sphere_points.h"
+#include "tests/sim/sphere_wall_reading.h"
 
 using sim::Real;
 using sim::Vec3;
@@ -121,36 +120,24 @@ Real fittedAngle(const std::vector<Vec3>& all, const Frame& f, const Cavity& c, 
     if (p.norm() < c.radius - margin) points.push_back(p);
   if (points.size() < 8) return std::nan("");
   const sim::SphereFit s = sim::fitSphereGeometric(points, sim::fitSphere(points));
-  const Vec3 oilCentre = oilCentroid(f, c);
-  // The outward normals of the cavity and of the fitted sphere meet at cos(beta) = (R^2 + r^2 -
-  // c^2) / (2 R r); through the oil the angle is 180 deg - beta when the oil is inside the fitted
-  // sphere, beta when outside; through the aqueous it is the supplement.
-  const Real R = c.radius, r = s.radius, dist = s.centre.norm();
-  const Real cosBeta = std::clamp((R * R + r * r - dist * dist) / (2 * R * r), Real(-1), Real(1));
-  const bool oilInside = (oilCentre - s.centre).norm() < r;
-  const Real throughOil = std::acos(oilInside ? -cosBeta : cosBeta) * 180 / std::numbers::pi;
-  return 180 - throughOil;
+  // Through the aqueous: the supplement of the angle through the oil.
+  return 180 - sim::testing::cavityAngleThroughOil(s, c.radius, oilCentroid(f, c));
 }
 
-Real extendedCoverage(const Frame& f, const Cavity& c, Real d, Real angleDeg, Real offset) {
-  namespace eq = sim::equilibrium;
-  const Real R = c.radius;
-  const eq::VoxelGrid grid = eq::gridAround(Vec3::Constant(-R), Vec3::Constant(R), 0.5 * d, 2);
-  const std::vector<double> fluid =
-      eq::fluidFractionsFromDistance(grid, [R](const Vec3& y) { return y.norm() - R; });
+// The coverage read below the spacing with the interface taken 1.25 to 4 spacings from the wall.
+void printExtendedCoverage(const Frame& f, const Cavity& c, Real d, Real angleDeg) {
+  const testref::SphereWallReading reading(c.radius, d);
   std::vector<Vec3> x;
   for (const Vec3& p : f.x) x.push_back(p - c.centre);
-  const std::vector<Vec3> normals = testref::sphereNormals(20000);
-  std::vector<Vec3> wall;
-  for (const Vec3& n : normals) wall.push_back(R * n);
-  sim::ExtendedWallReadingOptions o;
-  o.supportRadius = 1.5 * d;
-  o.offset = offset * d;
-  o.contactAngle = angleDeg * std::numbers::pi / 180;
-  const std::vector<std::uint8_t> covered =
-      sim::wallOilByExtendedInterface(grid, fluid, x, f.isOil, wall, normals, o);
-  return static_cast<Real>(std::count(covered.begin(), covered.end(), 1)) /
-         static_cast<Real>(covered.size());
+  std::printf("coverage read below the spacing, interface taken at");
+  for (const Real offset : {1.25, 2.0, 2.5, 3.0, 4.0}) {
+    sim::ExtendedWallReadingOptions o;
+    o.supportRadius = 1.5 * d;
+    o.offset = offset * d;
+    o.contactAngle = angleDeg * std::numbers::pi / 180;
+    std::printf(" %.2f d: %.4f%s", offset, reading.coverage(x, f.isOil, o),
+                offset < 4 ? "," : "\n");
+  }
 }
 
 // Without gravity the oil at volume fraction v is the closed-form lens (tests/sim/
@@ -276,10 +263,7 @@ int main(int argc, char** argv) {
         std::printf("%.1f deg through the aqueous\n", fitted);
     }
     printLayerShares(frame, cavity, d, angle);
-    std::printf("coverage read below the spacing, interface taken at");
-    for (const Real offset : {1.25, 2.0, 2.5, 3.0, 4.0})
-      std::printf(" %.2f d: %.4f%s", offset, extendedCoverage(frame, cavity, d, angle, offset),
-                  offset < 4 ? "," : "\n");
+    printExtendedCoverage(frame, cavity, d, angle);
   } catch (const std::exception& error) {
     const std::string message = error.what();  // the reader's own messages name the file
     std::fprintf(stderr, "sphere_run_reading: %s%s\n",
