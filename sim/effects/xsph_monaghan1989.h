@@ -38,7 +38,7 @@ class XsphMonaghan1989 final : public Effect {
     const Kernel& kernel = world.kernel;
     const Real scale = strength_ / context.dt;
     const Index n = static_cast<Index>(p.size());
-    const std::vector<Real>& cachedW = world.fluidKernelValues();
+    const std::vector<PairValue>& cachedW = world.fluidKernelValues();
     const bool cached = cachedW.size() == nf.indices.size();
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
@@ -47,13 +47,14 @@ class XsphMonaghan1989 final : public Effect {
       for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
         const Index j = nf.indices[k];
         if (p.material[j] != p.material[i]) continue;
-        a += pairTerm(p, i, j, cached ? cachedW[k] : kernel.W(p.x[i] - p.x[j]));
+        a += pairTerm(p, i, j,
+                      cached ? Real(cachedW[k]) : cachedPrecision(kernel.W(p.x[i] - p.x[j])));
       }
       p.a[i] += scale * a;
     }
   }
-  // One pair's term of the sum (before the factor eps/dt); w = W(x_i - x_j), usually the value the
-  // neighbour pass cached (same arithmetic as Kernel::W, so the result is the same to the bit).
+  // One pair's term of the sum (before the factor eps/dt); w = W(x_i - x_j) as the pair cache holds
+  // it (sim/neighbors/pair_precision.h), cached or evaluated, so the result is the same to the bit.
   static Vec3 pairTerm(const DynamicParticles& p, Index i, Index j, Real w) {
     return (2.0 * p.mass[j] / (p.density[i] + p.density[j]) * w) * (p.v[j] - p.v[i]);
   }

@@ -24,30 +24,31 @@ void kernelSums(const World& world, std::vector<Real>& out, Weight weight, Combi
   const Real w0 = kernel.W0();
   const Index n = static_cast<Index>(world.particles.size());
   out.resize(n);
-  // The neighbour pass caches W per pair with the same arithmetic as kernel.W(x_i - x_j), so the
-  // cached sums are bit-identical; without a cache (lists built without a kernel) evaluate W.
-  const std::vector<Real>& wf = world.fluidKernelValues();
-  const std::vector<Real>& ww = world.wallKernelValues();
+  // The neighbour pass caches W per pair with the same arithmetic as kernel.W(x_i - x_j), in single
+  // precision; without a cache (lists built without a kernel) evaluate W and round it the same
+  // way (sim/neighbors/pair_precision.h), so the sums are bit-identical.
+  const std::vector<PairValue>& wf = world.fluidKernelValues();
+  const std::vector<PairValue>& ww = world.wallKernelValues();
   if (wf.size() == nf.indices.size() && ww.size() == nw.indices.size() &&
       (!wf.empty() || nf.indices.empty())) {
-    const Real* wfd = wf.data();
-    const Real* wwd = ww.data();
+    const PairValue* wfd = wf.data();
+    const PairValue* wwd = ww.data();
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       Real fluid = weight(i) * w0;
       for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k)
-        fluid += weight(nf.indices[k]) * wfd[k];
+        fluid += weight(nf.indices[k]) * Real(wfd[k]);
       Real wall = 0;
       for (Index k = nw.offsets[i]; k < nw.offsets[i + 1]; ++k)
-        wall += walls.volume[nw.indices[k]] * wwd[k];
+        wall += walls.volume[nw.indices[k]] * Real(wwd[k]);
       out[i] = combine(i, fluid, wall);
     }
     return;
   }
   neighborSums(
       world, [&](Index i) { return weight(i) * w0; },
-      [&](Index, Index j, const Vec3& xij) { return weight(j) * kernel.W(xij); },
-      [&](Index, const Vec3& xib) { return kernel.W(xib); },
+      [&](Index, Index j, const Vec3& xij) { return weight(j) * cachedPrecision(kernel.W(xij)); },
+      [&](Index, const Vec3& xib) { return cachedPrecision(kernel.W(xib)); },
       [&](Index i, Real fluid, Real wall) { out[i] = combine(i, fluid, wall); });
 }
 

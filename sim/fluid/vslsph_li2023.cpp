@@ -79,13 +79,14 @@ void VslsphLi2023::computeDensities(World& world) {
   auto& p = world.particles;
   const Kernel& kernel = world.kernel;
   const Real w0 = kernel.W0();
-  const std::vector<Real>& fluidW = world.fluidKernelValues();
-  const std::vector<Real>& wallWs = world.wallKernelValues();
+  const std::vector<PairValue>& fluidW = world.fluidKernelValues();
+  const std::vector<PairValue>& wallWs = world.wallKernelValues();
   const bool cached = world.parameters().cachePairKernels;
   // Walls carry the fixed support h (scale 1); their volume sum over particle i's rest volume
   // counts them as neighbours of i's own kind. A pair of particles both at h (the bulk: s = 1
   // exactly, since h_i is clamped to f_min h = h) reads the search's cached W, which is the
-  // average's value bit for bit.
+  // average's value rounded to the cache's precision (sim/neighbors/pair_precision.h); without
+  // the cache the average is rounded the same way, so the state is the same bit for bit.
   neighborSums(
       world,
       [&](Index i) {
@@ -94,10 +95,12 @@ void VslsphLi2023::computeDensities(World& world) {
       },
       [&](Index i, Index j, const Vec3& xij, Index k) {
         const Real si = scale_[i], sj = scale_[j];
-        return cached && si == 1.0 && sj == 1.0 ? fluidW[k] : averageW(kernel, xij.norm(), si, sj);
+        if (si != 1.0 || sj != 1.0) return averageW(kernel, xij.norm(), si, sj);
+        return cached ? Real(fluidW[k]) : cachedPrecision(averageW(kernel, xij.norm(), si, sj));
       },
       [&](Index i, const Vec3& xib, Index k) {
-        return cached && scale_[i] == 1.0 ? wallWs[k] : wallW(kernel, xib.norm(), scale_[i]);
+        if (scale_[i] != 1.0) return wallW(kernel, xib.norm(), scale_[i]);
+        return cached ? Real(wallWs[k]) : cachedPrecision(wallW(kernel, xib.norm(), scale_[i]));
       },
       [&](Index i, Real fluid, Real wall) {
         const Real delta = fluid + wall / world.restVolumeOf(i);
@@ -131,8 +134,8 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
   const Real h = kernel.supportRadius();
   const Real alphaC = params_.artificialViscosity * params_.speedOfSound;
   const auto& pressure = *pressure_;
-  const std::vector<Vec3>& fluidGrad = world.fluidGradients();
-  const std::vector<Vec3>& wallGrad = world.wallGradients();
+  const std::vector<PairGradient>& fluidGrad = world.fluidGradients();
+  const std::vector<PairGradient>& wallGrad = world.wallGradients();
   const bool cached = world.parameters().cachePairKernels;
   const Real si = scale_[i], pi = pressure[i];
   Vec3 a = Vec3::Zero();
@@ -140,10 +143,11 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
     const Index j = nf.indices[k];
     const Vec3 xij = p.x[i] - p.x[j];
     const Real r = xij.norm();
-    // Both at h: the cached gradient is the average's, bit for bit (see computeDensities).
-    const Vec3 gradW = cached && si == 1.0 && scale_[j] == 1.0
-                           ? fluidGrad[k]
-                           : averageGradW(kernel, xij, r, si, scale_[j]);
+    // Both at h: the cached gradient is the average's at the cache's precision (computeDensities).
+    const bool bulk = si == 1.0 && scale_[j] == 1.0;
+    const Vec3 gradW = !bulk    ? averageGradW(kernel, xij, r, si, scale_[j])
+                       : cached ? Vec3(fluidGrad[k].cast<Real>())
+                                : cachedPrecision(averageGradW(kernel, xij, r, si, scale_[j]));
     // Eq. 17 over m_i: V_i V_j (p_i + p_j) / m_i = (p_i + p_j) / (rho_i delta_j).
     Real term = (pi + pressure[j]) / (p.density[i] * numberDensity_[j]);
     const Real vx = (p.v[i] - p.v[j]).dot(xij);
@@ -155,7 +159,9 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
     a -= term * gradW;
   }
   const Vec3 g = wallVolumeSum(world, i, Vec3(Vec3::Zero()), [&](const Vec3& xib, Index k) -> Vec3 {
-    return cached && si == 1.0 ? wallGrad[k] : wallGradW(kernel, xib, xib.norm(), si);
+    if (si != 1.0) return wallGradW(kernel, xib, xib.norm(), si);
+    return cached ? Vec3(wallGrad[k].cast<Real>())
+                  : cachedPrecision(wallGradW(kernel, xib, xib.norm(), si));
   });
   // Walls have no pressure of their own (p_b = 0 in eq. 17), so a wall pair carries p_i once:
   // Akinci et al. 2012's wall force, as in WCSPH. The mirrored p_b = p_i doubles it; on the

@@ -171,16 +171,19 @@ struct StencilRow {
 
 // Kernel gradient and value of each pair of query point xi with the sorted points in `slot`, one
 // square root and one kernel branch per pair; K is the kernel itself, so the choice of kernel is
-// made once per list, not per pair. Same values as Kernel::gradW and Kernel::W.
+// made once per list, not per pair. Kernel::gradW's and Kernel::W's arithmetic, stored in the
+// pair cache's single precision (pair_precision.h).
 template <class K>
 void pairKernels(const K& k, Real gradientCutoff, const Vec3& xi, const Vec3* sortedX,
-                 const Index* slot, std::size_t count, Vec3* grad, Real* values) {
+                 const Index* slot, std::size_t count, PairGradient* grad, PairValue* values) {
   for (std::size_t a = 0; a < count; ++a) {
     const Vec3 xij = xi - sortedX[slot[a]];
     const Real r = xij.norm();
-    Real dwdr;
-    k.evaluate(r, values[a], dwdr);
-    grad[a] = r <= gradientCutoff ? Vec3::Zero().eval() : (xij * (dwdr / r)).eval();
+    Real w, dwdr;
+    k.evaluate(r, w, dwdr);
+    values[a] = static_cast<PairValue>(w);
+    grad[a] = r <= gradientCutoff ? PairGradient::Zero().eval()
+                                  : (xij * (dwdr / r)).cast<PairGradient::Scalar>().eval();
   }
 }
 
@@ -188,8 +191,8 @@ void pairKernels(const K& k, Real gradientCutoff, const Vec3& xi, const Vec3* so
 
 void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbins,
                                const CellBins& pbins, bool skipSelf, const Kernel* kernel,
-                               NeighborList& out, std::vector<Vec3>& grad,
-                               std::vector<Real>& values, const Real* qR2) {
+                               NeighborList& out, std::vector<PairGradient>& grad,
+                               std::vector<PairValue>& values, const Real* qR2) {
   const std::size_t n = qx.size();
   const Real r2 = radius_ * radius_;
   out.offsets.resize(n + 1);

@@ -10,7 +10,7 @@
 // contiguous block of query points and appends the accepted candidates branch-free to its own
 // reusable buffer; once the blocks' offsets are known, each thread writes its block's point indices
 // into place and, when a kernel is given, computes the per-pair kernel gradients and values
-// straight into the final lists (36 of a pair's 40 bytes are never copied). The result does not
+// straight into the final lists (16 of a pair's 20 bytes are never copied). The result does not
 // depend on the thread count (each point's neighbours come in stencil order, inside a cell in index
 // order). Static wall particles are binned once. Dynamic particle data are periodically reordered
 // by the Z-order (Morton) index of their cell (zOrder()), which keeps neighbours close in memory.
@@ -41,6 +41,7 @@
 #include "sim/core/error.h"
 #include "sim/core/types.h"
 #include "sim/kernels/kernel.h"
+#include "sim/neighbors/pair_precision.h"
 
 namespace sim {
 
@@ -110,13 +111,13 @@ class NeighborSearch {
   const NeighborList& dynamicDynamic() const { return dd_; }
   const NeighborList& dynamicStatic() const { return ds_; }
   const NeighborList& staticStatic() const { return ss_; }
-  // [1/m^4] filled by update(x, kernel) only
-  const std::vector<Vec3>& dynamicDynamicGradients() const { return ddGrad_; }
-  const std::vector<Vec3>& dynamicStaticGradients() const { return dsGrad_; }
+  // [1/m^4] filled by update(x, kernel) only; single precision (pair_precision.h)
+  const std::vector<PairGradient>& dynamicDynamicGradients() const { return ddGrad_; }
+  const std::vector<PairGradient>& dynamicStaticGradients() const { return dsGrad_; }
   // [1/m^3] kernel values W(x_i - x_j), same alignment; filled by update(x, kernel), emptied by
   // update(x). They let density sums skip a square root and a kernel evaluation per pair.
-  const std::vector<Real>& dynamicDynamicKernelValues() const { return ddW_; }
-  const std::vector<Real>& dynamicStaticKernelValues() const { return dsW_; }
+  const std::vector<PairValue>& dynamicDynamicKernelValues() const { return ddW_; }
+  const std::vector<PairValue>& dynamicStaticKernelValues() const { return dsW_; }
 
   // [s] wall time the last update spent on the per-pair kernel gradients and values (part of
   // update()'s time; the rest is the search proper: binning, candidate scan, list placement).
@@ -141,8 +142,9 @@ class NeighborSearch {
   // is emptied. `qR2` non-null: per-query squared radii (variable support), with pbins.sortedR2
   // the points' ones when that is filled (else the fixed radius for the points).
   void buildList(const std::vector<Vec3>& qx, const CellBins& qbins, const CellBins& pbins,
-                 bool skipSelf, const Kernel* kernel, NeighborList& out, std::vector<Vec3>& grad,
-                 std::vector<Real>& values, const Real* qR2 = nullptr);
+                 bool skipSelf, const Kernel* kernel, NeighborList& out,
+                 std::vector<PairGradient>& grad, std::vector<PairValue>& values,
+                 const Real* qR2 = nullptr);
   void updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel,
                   const std::vector<Real>* supportRadii = nullptr);
 
@@ -167,8 +169,8 @@ class NeighborSearch {
   CellBins staticBins_, dynamicBins_;
   std::vector<Vec3> staticX_;
   NeighborList dd_, ds_, ss_;
-  std::vector<Vec3> ddGrad_, dsGrad_, noGrad_;
-  std::vector<Real> ddW_, dsW_, noW_;
+  std::vector<PairGradient> ddGrad_, dsGrad_, noGrad_;
+  std::vector<PairValue> ddW_, dsW_, noW_;
   std::vector<ThreadBuffer> threadBuffers_;
   std::vector<Index> counts_;
   std::vector<Real> qR2_;  // [m^2] max(h, h_i)^2 per dynamic point (variable support only)

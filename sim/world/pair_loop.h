@@ -2,9 +2,10 @@
 // gradW(x_i - x_j) and (when the lambda asks for it) the pair's slot in the list, in list order.
 // Every solver and effect that sums over pairs with kernel gradients goes through it, so the
 // per-pair cache is read in one place (sim/neighbors/neighbor_search.h). The gradient is the one
-// the neighbour search stored, or, when the world keeps no pair cache
-// (WorldParameters::cachePairKernels = false), Kernel::gradW evaluated here: the same value bit
-// for bit, so a run does not depend on the choice. The lambda inlines: the loop is the
+// the neighbour search stored (single precision, widened here), or, when the world keeps no pair
+// cache (WorldParameters::cachePairKernels = false), Kernel::gradW evaluated here and rounded as
+// the cache rounds it (sim/neighbors/pair_precision.h): the same value bit for bit, so a run does
+// not depend on the choice. The lambda inlines: the loop is the
 // hand-written one (docs/benchmarks.md, Engine).
 //
 //   const PairLoop fluid = fluidPairs(world), walls = wallPairs(world);
@@ -22,7 +23,7 @@ class PairLoop {
  public:
   // Pairs (i, j) of `list`, i a point of `queryX`, j a point of `pointX`; `gradients` aligned
   // with the list, or empty to evaluate `kernel` per pair.
-  PairLoop(const NeighborList& list, const std::vector<Vec3>& gradients,
+  PairLoop(const NeighborList& list, const std::vector<PairGradient>& gradients,
            const std::vector<Vec3>& queryX, const std::vector<Vec3>& pointX, const Kernel& kernel)
       : offsets_(list.offsets.data()),
         indices_(list.indices.data()),
@@ -36,19 +37,21 @@ class PairLoop {
   template <class F>
   void forEach(Index i, F&& f) const {
     if (gradients_ != nullptr) {
-      for (Index k = offsets_[i]; k < offsets_[i + 1]; ++k) call(f, indices_[k], gradients_[k], k);
+      for (Index k = offsets_[i]; k < offsets_[i + 1]; ++k)
+        call(f, indices_[k], gradients_[k].cast<Real>(), k);
       return;
     }
     const Vec3 xi = queryX_[i];
     for (Index k = offsets_[i]; k < offsets_[i + 1]; ++k) {
       const Index j = indices_[k];
-      call(f, j, kernel_->gradW(xi - pointX_[j]), k);
+      call(f, j, cachedPrecision(kernel_->gradW(xi - pointX_[j])), k);
     }
   }
   // gradW of the pair (i, j) in list slot k (for loops that visit the pairs in another order,
   // e.g. a wall particle's fluid neighbours).
   Vec3 gradient(Index k, Index i, Index j) const {
-    return gradients_ != nullptr ? gradients_[k] : kernel_->gradW(queryX_[i] - pointX_[j]);
+    return gradients_ != nullptr ? Vec3(gradients_[k].cast<Real>())
+                                 : cachedPrecision(kernel_->gradW(queryX_[i] - pointX_[j]));
   }
 
  private:
@@ -62,7 +65,7 @@ class PairLoop {
 
   const Index* offsets_;
   const Index* indices_;
-  const Vec3* gradients_;  // null: no cache, evaluate the kernel
+  const PairGradient* gradients_;  // null: no cache, evaluate the kernel
   const Vec3* queryX_;
   const Vec3* pointX_;
   const Kernel* kernel_;

@@ -90,13 +90,19 @@ class World {
   // Kernel gradients gradW(x_i - x_j) aligned with the neighbour lists: entry k belongs to the
   // pair (i, indices[k]). Computed once per neighbour update, they save the iterative solvers a
   // square root and a division per pair and iteration (positions do not change during a solve).
-  const std::vector<Vec3>& fluidGradients() const { return search_->dynamicDynamicGradients(); }
-  const std::vector<Vec3>& wallGradients() const { return search_->dynamicStaticGradients(); }
+  const std::vector<PairGradient>& fluidGradients() const {
+    return search_->dynamicDynamicGradients();
+  }
+  const std::vector<PairGradient>& wallGradients() const {
+    return search_->dynamicStaticGradients();
+  }
   // Kernel values W(x_i - x_j), same alignment (density sums; empty if no kernel pass ran).
-  const std::vector<Real>& fluidKernelValues() const {
+  const std::vector<PairValue>& fluidKernelValues() const {
     return search_->dynamicDynamicKernelValues();
   }
-  const std::vector<Real>& wallKernelValues() const { return search_->dynamicStaticKernelValues(); }
+  const std::vector<PairValue>& wallKernelValues() const {
+    return search_->dynamicStaticKernelValues();
+  }
   const NeighborSearch& search() const { return *search_; }
 
  private:

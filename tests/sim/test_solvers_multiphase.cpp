@@ -375,8 +375,8 @@ TEST_CASE("INDSPH near-neutral buoyancy: 970 rises and 1060 sinks against the ne
 namespace {
 
 // Mean height change [m] of a 2 cm cube of blobDensity in an 8 x 6 x 8 cm closed box of water
-// after `duration`, d = 5 mm, INDSPH, layered walls.
-Real closedBoxBlobShift(Real blobDensity, Real duration) {
+// after `duration`, d = 5 mm, INDSPH, layered walls; `seed` draws the start's jitter.
+Real closedBoxBlobShift(Real blobDensity, Real duration, unsigned seed) {
   const Real d = kBlobSpacing, width = 0.08, height = 0.06, blob = 0.02;  // [m]
   TankSpec spec;
   spec.innerMax = Vec3(width, height, width);
@@ -394,7 +394,7 @@ Real closedBoxBlobShift(Real blobDensity, Real duration) {
       blobMax = blobMin + Vec3::Constant(blob);
   // std::mt19937's sequence is fixed by the standard (unlike the distributions'): the same
   // jitter on every platform.
-  std::mt19937 random(7);
+  std::mt19937 random(seed);
   const auto jitter = [&] {
     return 0.2 * d * (2.0 * static_cast<Real>(random()) / 4294967295.0 - 1.0);
   };
@@ -437,17 +437,30 @@ Real impliedAddedMass(Real rho, Real shift, Real t) {
 TEST_CASE("INDSPH near-neutral buoyancy in a closed filled box without the hydrostatic background",
           "[validation][solvers][indsph][buoyancy]") {
   const Real d = kBlobSpacing, t = 0.3;
-  const Real neutral = closedBoxBlobShift(1000.0, t), light = closedBoxBlobShift(970.0, t),
-             heavy = closedBoxBlobShift(1060.0, t);
+  // Three starts, and the median shift of each blob. Some starts go through an episode in which
+  // the box's particles rearrange and carry the blobs along: of the jitter seeds 7-11, seeds 8-10
+  // agree to 0.001 d (neutral -0.004 to +0.001 d, 970 +1.22 to +1.25 d, 1060 -1.95 to -2.00 d),
+  // while seed 11 moved the neutral blob +0.47 d and held the 1060 blob at -0.25 d, and seed 7
+  // did the same with the pair cache in single precision (+0.40 d, -0.50 d) after passing in
+  // double (+0.06 d, -1.53 d): which start has the episode changes with the last bits of the
+  // kernel values. A median of three starts keeps one such episode out of the verdict, while a
+  // blob pinned by the pressure (the failure this test is for) is pinned in every start.
+  const auto medianShift = [&](Real density) {
+    std::vector<Real> shifts;
+    for (const unsigned seed : {7u, 8u, 9u}) shifts.push_back(closedBoxBlobShift(density, t, seed));
+    std::sort(shifts.begin(), shifts.end());
+    return shifts[1];
+  };
+  const Real neutral = medianShift(1000.0), light = medianShift(970.0), heavy = medianShift(1060.0);
   const Real cLight = impliedAddedMass(970.0, light, t),
              cHeavy = impliedAddedMass(1060.0, heavy, t);
   std::printf(
-      "closed box, background removed, relaxed start, 0.3 s: neutral %+.3f d, 970 %+.3f d "
-      "(C_m %.2f), 1060 %+.3f d (C_m %.2f)\n",
+      "closed box, background removed, relaxed start, 0.3 s, median of three starts: neutral "
+      "%+.3f d, 970 %+.3f d (C_m %.2f), 1060 %+.3f d (C_m %.2f)\n",
       neutral / d, light / d, cLight, heavy / d, cHeavy);
   // A blob of the water's density feels no net force (g (1 - 1000/1000) = 0): it stays put.
-  // Bound 0.1 d over 0.3 s, a tenth of the 970 blob's expected shift (measured, driver, seeds
-  // 7-9: within 0.017 d).
+  // Bound 0.1 d over 0.3 s, a tenth of the 970 blob's expected shift (the median of seeds 7-9
+  // reads +0.001 d).
   CHECK(std::abs(neutral) < 0.1 * d);
   // Direction: Archimedes, up for the lighter, down for the heavier blob.
   CHECK(light > 0);
@@ -459,7 +472,7 @@ TEST_CASE("INDSPH near-neutral buoyancy in a closed filled box without the hydro
   // "piston" estimate H / h - 1 = 2 (the water in the blob's own footprint column, 6 cm tall,
   // moving with the 2 cm blob) plus half again for the flow turning at the lid and floor and for
   // drag; an SPH yield pins the blob far above it (full hydrostatic background: implied C_m ~ 17).
-  // Measured in the driver (seeds 7-9): 1.2 (970) and 1.6 (1060; more drag, it is faster).
+  // Measured (median of seeds 7-9): 1.2 (970) and 1.7 (1060; more drag, it is faster).
   CHECK(cLight > 0.5);
   CHECK(cLight < 3.0);
   CHECK(cHeavy > 0.5);

@@ -405,7 +405,11 @@ TEST_CASE("implicit viscosity conserves linear momentum to round-off without wal
 
 // The operator acts on v_ij . x_ij only, so it vanishes for uniform translation and for rigid
 // rotation v = omega x x (then v_ij . x_ij = (omega x x_ij) . x_ij = 0): both fields must come
-// out of the solve unchanged (relative 1e-12, round-off), and angular momentum with them.
+// out of the solve unchanged, and angular momentum with them. Translation: relative 1e-12
+// (round-off). Rotation: the stage forms v_ij . x_ij as v_ij . gradW_ij (gradW is parallel to
+// x_ij), and the pair cache holds gradW in single precision (sim/neighbors/pair_precision.h), so
+// its direction is x_ij's to 2^-24 = 6e-8 per component: bound 1e-7 (measured 1.2e-8; 1.5e-15
+// with a double-precision cache). Angular momentum stays at round-off: the pair terms cancel.
 TEST_CASE("implicit viscosity leaves translation and rigid rotation unchanged",
           "[unit][viscosity]") {
   const Vec3 velocity(0.03, -0.02, 0.01), omega(1.0, 2.0, -0.5);  // [m/s], [1/s]
@@ -429,7 +433,7 @@ TEST_CASE("implicit viscosity leaves translation and rigid rotation unchanged",
       "rigid motion: translation changed by %.1e, rotation by %.1e, angular momentum by "
       "%.1e (relative)\n",
       worst, worstRotation, (angularMomentum(w) - l0).norm() / l0.norm());
-  CHECK(worstRotation < 1e-12);
+  CHECK(worstRotation < 1e-7);
   CHECK((angularMomentum(w) - l0).norm() < 1e-12 * l0.norm());
 }
 
