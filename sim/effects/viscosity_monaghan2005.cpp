@@ -60,7 +60,7 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
   const Index n = static_cast<Index>(p.size());
   // XSPH reads the kernel values the neighbour pass cached (no square root per pair).
   const std::vector<PairValue>& cachedW = world.fluidKernelValues();
-  const bool cached = cachedW.size() == nf.indices.size();
+  const PairValue* cache = cachedW.size() == nf.indices.size() ? cachedW.data() : nullptr;
   // The viscosity per particle once instead of a material lookup per pair.
   viscosity_.resize(p.size());
 #pragma omp parallel for schedule(static)
@@ -80,8 +80,8 @@ void ViscosityMonaghan2005::applyImpl(World& world, const StepContext& context) 
       // XSPH's rule (xsph_monaghan1989.h): same material only, which also leaves out solids.
       if constexpr (kSmoothing)
         if (p.material[j] == p.material[i])
-          smooth += XsphMonaghan1989::pairTerm(
-              p, i, j, cached ? Real(cachedW[k]) : cachedPrecision(kernel.W(xij)));
+          smooth += XsphMonaghan1989::pairTerm(p, i, j,
+                                               pairValue(cache, k, [&] { return kernel.W(xij); }));
       const Real muj = viscosity_[j];
       // An elastic neighbour is a wall moving with the solid's velocity: the fluid's viscosity.
       const Real mu = muj < 0 ? mui : 0.5 * (mui + muj);

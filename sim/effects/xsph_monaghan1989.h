@@ -39,7 +39,7 @@ class XsphMonaghan1989 final : public Effect {
     const Real scale = strength_ / context.dt;
     const Index n = static_cast<Index>(p.size());
     const std::vector<PairValue>& cachedW = world.fluidKernelValues();
-    const bool cached = cachedW.size() == nf.indices.size();
+    const PairValue* cache = cachedW.size() == nf.indices.size() ? cachedW.data() : nullptr;
 #pragma omp parallel for schedule(static)
     for (Index i = 0; i < n; ++i) {
       if (!world.materials.isFluid(p.material[i])) continue;
@@ -47,8 +47,7 @@ class XsphMonaghan1989 final : public Effect {
       for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
         const Index j = nf.indices[k];
         if (p.material[j] != p.material[i]) continue;
-        a += pairTerm(p, i, j,
-                      cached ? Real(cachedW[k]) : cachedPrecision(kernel.W(p.x[i] - p.x[j])));
+        a += pairTerm(p, i, j, pairValue(cache, k, [&] { return kernel.W(p.x[i] - p.x[j]); }));
       }
       p.a[i] += scale * a;
     }

@@ -79,9 +79,9 @@ void VslsphLi2023::computeDensities(World& world) {
   auto& p = world.particles;
   const Kernel& kernel = world.kernel;
   const Real w0 = kernel.W0();
-  const std::vector<PairValue>& fluidW = world.fluidKernelValues();
-  const std::vector<PairValue>& wallWs = world.wallKernelValues();
   const bool cached = world.parameters().cachePairKernels;
+  const PairValue* fluidW = cached ? world.fluidKernelValues().data() : nullptr;
+  const PairValue* wallWs = cached ? world.wallKernelValues().data() : nullptr;
   // Walls carry the fixed support h (scale 1); their volume sum over particle i's rest volume
   // counts them as neighbours of i's own kind. A pair of particles both at h (the bulk: s = 1
   // exactly, since h_i is clamped to f_min h = h) reads the search's cached W, which is the
@@ -95,12 +95,12 @@ void VslsphLi2023::computeDensities(World& world) {
       },
       [&](Index i, Index j, const Vec3& xij, Index k) {
         const Real si = scale_[i], sj = scale_[j];
-        if (si != 1.0 || sj != 1.0) return averageW(kernel, xij.norm(), si, sj);
-        return cached ? Real(fluidW[k]) : cachedPrecision(averageW(kernel, xij.norm(), si, sj));
+        const auto average = [&] { return averageW(kernel, xij.norm(), si, sj); };
+        return si == 1.0 && sj == 1.0 ? pairValue(fluidW, k, average) : average();
       },
       [&](Index i, const Vec3& xib, Index k) {
-        if (scale_[i] != 1.0) return wallW(kernel, xib.norm(), scale_[i]);
-        return cached ? Real(wallWs[k]) : cachedPrecision(wallW(kernel, xib.norm(), scale_[i]));
+        const auto wall = [&] { return wallW(kernel, xib.norm(), scale_[i]); };
+        return scale_[i] == 1.0 ? pairValue(wallWs, k, wall) : wall();
       },
       [&](Index i, Real fluid, Real wall) {
         const Real delta = fluid + wall / world.restVolumeOf(i);
@@ -134,9 +134,9 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
   const Real h = kernel.supportRadius();
   const Real alphaC = params_.artificialViscosity * params_.speedOfSound;
   const auto& pressure = *pressure_;
-  const std::vector<PairGradient>& fluidGrad = world.fluidGradients();
-  const std::vector<PairGradient>& wallGrad = world.wallGradients();
   const bool cached = world.parameters().cachePairKernels;
+  const PairGradient* fluidGrad = cached ? world.fluidGradients().data() : nullptr;
+  const PairGradient* wallGrad = cached ? world.wallGradients().data() : nullptr;
   const Real si = scale_[i], pi = pressure[i];
   Vec3 a = Vec3::Zero();
   for (Index k = nf.offsets[i]; k < nf.offsets[i + 1]; ++k) {
@@ -144,10 +144,9 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
     const Vec3 xij = p.x[i] - p.x[j];
     const Real r = xij.norm();
     // Both at h: the cached gradient is the average's at the cache's precision (computeDensities).
-    const bool bulk = si == 1.0 && scale_[j] == 1.0;
-    const Vec3 gradW = !bulk    ? averageGradW(kernel, xij, r, si, scale_[j])
-                       : cached ? Vec3(fluidGrad[k].cast<Real>())
-                                : cachedPrecision(averageGradW(kernel, xij, r, si, scale_[j]));
+    const auto average = [&] { return averageGradW(kernel, xij, r, si, scale_[j]); };
+    const Vec3 gradW =
+        si == 1.0 && scale_[j] == 1.0 ? pairGradient(fluidGrad, k, average) : average();
     // Eq. 17 over m_i: V_i V_j (p_i + p_j) / m_i = (p_i + p_j) / (rho_i delta_j).
     Real term = (pi + pressure[j]) / (p.density[i] * numberDensity_[j]);
     const Real vx = (p.v[i] - p.v[j]).dot(xij);
@@ -159,9 +158,8 @@ Vec3 VslsphLi2023::pressureAcceleration(const World& world, Index i) const {
     a -= term * gradW;
   }
   const Vec3 g = wallVolumeSum(world, i, Vec3(Vec3::Zero()), [&](const Vec3& xib, Index k) -> Vec3 {
-    if (si != 1.0) return wallGradW(kernel, xib, xib.norm(), si);
-    return cached ? Vec3(wallGrad[k].cast<Real>())
-                  : cachedPrecision(wallGradW(kernel, xib, xib.norm(), si));
+    const auto wall = [&] { return wallGradW(kernel, xib, xib.norm(), si); };
+    return si == 1.0 ? pairGradient(wallGrad, k, wall) : wall();
   });
   // Walls have no pressure of their own (p_b = 0 in eq. 17), so a wall pair carries p_i once:
   // Akinci et al. 2012's wall force, as in WCSPH. The mirrored p_b = p_i doubles it; on the

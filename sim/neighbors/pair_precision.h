@@ -7,8 +7,9 @@
 // keeps gradW(x_j - x_i) = -gradW(x_i - x_j) exact, so pair forces still cancel.
 //
 // A stage that evaluates the kernel itself instead of reading the cache (the pair-cache-free mode,
-// WorldParameters::cachePairKernels = false) rounds the same way through these two functions, so a
-// run gives the same state bit for bit with or without the cache.
+// WorldParameters::cachePairKernels = false) rounds the same way through cachedPrecision, so a run
+// gives the same state bit for bit with or without the cache; pairValue and pairGradient make that
+// choice for one pair.
 #pragma once
 
 #include <Eigen/Core>
@@ -32,6 +33,18 @@ inline Real cachedPrecision(Real w) {
 // A kernel gradient as the pair cache holds it.
 inline Vec3 cachedPrecision(const Vec3& g) {
   return {cachedPrecision(g.x()), cachedPrecision(g.y()), cachedPrecision(g.z())};
+}
+
+// The kernel value of the pair in list slot k: the cached one when `cache` is not null, else
+// evaluate() rounded as the cache rounds it (evaluated only then).
+template <class Evaluate>
+Real pairValue(const PairValue* cache, Index k, Evaluate evaluate) {
+  return cache != nullptr ? Real(cache[k]) : cachedPrecision(Real(evaluate()));
+}
+// Same for the pair's kernel gradient.
+template <class Evaluate>
+Vec3 pairGradient(const PairGradient* cache, Index k, Evaluate evaluate) {
+  return cache != nullptr ? Vec3(cache[k].cast<Real>()) : cachedPrecision(Vec3(evaluate()));
 }
 
 }  // namespace sim

@@ -50,8 +50,7 @@ class PairLoop {
   // gradW of the pair (i, j) in list slot k (for loops that visit the pairs in another order,
   // e.g. a wall particle's fluid neighbours).
   Vec3 gradient(Index k, Index i, Index j) const {
-    return gradients_ != nullptr ? Vec3(gradients_[k].cast<Real>())
-                                 : cachedPrecision(kernel_->gradW(queryX_[i] - pointX_[j]));
+    return pairGradient(gradients_, k, [&] { return kernel_->gradW(queryX_[i] - pointX_[j]); });
   }
 
  private:

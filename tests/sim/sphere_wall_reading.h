@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstdint>
+#include <cstdio>
 #include <vector>
 
 #include "sim/equilibrium/voxel_grid.h"
@@ -24,7 +25,8 @@ class SphereWallReading {
                                            sim::Vec3::Constant(radius), 0.5 * spacing, 2)),
         fluid_(sim::equilibrium::fluidFractionsFromDistance(
             grid_, [radius](const sim::Vec3& y) { return y.norm() - radius; })),
-        normals_(sphereNormals(kWallPoints)) {
+        normals_(sphereNormals(kWallPoints)),
+        spacing_(spacing) {
     for (const sim::Vec3& n : normals_) wall_.push_back(radius * n);
   }
 
@@ -45,12 +47,29 @@ class SphereWallReading {
     return sum / static_cast<double>(wall_.size());
   }
 
+  // Prints the coverage with the interface taken 1.25, 2, 2.5, 3 and 4 spacings from the wall
+  // and extended to it at `contactAngle` [rad] through the aqueous (colour support 1.5 spacings):
+  // the hand-run benches' line for a run in a spherical cavity.
+  void printCoverageByOffset(const std::vector<sim::Vec3>& particles,
+                             const std::vector<std::uint8_t>& isOil, double contactAngle) const {
+    std::printf("coverage read below the spacing, interface taken at");
+    for (const double offset : {1.25, 2.0, 2.5, 3.0, 4.0}) {
+      sim::ExtendedWallReadingOptions o;
+      o.supportRadius = 1.5 * spacing_;
+      o.offset = offset * spacing_;
+      o.contactAngle = contactAngle;
+      std::printf(" %.2f d: %.4f%s", offset, coverage(particles, isOil, o),
+                  offset < 4 ? "," : "\n");
+    }
+  }
+
   const std::vector<sim::Vec3>& wallPoints() const { return wall_; }  // [m]
 
  private:
   sim::equilibrium::VoxelGrid grid_;
   std::vector<double> fluid_;
   std::vector<sim::Vec3> normals_, wall_;
+  double spacing_;  // [m] the particles'
 };
 
 }  // namespace testref

@@ -331,15 +331,7 @@ void printExtendedCoverage(const World& w, const testing::CavityScene& scene, Re
   const testref::SphereWallReading reading(rs, d);
   std::vector<std::uint8_t> isOil(w.particles.size());
   for (Index i = 0; i < w.particles.size(); ++i) isOil[i] = w.particles.material[i] == scene.oil;
-  std::printf("coverage read below the spacing, interface taken at");
-  for (const Real offset : {1.25, 2.0, 2.5, 3.0, 4.0}) {
-    ExtendedWallReadingOptions o;
-    o.supportRadius = 1.5 * d;
-    o.offset = offset * d;
-    o.contactAngle = (180 - thetaOil) * std::numbers::pi / 180;
-    std::printf(" %.2f d: %.4f%s", offset, reading.coverage(w.particles.x, isOil, o),
-                offset < 4 ? "," : "\n");
-  }
+  reading.printCoverageByOffset(w.particles.x, isOil, (180 - thetaOil) * std::numbers::pi / 180);
 }
 
 // Validation 5 (tests/sim/interface_cavity.cpp runs the same scenes for the CI): the oil starts

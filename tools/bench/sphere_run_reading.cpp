@@ -129,15 +129,7 @@ void printExtendedCoverage(const Frame& f, const Cavity& c, Real d, Real angleDe
   const testref::SphereWallReading reading(c.radius, d);
   std::vector<Vec3> x;
   for (const Vec3& p : f.x) x.push_back(p - c.centre);
-  std::printf("coverage read below the spacing, interface taken at");
-  for (const Real offset : {1.25, 2.0, 2.5, 3.0, 4.0}) {
-    sim::ExtendedWallReadingOptions o;
-    o.supportRadius = 1.5 * d;
-    o.offset = offset * d;
-    o.contactAngle = angleDeg * std::numbers::pi / 180;
-    std::printf(" %.2f d: %.4f%s", offset, reading.coverage(x, f.isOil, o),
-                offset < 4 ? "," : "\n");
-  }
+  reading.printCoverageByOffset(x, f.isOil, angleDeg * std::numbers::pi / 180);
 }
 
 // Without gravity the oil at volume fraction v is the closed-form lens (tests/sim/
