@@ -230,8 +230,7 @@ void replaceWallsOverSclera(Scenario& s, TissueContext& c) {
     if (!wr.fat.empty()) addBonyOrbit(c, sclera, wr);
   }
   sim::WallParticles& walls = s.world->walls;
-  walls.fields.permute(wr.keep);
-  walls.fields.resize(wr.keep.size());
+  walls.fields.select(wr.keep);
   for (std::size_t b = 0; b < wr.added.size(); ++b)
     walls.add(wr.added[b], wr.addedNormal[b], wr.addedTag[b]);
   addWallNotes(s, sclera, wr);

@@ -6,6 +6,7 @@
 // rule 5).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -63,9 +64,6 @@ class FieldBase {
   virtual int components() const = 0;
   virtual std::size_t size() const = 0;
   virtual void resize(std::size_t n) = 0;
-  // Reorders so that new element k is old element newToOld[k]. Reuses a scratch buffer:
-  // no allocation after the first call at a given size.
-  virtual void permute(const std::vector<Index>& newToOld) = 0;
   // Flat scalar storage: size() * components() scalars of kind().
   virtual const void* rawData() const = 0;
   virtual void* rawData() = 0;
@@ -75,19 +73,19 @@ class FieldBase {
   FieldInfo info_;
 };
 
+// The most scalars of one field element (a Mat3).
+inline constexpr std::size_t kMaxFieldComponents = 9;
+
 template <class T>
 class Field final : public FieldBase {
+  static_assert(FieldTraits<T>::components <= kMaxFieldComponents);
+
  public:
   using FieldBase::FieldBase;
   ScalarKind kind() const override { return FieldTraits<T>::kind; }
   int components() const override { return FieldTraits<T>::components; }
   std::size_t size() const override { return values.size(); }
   void resize(std::size_t n) override { values.resize(n, T(zero())); }
-  void permute(const std::vector<Index>& newToOld) override {
-    scratch_.resize(values.size());
-    for (std::size_t k = 0; k < newToOld.size(); ++k) scratch_[k] = values[newToOld[k]];
-    values.swap(scratch_);
-  }
   const void* rawData() const override { return values.data(); }
   void* rawData() override { return values.data(); }
   const std::type_info& elementType() const override { return typeid(T); }
@@ -102,8 +100,41 @@ class Field final : public FieldBase {
       return T::Zero();
     }
   }
-  std::vector<T> scratch_;
 };
+
+// Reorders `components`-scalar elements in place so that element k becomes old element
+// newToOld[k] (a permutation of 0..n-1), following its cycles: no copy of the field, one bit per
+// element (`moved`).
+template <class S>
+void permuteScalars(S* data, std::size_t components, const std::vector<Index>& newToOld,
+                    std::vector<bool>& moved) {
+  const std::size_t n = newToOld.size(), c = components;
+  moved.assign(n, false);
+  S held[kMaxFieldComponents];
+  for (std::size_t start = 0; start < n; ++start) {
+    if (moved[start]) continue;
+    moved[start] = true;
+    std::size_t src = newToOld[start];
+    if (src == start) continue;
+    std::copy(data + start * c, data + start * c + c, held);
+    std::size_t dst = start;
+    while (src != start) {
+      std::copy(data + src * c, data + src * c + c, data + dst * c);
+      moved[src] = true;
+      dst = src;
+      src = newToOld[dst];
+    }
+    std::copy(held, held + c, data + dst * c);
+  }
+}
+
+// Keeps elements keep[0..m) (increasing), in that order, at the front.
+template <class S>
+void selectScalars(S* data, std::size_t components, const std::vector<Index>& keep) {
+  const std::size_t c = components;
+  for (std::size_t k = 0; k < keep.size(); ++k)
+    std::copy(data + keep[k] * c, data + keep[k] * c + c, data + k * c);
+}
 
 // A set of equally long named fields. References returned by add()/get() stay valid for the
 // registry's lifetime (each field is heap-allocated once).
@@ -151,8 +182,34 @@ class FieldRegistry {
     size_ = n;
     for (auto& f : fields_) f->resize(n);
   }
+  // Reorders every field so that new element k is old element newToOld[k] (a permutation of all
+  // elements), in place: a scratch copy of the fields would add about a tenth to a particle's
+  // memory (docs/benchmarks.md, "Memory"). Serial; it runs every WorldParameters::zSortInterval
+  // steps, and the Z-order re-sort moves elements only locally. No allocation after the first call
+  // at a given size.
   void permute(const std::vector<Index>& newToOld) {
-    for (auto& f : fields_) f->permute(newToOld);
+    require(newToOld.size() == size_, "FieldRegistry::permute: one index per element needed");
+    for (auto& f : fields_) {
+      const auto c = static_cast<std::size_t>(f->components());
+      if (f->kind() == ScalarKind::kReal)
+        permuteScalars(static_cast<Real*>(f->rawData()), c, newToOld, moved_);
+      else
+        permuteScalars(static_cast<std::int32_t*>(f->rawData()), c, newToOld, moved_);
+    }
+  }
+  // Keeps only the elements keep[0..m) (strictly increasing indices), in that order.
+  void select(const std::vector<Index>& keep) {
+    for (std::size_t k = 0; k < keep.size(); ++k)
+      require(keep[k] < size_ && (k == 0 || keep[k] > keep[k - 1]),
+              "FieldRegistry::select: indices must be increasing and in range");
+    for (auto& f : fields_) {
+      const auto c = static_cast<std::size_t>(f->components());
+      if (f->kind() == ScalarKind::kReal)
+        selectScalars(static_cast<Real*>(f->rawData()), c, keep);
+      else
+        selectScalars(static_cast<std::int32_t*>(f->rawData()), c, keep);
+    }
+    resize(keep.size());
   }
 
   // Iteration over all fields in registration order (deterministic).
@@ -180,6 +237,7 @@ class FieldRegistry {
 
   std::size_t size_ = 0;
   std::vector<std::unique_ptr<FieldBase>> fields_;
+  std::vector<bool> moved_;  // permute()'s marks
 };
 
 }  // namespace sim

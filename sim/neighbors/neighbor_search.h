@@ -7,16 +7,19 @@
 // of the 27-cell stencil without an indirection; a range is trimmed to the cells that can hold a
 // point within the search radius (a row or end cell wholly farther away is skipped, which changes
 // no list). The compressed-sparse-row lists are built in ONE parallel region: each thread scans its
-// contiguous block of query points and appends the accepted candidates branch-free to its own
-// reusable buffer; once the blocks' offsets are known, each thread writes its block's point indices
-// into place and, when a kernel is given, computes the per-pair kernel gradients and values
-// straight into the final lists (16 of a pair's 20 bytes are never copied). The result does not
-// depend on the thread count (each point's neighbours come in stencil order, inside a cell in index
-// order). Static wall particles are binned once. Dynamic particle data are periodically reordered
-// by the Z-order (Morton) index of their cell (zOrder()), which keeps neighbours close in memory.
-// Buffers only grow (per-thread buffers to 1.5x when less than 1/16 headroom is left, lists by a
-// quarter), so a running simulation whose pair count drifts slowly does not allocate. Memory: the
-// lists plus about 1.5x their indices.
+// contiguous block of query points and stores the accepted candidates' sorted slots branch-free;
+// once the blocks' offsets are known, each thread writes its block's point indices into place
+// and, when a kernel is given, computes the per-pair kernel gradients and values straight into the
+// final lists. With a kernel, the slots are staged in the previous build's gradient storage (dead
+// until the kernel pass rewrites it, and three slots per gradient), so a list holds 20 bytes per
+// pair (index, gradient and value) and nothing else; a block that does not fit its share there (the
+// first build, a list that grew past the room) is counted, and the blocks are scanned again into
+// exact shares. Without a kernel each thread stages in a reusable buffer of its own. The result
+// does not depend on the thread count (each point's neighbours come in stencil order, inside a cell
+// in index order). Static wall particles are binned once. Dynamic particle data are periodically
+// reordered by the Z-order (Morton) index of their cell (zOrder()), which keeps neighbours close
+// in memory. Storage only grows (per-thread buffers to 1.5x when less than 1/16 headroom is left,
+// lists by a quarter), so a running simulation whose pair count drifts slowly does not allocate.
 //
 // Variable support (VSLSPH, sim/fluid/vslsph_li2023.h): the grid is built for the largest support
 // R any particle may take (cells R/2 wide, a 5 x 5 x 5 stencil), and update() may be given
@@ -33,6 +36,7 @@
 // stage, "pair_kernels", beside the search proper, "neighbors".
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 
@@ -66,10 +70,10 @@ struct NeighborList {
 struct CellBins {
   std::vector<Index>
       cellStart;  // size cellCount+1; points of cell c: sorted[cellStart[c]..cellStart[c+1])
-  std::vector<Index> sorted;         // point indices grouped by cell
-  std::vector<Index> slotOf;         // per point: its place in `sorted`
-  std::vector<std::int64_t> cellOf;  // per point
-  std::vector<Vec3> sortedX;         // [m] positions in `sorted` order (contiguous candidate scan)
+  std::vector<Index> sorted;  // point indices grouped by cell
+  std::vector<Index> slotOf;  // per point: its place in `sorted`
+  std::vector<Index> cellOf;  // per point (cellCount() <= 4e8 fits)
+  std::vector<Vec3> sortedX;  // [m] positions in `sorted` order (contiguous candidate scan)
   // [m^2] squared search radii max(h, h_i)^2 in `sorted` order; filled only for dynamic points
   // binned with per-particle support radii (empty otherwise).
   std::vector<Real> sortedR2;
@@ -115,7 +119,8 @@ class NeighborSearch {
   const std::vector<PairGradient>& dynamicDynamicGradients() const { return ddGrad_; }
   const std::vector<PairGradient>& dynamicStaticGradients() const { return dsGrad_; }
   // [1/m^3] kernel values W(x_i - x_j), same alignment; filled by update(x, kernel), emptied by
-  // update(x). They let density sums skip a square root and a kernel evaluation per pair.
+  // update(x). They let density sums and XSPH skip a square root and a kernel evaluation per pair
+  // (without them a 101k DFSPH step takes about 1.1x the time, docs/benchmarks.md "Memory").
   const std::vector<PairValue>& dynamicDynamicKernelValues() const { return ddW_; }
   const std::vector<PairValue>& dynamicStaticKernelValues() const { return dsW_; }
 
@@ -136,24 +141,46 @@ class NeighborSearch {
   // Fills qR2_ (query order) and bins.sortedR2 from the support radii; throws if one exceeds the
   // cell size.
   void binRadii(const std::vector<Real>& radii, CellBins& bins);
-  // CSR list from query points `qx` to the points in `bins` with positions `px`; `skipSelf` drops
-  // the pair (i, i) when both sets are the same.
-  // `kernel` non-null: also fill `grad` and `values` (aligned with out.indices); null: `values`
-  // is emptied. `qR2` non-null: per-query squared radii (variable support), with pbins.sortedR2
-  // the points' ones when that is filled (else the fixed radius for the points).
-  void buildList(const std::vector<Vec3>& qx, const CellBins& qbins, const CellBins& pbins,
-                 bool skipSelf, const Kernel* kernel, NeighborList& out,
+  // The query side of one list being built (see buildList).
+  struct ListQuery;
+  // One row of the stencil (fixed y and z cells): the contiguous x-range of cells that can hold a
+  // point within the pruning radius, as a range of sorted slots.
+  struct StencilRow {
+    Index begin, end;
+  };
+  // One thread's share of a list being built: the accepted neighbours of its block of query
+  // points, as slots in the points' sorted order, stored during the scan in `area` (a range of
+  // the pair gradients' storage, or `own`) and read back when the block is placed. A cache line
+  // of its own, so that the threads' bookkeeping does not share one.
+  struct alignas(64) ThreadBuffer {
+    std::vector<Index> own;     // the thread's own slot storage (lists built without kernel)
+    std::byte* area = nullptr;  // where the slots go (Index-sized cells, see buildList)
+    std::size_t room = 0;       // [slots] the area's size (own: grows as needed)
+    std::size_t count = 0;      // accepted pairs of the block
+    std::size_t slack = 0;      // the most candidates of one point of the block
+    bool fits = true;           // every slot was stored (false: counted only)
+    bool grows = false;         // the area is `own`, grown as needed
+    std::size_t offset = 0;     // where the block starts in the final list
+  };
+  // CSR list from query points `qx` (binned in `qbins`) to the points `px` binned in `pbins`;
+  // `skipSelf` drops the pair (i, i) when both sets are the same. `kernel` non-null: also fill
+  // `grad` and `values` (aligned with out.indices); null: both are emptied. `qR2` non-null:
+  // per-query squared radii (variable support), with pbins.sortedR2 the points' ones when that is
+  // filled (else the fixed radius for the points).
+  void buildList(const std::vector<Vec3>& qx, const CellBins& qbins, const std::vector<Vec3>& px,
+                 const CellBins& pbins, bool skipSelf, const Kernel* kernel, NeighborList& out,
                  std::vector<PairGradient>& grad, std::vector<PairValue>& values,
                  const Real* qR2 = nullptr);
+  // The stencil rows of query point i that can hold a neighbour (rows[0..returned)); adds the
+  // number of candidates in them to `candidates`.
+  std::size_t stencilRows(const ListQuery& q, std::size_t i, StencilRow* rows,
+                          std::size_t& candidates) const;
+  // Scans query points [lo, hi) (see buildList); returns the accepted pairs.
+  std::size_t scanBlock(const ListQuery& q, std::size_t lo, std::size_t hi, ThreadBuffer& buf,
+                        bool store) const;
   void updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel,
                   const std::vector<Real>* supportRadii = nullptr);
 
-  // One thread's share of a list being built: accepted neighbours of its block of query points.
-  struct ThreadBuffer {
-    std::vector<Index> indices;  // candidate slots in the points' sorted order
-    std::size_t count = 0;       // used entries (the vectors only grow)
-    std::size_t offset = 0;      // where the block starts in the final list
-  };
   std::int64_t linear(const Eigen::Vector3i& c) const {
     return c.x() + dims_.x() * (static_cast<std::int64_t>(c.y()) +
                                 static_cast<std::int64_t>(dims_.y()) * c.z());
@@ -172,7 +199,6 @@ class NeighborSearch {
   std::vector<PairGradient> ddGrad_, dsGrad_, noGrad_;
   std::vector<PairValue> ddW_, dsW_, noW_;
   std::vector<ThreadBuffer> threadBuffers_;
-  std::vector<Index> counts_;
   std::vector<Real> qR2_;  // [m^2] max(h, h_i)^2 per dynamic point (variable support only)
   mutable std::vector<std::uint64_t> mortonScratch_;
   double pairKernelSeconds_ = 0.0;  // [s] see pairKernelSeconds()
