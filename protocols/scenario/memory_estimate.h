@@ -8,7 +8,7 @@
 // the area term the retina samples (Poisson-disk points at d/2 with their regions and coverage
 // maps) and the wall particles. Coefficients fitted to the peak resident size (/usr/bin/time -v)
 // of `tamponade plan` on the emmetropic eye at 0.2-1.2 mm (memory_estimate.cpp has the
-// measurements: within 8 %).
+// measurements: within 1 %).
 #pragma once
 
 #include <cstdint>
@@ -24,7 +24,7 @@ struct MemoryEstimate {
 
 // The estimate for a cavity of `volume` [m^3] and wall `area` [m^2] at spacing `d` [m].
 // `withTissue`: the protocol has a sclera or orbital fat table, whose particles, shells and bony
-// orbit the cavity does not show (kTissueFactor in memory_estimate.cpp).
+// orbit the cavity does not show (kTissueVolumeFactor in memory_estimate.cpp).
 MemoryEstimate estimateMemory(double volume, double area, double d, bool withTissue = false);
 
 // The smallest spacing [m] (to 1 %) whose estimate stays within `limitBytes`; a finer one does

@@ -28,8 +28,9 @@ struct WorldParameters {
   bool stopBelowMinTimeStep = false;
   Real maxTimeStep = 5e-3;  // [s]
   int zSortInterval = 16;   // [steps] how often particle data are re-sorted in Z-order
-  // Keep each neighbour pair's kernel value and gradient with the lists (32 bytes per pair, about
-  // 0.8 KiB per particle): the stages then read them instead of evaluating the kernel. false
+  // Keep each neighbour pair's kernel value and gradient with the lists (16 bytes per pair in
+  // single precision, about 0.4 KiB per particle): the stages then read them instead of
+  // evaluating the kernel. false
   // trades that memory for time; results are the same bit for bit (sim/world/pair_loop.h,
   // docs/benchmarks.md).
   bool cachePairKernels = true;
