@@ -119,6 +119,7 @@ Real Pipeline::step(World& world) {
   const Real maxDisplacement = world.parameters().maxDisplacement * world.particleSpacing();
   velocityAtStart_ = p.v;
   int attempt = 0;
+  Real previousDisplacement = 0;  // [m] the largest displacement of the previous attempt
   for (;; ++attempt) {
     StepContext context{lastStep_.dt};
     advanceVelocities(world, context);
@@ -128,9 +129,24 @@ Real Pipeline::step(World& world) {
     // solver's linearised density prediction holds, and such errors grow from step to step. So
     // it is rejected and redone with a shorter step (at most 3 times, never below the minimum).
     const Real vmax = maxSpeed(p.v);
-    if (vmax * lastStep_.dt <= maxDisplacement || attempt == 3 ||
+    const Real displacement = vmax * lastStep_.dt;  // [m]
+    if (displacement <= maxDisplacement || attempt == 3 ||
         lastStep_.dt <= world.parameters().minTimeStep)
       break;
+    // A shorter step shrinks what the step's forces move a particle, not what the pressure solve
+    // moves it to correct its density: that correction is the same distance at any dt, at a
+    // velocity of distance / dt. Retrying it would only turn it into kinetic energy (down to the
+    // minimum step and hundreds of m/s, docs/methods/interface.md "Near-neutral buoyancy"). So a
+    // retry that did not shrink the displacement by a quarter is undone: the previous, longer step
+    // is redone and kept.
+    if (attempt > 0 && displacement > 0.75 * previousDisplacement) {
+      p.v = velocityAtStart_;
+      lastStep_ = previousStep_;
+      advanceVelocities(world, StepContext{lastStep_.dt});
+      break;
+    }
+    previousDisplacement = displacement;
+    previousStep_ = lastStep_;
     p.v = velocityAtStart_;
     const Real shorter = 0.5 * maxDisplacement / vmax;  // [s]
     if (shorter < world.parameters().minTimeStep)

@@ -78,6 +78,7 @@ class Pipeline {
 
   TimeStepInfo lastStep_;
   std::vector<Vec3> velocityAtStart_;  // [m/s] for redoing a rejected step
+  TimeStepInfo previousStep_;          // the step before the last retry (Pipeline::step)
   // [m/s] background_pressure's transport correction dv (x += dt (v + dv)); nullptr without it
   const std::vector<Vec3>* transportShift_ = nullptr;
   long rejectedSteps_ = 0;
