@@ -189,26 +189,17 @@ class FieldRegistry {
   // at a given size.
   void permute(const std::vector<Index>& newToOld) {
     require(newToOld.size() == size_, "FieldRegistry::permute: one index per element needed");
-    for (auto& f : fields_) {
-      const auto c = static_cast<std::size_t>(f->components());
-      if (f->kind() == ScalarKind::kReal)
-        permuteScalars(static_cast<Real*>(f->rawData()), c, newToOld, moved_);
-      else
-        permuteScalars(static_cast<std::int32_t*>(f->rawData()), c, newToOld, moved_);
-    }
+    for (auto& f : fields_)
+      withScalars(*f,
+                  [&](auto* data, std::size_t c) { permuteScalars(data, c, newToOld, moved_); });
   }
   // Keeps only the elements keep[0..m) (strictly increasing indices), in that order.
   void select(const std::vector<Index>& keep) {
     for (std::size_t k = 0; k < keep.size(); ++k)
       require(keep[k] < size_ && (k == 0 || keep[k] > keep[k - 1]),
               "FieldRegistry::select: indices must be increasing and in range");
-    for (auto& f : fields_) {
-      const auto c = static_cast<std::size_t>(f->components());
-      if (f->kind() == ScalarKind::kReal)
-        selectScalars(static_cast<Real*>(f->rawData()), c, keep);
-      else
-        selectScalars(static_cast<std::int32_t*>(f->rawData()), c, keep);
-    }
+    for (auto& f : fields_)
+      withScalars(*f, [&](auto* data, std::size_t c) { selectScalars(data, c, keep); });
     resize(keep.size());
   }
 
@@ -233,6 +224,16 @@ class FieldRegistry {
     auto* field = dynamic_cast<Field<T>*>(base);
     if (!field) throw SimError("particle field '" + std::string(name) + "' has another type");
     return *field;
+  }
+
+  // op(data, components) with the field's flat storage as its scalar type.
+  template <class Op>
+  static void withScalars(FieldBase& f, Op&& op) {
+    const auto c = static_cast<std::size_t>(f.components());
+    if (f.kind() == ScalarKind::kReal)
+      op(static_cast<Real*>(f.rawData()), c);
+    else
+      op(static_cast<std::int32_t*>(f.rawData()), c);
   }
 
   std::size_t size_ = 0;

@@ -292,14 +292,14 @@ std::size_t scanRow(Index b, Index e, std::size_t i, const Vec3& xi, const Vec3*
 }  // namespace
 
 std::size_t NeighborSearch::scanBlock(const ListQuery& q, std::size_t lo, std::size_t hi,
-                                      ThreadBuffer& buf, bool store) const {
+                                      ThreadBuffer& buf) const {
   const Vec3* sortedX = q.pbins.sortedX.data();
   const Real r2 = radius_ * radius_;
   // Kept in locals, not in `buf`: a slot store through a byte pointer may alias anything, and the
   // threads' buffers are neighbours in memory.
   std::byte* area = buf.area;
   std::size_t room = buf.room, slack = 0, m = 0;
-  bool fits = true;
+  bool store = true, fits = true;
   StencilRow rows[kMaxRows];
   for (std::size_t i = lo; i < hi; ++i) {
     std::size_t candidates = 0;
@@ -364,6 +364,7 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
   constexpr std::size_t kSlotsPerGradient = sizeof(PairGradient) / sizeof(Index);
   const bool staged = kernel != nullptr;
   bool rescan = false;
+  std::size_t total = 0;     // pairs in the list, set once the blocks are scanned
   double kernelStart = 0.0;  // [s] set by the master thread
 
 #pragma omp parallel
@@ -384,7 +385,7 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
       buf.area = reinterpret_cast<std::byte*>(buf.own.data());
       buf.room = buf.own.size();
     }
-    buf.count = scanBlock(q, lo, hi, buf, true);
+    buf.count = scanBlock(q, lo, hi, buf);
     // Hysteresis: when less than 1/16 headroom is left, grow to 1.5x this build's size, so that
     // lists that drift from step to step (a fluid settling, a splash) reuse the buffers instead
     // of reallocating at every small growth.
@@ -396,7 +397,7 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
 #pragma omp barrier
 #pragma omp single
     {
-      std::size_t total = 0, staging = 0;
+      std::size_t staging = 0;
       for (std::size_t k = 0; k < threads; ++k) {
         threadBuffers_[k].offset = total;
         total += threadBuffers_[k].count;
@@ -415,8 +416,8 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
         }
       }
       sizeDiscarding(out.indices, total);
-    }                                             // implicit barrier
-    if (rescan) scanBlock(q, lo, hi, buf, true);  // fits: the same counts
+    }                                       // implicit barrier
+    if (rescan) scanBlock(q, lo, hi, buf);  // fits: the same counts
     // Each thread places its block's point indices.
     const Index* sorted = pbins.sorted.data();
     Index* indices = out.indices.data();
@@ -435,8 +436,6 @@ void NeighborSearch::buildList(const std::vector<Vec3>& qx, const CellBins& qbin
 #pragma omp barrier
 #pragma omp single
       {
-        std::size_t total = 0;
-        for (std::size_t k = 0; k < threads; ++k) total += threadBuffers_[k].count;
         sizeDiscarding(grad, total);
         sizeDiscarding(values, total);
         kernelStart = omp_get_wtime();

@@ -176,8 +176,8 @@ class NeighborSearch {
   std::size_t stencilRows(const ListQuery& q, std::size_t i, StencilRow* rows,
                           std::size_t& candidates) const;
   // Scans query points [lo, hi) (see buildList); returns the accepted pairs.
-  std::size_t scanBlock(const ListQuery& q, std::size_t lo, std::size_t hi, ThreadBuffer& buf,
-                        bool store) const;
+  std::size_t scanBlock(const ListQuery& q, std::size_t lo, std::size_t hi,
+                        ThreadBuffer& buf) const;
   void updateImpl(const std::vector<Vec3>& dynamicX, const Kernel* kernel,
                   const std::vector<Real>* supportRadii = nullptr);
 
